@@ -1,0 +1,157 @@
+#include "plexus/base/yaml_reader.hpp"
+
+#include <cmath>
+#include <cstdint>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+namespace plexus {
+namespace {
+
+std::string line_of(const YAML::Node& n) {
+  const auto m = n.Mark();
+  return m.line >= 0 ? std::to_string(m.line + 1) : "?";
+}
+
+std::string scalar_text(const YAML::Node& n) {
+  if (n.IsScalar()) return "'" + n.Scalar() + "'";
+  if (n.IsMap()) return "a mapping";
+  if (n.IsSequence()) return "a list";
+  return "nothing";
+}
+
+}  // namespace
+
+YAML::Node load_yaml_string(const std::string& text, const std::string& origin) {
+  try {
+    return YAML::Load(text);
+  } catch (const YAML::Exception& e) {
+    std::string line = e.mark.line >= 0 ? std::to_string(e.mark.line + 1) : "?";
+    throw InputError(origin + ":" + line + ": YAML syntax error: " + e.msg);
+  }
+}
+
+YAML::Node load_yaml_file(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path + ": cannot open file");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return load_yaml_string(ss.str(), path);
+}
+
+YamlMap::YamlMap(YAML::Node node, std::string file, std::string path)
+    : node_(std::move(node)), file_(std::move(file)), path_(std::move(path)) {
+  if (!node_ || !node_.IsMap()) {
+    const std::string at = node_ ? file_ + ":" + line_of(node_) : file_;
+    throw InputError(at + ": " + (path_.empty() ? std::string("document") : path_) +
+                     ": expected a mapping, got " + (node_ ? scalar_text(node_) : "nothing"));
+  }
+}
+
+std::string YamlMap::where() const { return file_ + ":" + line_of(node_); }
+std::string YamlMap::where(const YAML::Node& n) const { return file_ + ":" + line_of(n); }
+
+std::string YamlMap::key_path(const std::string& key) const {
+  return path_.empty() ? key : path_ + "." + key;
+}
+
+bool YamlMap::has(const std::string& key) const { return static_cast<bool>(node_[key]); }
+
+YAML::Node YamlMap::child(const std::string& key, bool required) const {
+  read_.insert(key);
+  YAML::Node n = node_[key];
+  if (!n && required) throw InputError(where() + ": " + key_path(key) + ": required key is missing");
+  if (n && n.IsNull() && required)
+    throw InputError(where(n) + ": " + key_path(key) + ": required key has no value");
+  return n;
+}
+
+YAML::Node YamlMap::node(const std::string& key) const { return child(key, false); }
+
+YamlMap YamlMap::map(const std::string& key) const {
+  YAML::Node n = child(key, true);
+  if (!n.IsMap())
+    throw InputError(where(n) + ": " + key_path(key) + ": expected a mapping, got " + scalar_text(n));
+  return YamlMap(n, file_, key_path(key));
+}
+
+std::vector<YAML::Node> YamlMap::sequence(const std::string& key) const {
+  YAML::Node n = child(key, true);
+  if (!n.IsSequence())
+    throw InputError(where(n) + ": " + key_path(key) + ": expected a list, got " + scalar_text(n));
+  return std::vector<YAML::Node>(n.begin(), n.end());
+}
+
+std::vector<std::string> YamlMap::keys() const {
+  std::vector<std::string> out;
+  for (const auto& kv : node_) out.push_back(kv.first.as<std::string>());
+  return out;
+}
+
+void YamlMap::reject_unknown() const {
+  for (const auto& kv : node_) {
+    const auto k = kv.first.as<std::string>();
+    if (!read_.count(k)) throw InputError(where(kv.first) + ": " + key_path(k) + ": unknown key");
+  }
+}
+
+void YamlMap::fail(const std::string& key, const std::string& message) const {
+  YAML::Node n = node_[key];
+  throw InputError((n ? where(n) : where()) + ": " + key_path(key) + ": " + message);
+}
+
+template <class T>
+T YamlMap::convert(const YAML::Node& n, const std::string& key) const {
+  auto bad = [&](const char* expected) {
+    return InputError(where(n) + ": " + key_path(key) + ": expected " + expected + ", got " + scalar_text(n));
+  };
+  if constexpr (std::is_same_v<T, std::string>) {
+    if (!n.IsScalar()) throw bad("a string");
+    return n.Scalar();
+  } else if constexpr (std::is_same_v<T, bool>) {
+    bool v{};
+    if (!n.IsScalar() || !YAML::convert<bool>::decode(n, v)) throw bad("true or false");
+    return v;
+  } else if constexpr (std::is_integral_v<T>) {
+    if (!n.IsScalar()) throw bad("an integer");
+    const std::string& s = n.Scalar();
+    std::size_t used = 0;
+    long long v = 0;
+    try {
+      v = std::stoll(s, &used, 0);
+    } catch (const std::exception&) {
+      throw bad("an integer");
+    }
+    if (used != s.size()) throw bad("an integer");
+    if (v < static_cast<long long>(std::numeric_limits<T>::min()) ||
+        (v > 0 && static_cast<unsigned long long>(v) > static_cast<unsigned long long>(std::numeric_limits<T>::max())))
+      throw InputError(where(n) + ": " + key_path(key) + ": " + s + " is out of range");
+    return static_cast<T>(v);
+  } else {
+    static_assert(std::is_floating_point_v<T>);
+    if (!n.IsScalar()) throw bad("a finite number");
+    const std::string& s = n.Scalar();
+    std::size_t used = 0;
+    double v = 0;
+    try {
+      v = std::stod(s, &used);
+    } catch (const std::exception&) {
+      throw bad("a finite number");
+    }
+    if (used != s.size() || !std::isfinite(v)) throw bad("a finite number");
+    return static_cast<T>(v);
+  }
+}
+
+template std::string YamlMap::convert<std::string>(const YAML::Node&, const std::string&) const;
+template bool YamlMap::convert<bool>(const YAML::Node&, const std::string&) const;
+template int YamlMap::convert<int>(const YAML::Node&, const std::string&) const;
+template unsigned YamlMap::convert<unsigned>(const YAML::Node&, const std::string&) const;
+template long YamlMap::convert<long>(const YAML::Node&, const std::string&) const;
+template unsigned long YamlMap::convert<unsigned long>(const YAML::Node&, const std::string&) const;
+template long long YamlMap::convert<long long>(const YAML::Node&, const std::string&) const;
+template unsigned long long YamlMap::convert<unsigned long long>(const YAML::Node&, const std::string&) const;
+template double YamlMap::convert<double>(const YAML::Node&, const std::string&) const;
+
+}  // namespace plexus

@@ -1,0 +1,59 @@
+#include "plexus/base/yaml_reader.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace plexus {
+namespace {
+
+std::string error_of(auto&& fn) {
+  try {
+    fn();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(YamlReader, ReadsTypedValues) {
+  YamlMap m(load_yaml_string("a: 3\nb: 2.5\nc: hello\nd: true\n", "t.yaml"), "t.yaml");
+  EXPECT_EQ(m.required<int>("a"), 3);
+  EXPECT_DOUBLE_EQ(m.required<double>("b"), 2.5);
+  EXPECT_EQ(m.required<std::string>("c"), "hello");
+  EXPECT_TRUE(m.required<bool>("d"));
+  EXPECT_EQ(m.optional<int>("e", 7), 7);
+  EXPECT_NO_THROW(m.reject_unknown());
+}
+
+TEST(YamlReader, UnknownKeyNamesFileLineAndKey) {
+  YamlMap m(load_yaml_string("a: 1\nsub:\n  x: 1\n  typo: 2\n", "t.yaml"), "t.yaml");
+  m.required<int>("a");
+  YamlMap sub = m.map("sub");
+  sub.required<int>("x");
+  EXPECT_EQ(error_of([&] { sub.reject_unknown(); }), "t.yaml:4: sub.typo: unknown key");
+}
+
+TEST(YamlReader, WrongTypeNamesValue) {
+  YamlMap m(load_yaml_string("a: abc\nb: 1.5\nc: [1]\n", "t.yaml"), "t.yaml");
+  EXPECT_EQ(error_of([&] { m.required<double>("a"); }), "t.yaml:1: a: expected a finite number, got 'abc'");
+  EXPECT_EQ(error_of([&] { m.required<int>("b"); }), "t.yaml:2: b: expected an integer, got '1.5'");
+  EXPECT_EQ(error_of([&] { m.required<std::string>("c"); }), "t.yaml:3: c: expected a string, got a list");
+  EXPECT_EQ(error_of([&] { m.required<unsigned>("zz"); }), "t.yaml:1: zz: required key is missing");
+}
+
+TEST(YamlReader, RejectsNonFiniteAndOutOfRange) {
+  YamlMap m(load_yaml_string("a: .nan\nb: -1\nc: 99999999999\n", "t.yaml"), "t.yaml");
+  EXPECT_NE(error_of([&] { m.required<double>("a"); }).find("finite"), std::string::npos);
+  EXPECT_NE(error_of([&] { m.required<unsigned>("b"); }).find("out of range"), std::string::npos);
+  EXPECT_NE(error_of([&] { m.required<int>("c"); }).find("out of range"), std::string::npos);
+}
+
+TEST(YamlReader, SyntaxErrorAndMissingFile) {
+  EXPECT_EQ(error_of([] { load_yaml_file("/nonexistent/q.yaml"); }), "/nonexistent/q.yaml: cannot open file");
+  EXPECT_NE(error_of([] { load_yaml_string("a: [1, 2\n", "bad.yaml"); }).find("bad.yaml:"), std::string::npos);
+  EXPECT_NE(error_of([] { YamlMap(load_yaml_string("- 1\n- 2", "l.yaml"), "l.yaml"); }).find("expected a mapping"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace plexus

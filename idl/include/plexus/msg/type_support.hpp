@@ -1,0 +1,32 @@
+// What a DDS back end needs to know about a generated message type.
+//
+// One C++ type per message: service code uses the class fastddsgen generates
+// from idl/. Both back ends are generic over it through this record, which the
+// build generates for every IDL struct (see idl/CMakeLists.txt); nothing here is
+// written by hand per message.
+#pragma once
+
+#include <cstddef>
+
+struct dds_topic_descriptor;  // Cyclone DDS, from the idlc output of the same IDL
+
+namespace eprosima::fastdds::dds {
+class TopicDataType;
+}
+
+namespace plexus::msg {
+
+struct TypeSupport {
+  /// Scoped IDL name, identical for both vendors ("plexus::msg::Pose2D").
+  const char* type_name;
+  /// New fastddsgen TopicDataType (serialisation, sizes); the caller owns it.
+  eprosima::fastdds::dds::TopicDataType* (*make_fast_type)();
+  /// idlc topic descriptor: type name and keys for Cyclone.
+  const dds_topic_descriptor* cyclone_descriptor;
+};
+
+/// Specialised for every message type by the generated messages.cpp.
+template <class T>
+const TypeSupport& type_support();
+
+}  // namespace plexus::msg
