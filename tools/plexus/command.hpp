@@ -1,0 +1,19 @@
+// A `plexus` subcommand: each one lives in its own cmd_<name>.cpp and registers itself
+// with main.cpp through an add_<name>_command(CLI::App&) function.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <functional>
+
+namespace plexus::cli {
+
+struct Command {
+  CLI::App* app = nullptr;   ///< the subcommand; main runs `run` when it was given
+  std::function<int()> run;  ///< returns the process exit code; may throw InputError (exit 2)
+};
+
+Command add_demo_command(CLI::App& root);
+Command add_qos_command(CLI::App& root);
+
+}  // namespace plexus::cli

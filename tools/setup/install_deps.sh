@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# Installs everything plexus needs to build, test and run, from Debian 12 packages.
+# Idempotent: packages already installed are left alone. Run as root (or with sudo).
+set -euo pipefail
+
+PACKAGES=(
+  # toolchain
+  build-essential cmake pkg-config git
+  # DDS: Fast DDS 2.9 + fastddsgen, Cyclone DDS 0.10 + idlc + ddsperf
+  libfastrtps-dev libfastcdr-dev fastddsgen fastdds-tools
+  cyclonedds-dev cyclonedds-tools
+  # libraries
+  libeigen3-dev libspdlog-dev libfmt-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev
+  liborocos-kdl-dev libfftw3-dev libsqlite3-dev
+  # tests and benchmarks
+  libgtest-dev libgmock-dev libbenchmark-dev
+  # tools used at run time: plots, loop-jitter baseline, network namespaces for multi-host tests
+  gnuplot-nox rt-tests iproute2 procps
+)
+
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+
+missing=()
+for p in "${PACKAGES[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install_deps: all ${#PACKAGES[@]} packages already installed"
+  exit 0
+fi
+
+echo "install_deps: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
