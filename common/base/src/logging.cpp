@@ -12,7 +12,8 @@ spdlog::level::level_enum parse_log_level(std::string_view name, std::string_vie
     const auto sv = spdlog::level::to_string_view(lvl);
     if (std::string_view(sv.data(), sv.size()) == name) return lvl;
   }
-  if (name == "warning") return spdlog::level::warn;
+  if (name == "warn" || name == "warning") return spdlog::level::warn;
+  if (name == "err") return spdlog::level::err;
   throw InputError(std::string(origin) + ": unknown log level '" + std::string(name) +
                    "' (expected trace, debug, info, warn, error, critical or off)");
 }

@@ -23,6 +23,14 @@ struct TypeSupport {
   eprosima::fastdds::dds::TopicDataType* (*make_fast_type)();
   /// idlc topic descriptor: type name and keys for Cyclone.
   const dds_topic_descriptor* cyclone_descriptor;
+  /// Largest serialised size, including the 4-byte encapsulation header.
+  std::size_t max_cdr_size;
+  /// Serialises a sample (a T) as XCDR1 with its encapsulation header into buf.
+  /// Returns the length, or 0 if it does not fit.
+  std::size_t (*serialize)(const void* sample, unsigned char* buf, std::size_t capacity);
+  /// Deserialises CDR (with encapsulation header, either endianness) into a T.
+  /// False for data that is truncated or otherwise malformed.
+  bool (*deserialize)(const unsigned char* buf, std::size_t length, void* sample);
 };
 
 /// Specialised for every message type by the generated messages.cpp.

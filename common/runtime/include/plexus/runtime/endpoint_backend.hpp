@@ -1,0 +1,43 @@
+// The vendor-neutral interface the typed Publisher<T> / Subscriber<T> sit on.
+// Back ends (src/fastdds, src/cyclone) implement it once for every message type,
+// through plexus::msg::TypeSupport; service code never sees it.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+
+namespace plexus::rt {
+
+class WriterBackend {
+ public:
+  virtual ~WriterBackend() = default;
+  /// Writes one sample (a T). False if the vendor refused it (e.g. reliable queue full past
+  /// max_blocking_time).
+  virtual bool write(const void* sample) = 0;
+  /// Asserts liveliness (needed for manual liveliness kinds).
+  virtual void assert_liveliness() = 0;
+  /// Number of matched remote readers.
+  virtual int matched_count() const = 0;
+};
+
+/// Per-sample metadata a reader gets besides the data.
+struct SampleMeta {
+  int64_t source_timestamp_ns = 0;   ///< writer's source timestamp (vendor clock)
+  int64_t receive_time_ns = 0;       ///< wall clock when plexus took the sample
+};
+
+class ReaderBackend {
+ public:
+  virtual ~ReaderBackend() = default;
+  /// Takes the oldest unread valid sample into `sample` (a T). False if there is none.
+  /// Malformed data is dropped and counted, never returned.
+  virtual bool take(void* sample, SampleMeta* meta) = 0;
+  /// Blocks until data is available or `timeout_ns` passes. True if data is available.
+  virtual bool wait(int64_t timeout_ns) = 0;
+  /// Number of matched remote writers.
+  virtual int matched_count() const = 0;
+  /// Samples dropped because they could not be decoded.
+  virtual uint64_t malformed_count() const = 0;
+};
+
+}  // namespace plexus::rt

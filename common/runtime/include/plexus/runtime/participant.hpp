@@ -1,0 +1,141 @@
+// A DDS participant on the vendor chosen at run time, and typed publishers and
+// subscribers over the generated message types.
+//
+//   auto p = plexus::rt::Participant::create({.vendor = Vendor::cyclone, .domain_id = 7, .name = "observer"});
+//   auto pub = p->publisher<plexus::msg::Pose2D>("robot1/pose", qos.get("state"));
+//   plexus::msg::Pose2D msg; msg.x(1.0); pub.publish(msg);
+//
+// Traffic stays on the loopback interface with unicast discovery unless the options say
+// otherwise (see NetworkOptions): no packet leaves the machine by default.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "plexus/base/clock.hpp"
+#include "plexus/msg/messages.hpp"
+#include "plexus/runtime/endpoint_backend.hpp"
+#include "plexus/runtime/events.hpp"
+#include "plexus/runtime/qos.hpp"
+#include "plexus/runtime/vendor.hpp"
+
+namespace plexus::rt {
+
+/// Where DDS traffic goes. The default keeps everything on 127.0.0.1 with unicast discovery.
+struct NetworkOptions {
+  /// Address of the one interface DDS may use (loopback by default).
+  std::string interface_address = "127.0.0.1";
+  /// Unicast discovery peers (addresses). Default: the interface itself.
+  std::vector<std::string> peers = {"127.0.0.1"};
+  /// Participants per host that discovery probes on each peer (RTPS participant ids 0..n-1).
+  int max_participants_per_host = 32;
+};
+
+struct ParticipantOptions {
+  Vendor vendor = Vendor::fast;
+  int domain_id = 0;                 ///< 0..232
+  std::string name = "plexus";       ///< service name: appears in logs and in remote endpoints' events
+  NetworkOptions network;
+};
+
+template <class T>
+class Publisher;
+template <class T>
+class Subscriber;
+
+class Participant {
+ public:
+  /// Creates the participant; throws InputError for bad options and std::runtime_error
+  /// if the vendor cannot create it.
+  static std::unique_ptr<Participant> create(const ParticipantOptions& options);
+
+  virtual ~Participant() = default;
+  Participant(const Participant&) = delete;
+  Participant& operator=(const Participant&) = delete;
+
+  virtual Vendor vendor() const = 0;
+  const ParticipantOptions& options() const { return options_; }
+
+  /// Registers a handler for every endpoint event of this participant (also logged).
+  /// Set it before creating endpoints.
+  void on_event(EventHandler handler) { handler_ = std::move(handler); }
+
+  template <class T>
+  Publisher<T> publisher(const std::string& topic, const QosProfile& qos) {
+    return Publisher<T>(make_writer(msg::type_support<T>(), topic, qos));
+  }
+  template <class T>
+  Subscriber<T> subscriber(const std::string& topic, const QosProfile& qos) {
+    return Subscriber<T>(make_reader(msg::type_support<T>(), topic, qos));
+  }
+
+  /// Untyped endpoints (tools that pick the type at run time).
+  virtual std::unique_ptr<WriterBackend> make_writer(const msg::TypeSupport& type, const std::string& topic,
+                                                     const QosProfile& qos) = 0;
+  virtual std::unique_ptr<ReaderBackend> make_reader(const msg::TypeSupport& type, const std::string& topic,
+                                                     const QosProfile& qos) = 0;
+
+ protected:
+  explicit Participant(ParticipantOptions options) : options_(std::move(options)) {}
+  /// Back ends call this for every event: logs it, then calls the handler.
+  void emit(const Event& e) const;
+
+ private:
+  ParticipantOptions options_;
+  EventHandler handler_;
+};
+
+/// Typed publisher. publish() fills the header's sequence number and publish time, and the
+/// origin time if the caller left it 0 (this sample starts a chain).
+template <class T>
+class Publisher {
+ public:
+  Publisher() = default;
+  explicit Publisher(std::unique_ptr<WriterBackend> w) : w_(std::move(w)) {}
+
+  bool publish(T& msg) {
+    auto& h = msg.header();
+    h.seq_num(++seq_);
+    const int64_t now = wall_time_ns();
+    h.publish_time_ns(now);
+    if (h.origin_time_ns() == 0) h.origin_time_ns(now);
+    return w_->write(&msg);
+  }
+  void assert_liveliness() { w_->assert_liveliness(); }
+  int matched_count() const { return w_->matched_count(); }
+  uint64_t published() const { return seq_; }
+  explicit operator bool() const { return static_cast<bool>(w_); }
+
+ private:
+  std::unique_ptr<WriterBackend> w_;
+  uint64_t seq_ = 0;
+};
+
+/// Typed subscriber with take-based reading, suited to a loop thread.
+template <class T>
+class Subscriber {
+ public:
+  Subscriber() = default;
+  explicit Subscriber(std::unique_ptr<ReaderBackend> r) : r_(std::move(r)) {}
+
+  /// Oldest unread sample; false if none.
+  bool take(T& out, SampleMeta* meta = nullptr) { return r_->take(&out, meta); }
+  /// Drains the reader and keeps the newest sample; false if there was none.
+  bool take_latest(T& out, SampleMeta* meta = nullptr) {
+    bool any = false;
+    while (r_->take(&out, meta)) any = true;
+    return any;
+  }
+  /// Blocks until data is available or the timeout passes.
+  bool wait(int64_t timeout_ns) { return r_->wait(timeout_ns); }
+  int matched_count() const { return r_->matched_count(); }
+  uint64_t malformed_count() const { return r_->malformed_count(); }
+  explicit operator bool() const { return static_cast<bool>(r_); }
+
+ private:
+  std::unique_ptr<ReaderBackend> r_;
+};
+
+}  // namespace plexus::rt

@@ -1,0 +1,89 @@
+// A periodic loop on absolute deadlines (clock_nanosleep, CLOCK_MONOTONIC, TIMER_ABSTIME),
+// with statistics: wake-up lateness (period jitter), compute time and overruns.
+//
+//   PeriodicLoop loop({.rate_hz = 1000, .priority = 80});
+//   loop.run([&](const PeriodicLoop::Tick& t) { ...; return keep_going; });
+//
+// Real-time settings (SCHED_FIFO priority, CPU affinity, mlockall) are optional. When the
+// system refuses one, the loop logs a clear warning saying what was refused and why, and
+// runs anyway. The steady-state loop does not allocate: statistics go into ring buffers
+// sized at construction.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace plexus::rt {
+
+struct LoopOptions {
+  double rate_hz = 100.0;     ///< > 0, at most 100 kHz
+  int priority = 0;           ///< SCHED_FIFO priority 1..99; 0 keeps normal scheduling
+  int cpu = -1;               ///< pin the calling thread to this CPU; -1: no affinity
+  bool lock_memory = false;   ///< mlockall(MCL_CURRENT | MCL_FUTURE)
+  std::size_t stats_window = 16384;  ///< samples kept for percentiles (most recent)
+};
+
+struct LoopStats {
+  uint64_t iterations = 0;
+  uint64_t overruns = 0;      ///< iterations that ended after the next deadline (periods skipped)
+  double jitter_p50_us = 0, jitter_p99_us = 0, jitter_max_us = 0;     ///< wake-up lateness
+  double compute_p50_us = 0, compute_p99_us = 0, compute_max_us = 0;  ///< body run time
+};
+
+class PeriodicLoop {
+ public:
+  struct Tick {
+    uint64_t index;         ///< 0, 1, 2, ...
+    int64_t deadline_ns;    ///< CLOCK_MONOTONIC deadline this iteration was scheduled for
+    int64_t wake_ns;        ///< when the thread actually woke
+  };
+
+  /// Validates the options (InputError for out-of-range values) and applies the real-time
+  /// settings to the calling thread, warning for each one the system refuses.
+  explicit PeriodicLoop(const LoopOptions& options);
+
+  /// Calls body(tick) once per period until it returns false or stop() is called.
+  template <class Body>
+  void run(Body&& body) {
+    start();
+    while (!stop_.load(std::memory_order_relaxed)) {
+      const Tick t = wait_next();
+      const bool go = body(t);
+      end_compute();
+      if (!go) break;
+    }
+  }
+
+  /// Lower-level use: start(), then for each iteration wait_next() ... end_compute().
+  void start();
+  Tick wait_next();
+  void end_compute();
+
+  /// Thread-safe: makes run() return after the current iteration.
+  void stop() { stop_.store(true, std::memory_order_relaxed); }
+
+  /// Statistics so far. Call from the loop thread (it reuses preallocated scratch space).
+  LoopStats stats();
+
+  int64_t period_ns() const { return period_ns_; }
+  /// The real-time settings that were refused, for heartbeats and reports ("" if none).
+  const std::string& refused() const { return refused_; }
+
+ private:
+  int64_t period_ns_;
+  int64_t next_deadline_ns_ = 0;
+  int64_t wake_ns_ = 0;
+  uint64_t index_ = 0;
+  uint64_t overruns_ = 0;
+  std::atomic<bool> stop_{false};
+  std::string refused_;
+
+  // Ring buffers of the most recent samples (ns), and all-time maxima.
+  std::vector<int64_t> lateness_, compute_, scratch_;
+  std::size_t count_ = 0;
+  int64_t lateness_max_ = 0, compute_max_ = 0;
+};
+
+}  // namespace plexus::rt

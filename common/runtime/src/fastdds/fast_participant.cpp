@@ -1,0 +1,425 @@
+// Fast DDS 2.9 back end.
+#include "fast_participant.hpp"
+
+#include <fastdds/dds/domain/DomainParticipant.hpp>
+#include <fastdds/dds/domain/DomainParticipantFactory.hpp>
+#include <fastdds/dds/domain/DomainParticipantListener.hpp>
+#include <fastdds/dds/publisher/DataWriter.hpp>
+#include <fastdds/dds/publisher/DataWriterListener.hpp>
+#include <fastdds/dds/publisher/Publisher.hpp>
+#include <fastdds/dds/subscriber/DataReader.hpp>
+#include <fastdds/dds/subscriber/DataReaderListener.hpp>
+#include <fastdds/dds/subscriber/SampleInfo.hpp>
+#include <fastdds/dds/subscriber/Subscriber.hpp>
+#include <fastdds/dds/topic/Topic.hpp>
+#include <fastdds/dds/topic/TypeSupport.hpp>
+#include <fastdds/rtps/transport/UDPv4TransportDescriptor.h>
+#include <fastrtps/utils/IPLocator.h>
+
+#include <atomic>
+#include <map>
+#include <mutex>
+#include <sstream>
+#include <stdexcept>
+
+#include "../policy_names.hpp"
+#include "plexus/base/clock.hpp"
+
+namespace plexus::rt {
+namespace {
+
+namespace fdds = eprosima::fastdds::dds;
+using eprosima::fastrtps::rtps::IPLocator;
+using eprosima::fastrtps::rtps::Locator_t;
+
+eprosima::fastrtps::Duration_t to_duration(double s) {
+  if (s <= 0) return eprosima::fastrtps::c_TimeInfinite;
+  const auto sec = static_cast<int32_t>(s);
+  return eprosima::fastrtps::Duration_t(sec, static_cast<uint32_t>((s - sec) * 1e9));
+}
+
+std::string policy_name(fdds::QosPolicyId_t id) {
+  if (id == fdds::DATAREPRESENTATION_QOS_POLICY_ID) return "DATA_REPRESENTATION";
+  return detail::standard_policy_name(static_cast<int>(id));
+}
+
+// The QoS of a profile, applied to a writer or a reader the same way.
+template <class Q>
+void apply_common(Q& q, const QosProfile& p) {
+  q.reliability().kind = p.reliability == QosProfile::Reliability::reliable ? fdds::RELIABLE_RELIABILITY_QOS
+                                                                            : fdds::BEST_EFFORT_RELIABILITY_QOS;
+  q.reliability().max_blocking_time = to_duration(p.max_blocking_time_s);
+  q.durability().kind = p.durability == QosProfile::Durability::transient_local ? fdds::TRANSIENT_LOCAL_DURABILITY_QOS
+                                                                                : fdds::VOLATILE_DURABILITY_QOS;
+  q.history().kind = p.history == QosProfile::History::keep_all ? fdds::KEEP_ALL_HISTORY_QOS : fdds::KEEP_LAST_HISTORY_QOS;
+  q.history().depth = p.depth;
+  q.deadline().period = to_duration(p.deadline_s);
+  switch (p.liveliness) {
+    case QosProfile::Liveliness::automatic: q.liveliness().kind = fdds::AUTOMATIC_LIVELINESS_QOS; break;
+    case QosProfile::Liveliness::manual_by_participant:
+      q.liveliness().kind = fdds::MANUAL_BY_PARTICIPANT_LIVELINESS_QOS;
+      break;
+    case QosProfile::Liveliness::manual_by_topic: q.liveliness().kind = fdds::MANUAL_BY_TOPIC_LIVELINESS_QOS; break;
+  }
+  q.liveliness().lease_duration = to_duration(p.liveliness_lease_s);
+  if (p.liveliness_lease_s > 0) q.liveliness().announcement_period = to_duration(p.liveliness_lease_s / 3);
+  q.lifespan().duration = to_duration(p.lifespan_s);
+  // Latency budget 0 means "no budget" (zero), not infinite as for the other durations.
+  q.latency_budget().duration =
+      p.latency_budget_s > 0 ? to_duration(p.latency_budget_s) : eprosima::fastrtps::Duration_t(0, 0);
+  // Identical behaviour on both vendors: no data-sharing shortcut, XCDR1 on the wire.
+  q.data_sharing().off();
+  auto& repr = [&q]() -> fdds::DataRepresentationQosPolicy& {
+    if constexpr (requires { q.representation(); })
+      return q.representation();  // DataWriterQos
+    else
+      return q.type_consistency().representation;  // DataReaderQos
+  }();
+  repr.m_value.clear();
+  repr.m_value.push_back(fdds::XCDR_DATA_REPRESENTATION);
+  // keep_all needs bounded resources to stay allocation-free in steady state.
+  if (p.history == QosProfile::History::keep_last) {
+    q.resource_limits().max_samples = p.depth;
+    q.resource_limits().max_samples_per_instance = p.depth;
+  }
+}
+
+class FastWriter final : public WriterBackend, public fdds::DataWriterListener {
+ public:
+  FastWriter(const FastParticipant& owner, std::string topic) : owner_(owner), topic_(std::move(topic)) {}
+  ~FastWriter() override {
+    if (writer_) {
+      writer_->set_listener(nullptr);
+      owner_.publisher()->delete_datawriter(writer_);
+    }
+  }
+  void attach(fdds::DataWriter* w) { writer_ = w; }
+
+  bool write(const void* sample) override { return writer_->write(const_cast<void*>(sample)); }
+  void assert_liveliness() override { writer_->assert_liveliness(); }
+  int matched_count() const override { return matched_; }
+
+  void on_publication_matched(fdds::DataWriter*, const fdds::PublicationMatchedStatus& s) override {
+    matched_ = s.current_count;
+    Event e = base(s.current_count_change > 0 ? EventKind::matched : EventKind::unmatched);
+    e.total_count = s.total_count;
+    e.current_count = s.current_count;
+    e.remote = owner_.describe_remote(s.last_subscription_handle);
+    owner_.emit_event(e);
+  }
+  void on_offered_deadline_missed(fdds::DataWriter*, const fdds::OfferedDeadlineMissedStatus& s) override {
+    Event e = base(EventKind::deadline_missed);
+    e.total_count = s.total_count;
+    owner_.emit_event(e);
+  }
+  void on_offered_incompatible_qos(fdds::DataWriter*, const fdds::OfferedIncompatibleQosStatus& s) override {
+    Event e = base(EventKind::incompatible_qos);
+    e.total_count = s.total_count;
+    e.policy = policy_name(s.last_policy_id);
+    e.remote = owner_.incompatible_remotes(topic_, /*remote_is_writer=*/false, e.policy);
+    owner_.emit_event(e);
+  }
+  void on_liveliness_lost(fdds::DataWriter*, const fdds::LivelinessLostStatus& s) override {
+    Event e = base(EventKind::liveliness_lost);
+    e.total_count = s.total_count;
+    owner_.emit_event(e);
+  }
+
+ private:
+  Event base(EventKind k) const {
+    Event e;
+    e.kind = k;
+    e.on_writer = true;
+    e.topic = topic_;
+    e.local = owner_.local_name() + " writer (" + owner_.local_qos(topic_, true) + ")";
+    return e;
+  }
+  const FastParticipant& owner_;
+  std::string topic_;
+  fdds::DataWriter* writer_ = nullptr;
+  std::atomic<int> matched_{0};
+};
+
+class FastReader final : public ReaderBackend, public fdds::DataReaderListener {
+ public:
+  FastReader(const FastParticipant& owner, std::string topic) : owner_(owner), topic_(std::move(topic)) {}
+  ~FastReader() override {
+    if (reader_) {
+      reader_->set_listener(nullptr);
+      owner_.subscriber()->delete_datareader(reader_);
+    }
+  }
+  void attach(fdds::DataReader* r) { reader_ = r; }
+
+  bool take(void* sample, SampleMeta* meta) override {
+    fdds::SampleInfo info;
+    while (reader_->take_next_sample(sample, &info) == eprosima::fastrtps::types::ReturnCode_t::RETCODE_OK) {
+      if (!info.valid_data) continue;  // dispose / unregister notifications
+      if (meta) {
+        meta->source_timestamp_ns = info.source_timestamp.to_ns();
+        meta->receive_time_ns = wall_time_ns();
+      }
+      return true;
+    }
+    return false;
+  }
+  bool wait(int64_t timeout_ns) override {
+    if (reader_->get_unread_count() > 0) return true;
+    return reader_->wait_for_unread_message(eprosima::fastrtps::Duration_t(static_cast<long double>(timeout_ns) * 1e-9L));
+  }
+  int matched_count() const override { return matched_; }
+  uint64_t malformed_count() const override { return 0; }  // Fast DDS drops undecodable data itself
+
+  void on_subscription_matched(fdds::DataReader*, const fdds::SubscriptionMatchedStatus& s) override {
+    matched_ = s.current_count;
+    Event e = base(s.current_count_change > 0 ? EventKind::matched : EventKind::unmatched);
+    e.total_count = s.total_count;
+    e.current_count = s.current_count;
+    e.remote = owner_.describe_remote(s.last_publication_handle);
+    owner_.emit_event(e);
+  }
+  void on_requested_deadline_missed(fdds::DataReader*, const fdds::RequestedDeadlineMissedStatus& s) override {
+    Event e = base(EventKind::deadline_missed);
+    e.total_count = s.total_count;
+    owner_.emit_event(e);
+  }
+  void on_requested_incompatible_qos(fdds::DataReader*, const fdds::RequestedIncompatibleQosStatus& s) override {
+    Event e = base(EventKind::incompatible_qos);
+    e.total_count = s.total_count;
+    e.policy = policy_name(s.last_policy_id);
+    e.remote = owner_.incompatible_remotes(topic_, /*remote_is_writer=*/true, e.policy);
+    owner_.emit_event(e);
+  }
+  void on_liveliness_changed(fdds::DataReader*, const fdds::LivelinessChangedStatus& s) override {
+    Event e = base(EventKind::liveliness_changed);
+    e.alive = s.alive_count_change > 0;
+    e.current_count = s.alive_count;
+    e.total_count = s.alive_count + s.not_alive_count;
+    e.remote = owner_.describe_remote(s.last_publication_handle);
+    owner_.emit_event(e);
+  }
+  void on_sample_lost(fdds::DataReader*, const fdds::SampleLostStatus& s) override {
+    Event e = base(EventKind::sample_lost);
+    e.total_count = s.total_count;
+    owner_.emit_event(e);
+  }
+
+ private:
+  Event base(EventKind k) const {
+    Event e;
+    e.kind = k;
+    e.on_writer = false;
+    e.topic = topic_;
+    e.local = owner_.local_name() + " reader (" + owner_.local_qos(topic_, false) + ")";
+    return e;
+  }
+  const FastParticipant& owner_;
+  std::string topic_;
+  fdds::DataReader* reader_ = nullptr;
+  std::atomic<int> matched_{0};
+};
+
+}  // namespace
+
+// Discovery cache: remote endpoints by GUID, so events can name the other side.
+class FastParticipant::Discovery final : public fdds::DomainParticipantListener {
+ public:
+  struct Remote {
+    std::string participant;
+    std::string topic;
+    bool is_writer = false;
+    std::string qos;  // "reliability=..., durability=..., deadline=..."
+    fdds::ReliabilityQosPolicyKind reliability{};
+    fdds::DurabilityQosPolicyKind durability{};
+    eprosima::fastrtps::Duration_t deadline;
+    fdds::LivelinessQosPolicyKind liveliness{};
+  };
+
+  void on_participant_discovery(fdds::DomainParticipant*, eprosima::fastrtps::rtps::ParticipantDiscoveryInfo&& info) override {
+    std::lock_guard lk(mu_);
+    std::ostringstream g;
+    g << info.info.m_guid.guidPrefix;
+    names_[g.str()] = info.info.m_participantName.to_string();
+  }
+  void on_subscriber_discovery(fdds::DomainParticipant*, eprosima::fastrtps::rtps::ReaderDiscoveryInfo&& info) override {
+    const auto& r = info.info;
+    Remote rem;
+    rem.is_writer = false;
+    rem.topic = r.topicName().to_string();
+    rem.reliability = r.m_qos.m_reliability.kind;
+    rem.durability = r.m_qos.m_durability.kind;
+    rem.deadline = r.m_qos.m_deadline.period;
+    rem.liveliness = r.m_qos.m_liveliness.kind;
+    store(r.guid(), std::move(rem), info.status == eprosima::fastrtps::rtps::ReaderDiscoveryInfo::REMOVED_READER);
+  }
+  void on_publisher_discovery(fdds::DomainParticipant*, eprosima::fastrtps::rtps::WriterDiscoveryInfo&& info) override {
+    const auto& w = info.info;
+    Remote rem;
+    rem.is_writer = true;
+    rem.topic = w.topicName().to_string();
+    rem.reliability = w.m_qos.m_reliability.kind;
+    rem.durability = w.m_qos.m_durability.kind;
+    rem.deadline = w.m_qos.m_deadline.period;
+    rem.liveliness = w.m_qos.m_liveliness.kind;
+    store(w.guid(), std::move(rem), info.status == eprosima::fastrtps::rtps::WriterDiscoveryInfo::REMOVED_WRITER);
+  }
+
+  std::string describe(const fdds::InstanceHandle_t& h) {
+    std::lock_guard lk(mu_);
+    std::ostringstream g;
+    eprosima::fastrtps::rtps::GUID_t guid = eprosima::fastrtps::rtps::iHandle2GUID(h);
+    g << guid;
+    auto it = remotes_.find(g.str());
+    if (it == remotes_.end()) return g.str();
+    return label(it->second);
+  }
+
+  std::string incompatible(const std::string& topic, bool remote_is_writer, const std::string& policy) {
+    std::lock_guard lk(mu_);
+    std::string out;
+    for (const auto& [guid, r] : remotes_) {
+      if (r.topic != topic || r.is_writer != remote_is_writer) continue;
+      out += (out.empty() ? "" : "; ") + label(r) + " " + policy_value(r, policy);
+    }
+    return out;
+  }
+
+ private:
+  void store(const eprosima::fastrtps::rtps::GUID_t& guid, Remote rem, bool removed) {
+    std::lock_guard lk(mu_);
+    std::ostringstream g, p;
+    g << guid;
+    p << guid.guidPrefix;
+    if (removed) {
+      remotes_.erase(g.str());
+      return;
+    }
+    auto n = names_.find(p.str());
+    rem.participant = n != names_.end() && !n->second.empty() ? n->second : p.str();
+    remotes_[g.str()] = std::move(rem);
+  }
+  static std::string label(const Remote& r) {
+    return std::string(r.is_writer ? "writer" : "reader") + " of participant '" + r.participant + "'";
+  }
+  static std::string policy_value(const Remote& r, const std::string& policy) {
+    if (policy == "RELIABILITY")
+      return std::string("offers RELIABILITY=") + (r.reliability == fdds::RELIABLE_RELIABILITY_QOS ? "reliable" : "best_effort");
+    if (policy == "DURABILITY")
+      return std::string("DURABILITY=") + (r.durability == fdds::VOLATILE_DURABILITY_QOS ? "volatile" : "transient_local+");
+    if (policy == "DEADLINE") return "DEADLINE=" + std::to_string(r.deadline.to_ns() * 1e-9) + "s";
+    if (policy == "LIVELINESS") return "LIVELINESS kind=" + std::to_string(static_cast<int>(r.liveliness));
+    return "";
+  }
+
+  std::mutex mu_;
+  std::map<std::string, std::string> names_;
+  std::map<std::string, Remote> remotes_;
+};
+
+FastParticipant::FastParticipant(const ParticipantOptions& o) : Participant(o), discovery_(std::make_unique<Discovery>()) {
+  fdds::DomainParticipantQos pq;
+  pq.name(o.name);
+  // Transport: UDPv4 on the configured interface only (loopback by default); no shared
+  // memory, so the same packets flow whichever vendor is on the other side.
+  pq.transport().use_builtin_transports = false;
+  auto udp = std::make_shared<eprosima::fastdds::rtps::UDPv4TransportDescriptor>();
+  udp->interfaceWhiteList.push_back(o.network.interface_address);
+  pq.transport().user_transports.push_back(udp);
+  // Discovery: unicast only. A null locator means "the interface above, well-known port";
+  // no multicast locator is set, so nothing goes to a multicast group.
+  pq.wire_protocol().builtin.metatrafficMulticastLocatorList.clear();
+  pq.wire_protocol().builtin.metatrafficUnicastLocatorList.clear();
+  pq.wire_protocol().builtin.metatrafficUnicastLocatorList.push_back(Locator_t());
+  pq.wire_protocol().builtin.initialPeersList.clear();
+  const auto& ports = pq.wire_protocol().port;
+  for (const auto& peer : o.network.peers) {
+    for (int pid = 0; pid < o.network.max_participants_per_host; ++pid) {
+      Locator_t loc;
+      IPLocator::setIPv4(loc, peer);
+      loc.port = ports.portBase + ports.domainIDGain * static_cast<uint32_t>(o.domain_id) + ports.offsetd1 +
+                 ports.participantIDGain * static_cast<uint32_t>(pid);
+      pq.wire_protocol().builtin.initialPeersList.push_back(loc);
+    }
+  }
+  auto* factory = fdds::DomainParticipantFactory::get_instance();
+  participant_ = factory->create_participant(static_cast<fdds::DomainId_t>(o.domain_id), pq, discovery_.get(),
+                                             fdds::StatusMask::none() << fdds::StatusMask::data_on_readers());
+  if (!participant_) throw std::runtime_error("Fast DDS: cannot create participant on domain " + std::to_string(o.domain_id));
+  participant_->set_listener(discovery_.get(), fdds::StatusMask::none());
+  publisher_ = participant_->create_publisher(fdds::PUBLISHER_QOS_DEFAULT);
+  subscriber_ = participant_->create_subscriber(fdds::SUBSCRIBER_QOS_DEFAULT);
+  if (!publisher_ || !subscriber_) throw std::runtime_error("Fast DDS: cannot create publisher/subscriber");
+}
+
+FastParticipant::~FastParticipant() {
+  if (participant_) {
+    participant_->set_listener(nullptr);
+    participant_->delete_contained_entities();
+    fdds::DomainParticipantFactory::get_instance()->delete_participant(participant_);
+  }
+}
+
+fdds::Topic* FastParticipant::topic(const msg::TypeSupport& type, const std::string& name) {
+  std::lock_guard lk(mu_);
+  if (auto it = topics_.find(name); it != topics_.end()) {
+    if (it->second->get_type_name() != type.type_name)
+      throw std::runtime_error("topic '" + name + "' already exists with type " + it->second->get_type_name());
+    return it->second;
+  }
+  fdds::TypeSupport ts(type.make_fast_type());
+  ts.register_type(participant_);  // no-op if this type is already registered
+  fdds::Topic* t = participant_->create_topic(name, type.type_name, fdds::TOPIC_QOS_DEFAULT);
+  if (!t) throw std::runtime_error("Fast DDS: cannot create topic '" + name + "'");
+  topics_[name] = t;
+  return t;
+}
+
+std::string FastParticipant::local_qos(const std::string& topic, bool writer) const {
+  std::lock_guard lk(mu_);
+  auto it = qos_by_endpoint_.find((writer ? "w:" : "r:") + topic);
+  return it == qos_by_endpoint_.end() ? "" : it->second;
+}
+
+std::unique_ptr<WriterBackend> FastParticipant::make_writer(const msg::TypeSupport& type, const std::string& topic_name,
+                                                            const QosProfile& qos) {
+  fdds::Topic* t = topic(type, topic_name);
+  fdds::DataWriterQos wq = publisher_->get_default_datawriter_qos();
+  apply_common(wq, qos);
+  {
+    std::lock_guard lk(mu_);
+    qos_by_endpoint_["w:" + topic_name] = describe(qos);
+  }
+  auto w = std::make_unique<FastWriter>(*this, topic_name);
+  fdds::DataWriter* dw = publisher_->create_datawriter(t, wq, w.get(), fdds::StatusMask::all());
+  if (!dw) throw std::runtime_error("Fast DDS: cannot create writer on '" + topic_name + "' with profile " + qos.name);
+  w->attach(dw);
+  return w;
+}
+
+std::unique_ptr<ReaderBackend> FastParticipant::make_reader(const msg::TypeSupport& type, const std::string& topic_name,
+                                                            const QosProfile& qos) {
+  fdds::Topic* t = topic(type, topic_name);
+  fdds::DataReaderQos rq = subscriber_->get_default_datareader_qos();
+  apply_common(rq, qos);
+  {
+    std::lock_guard lk(mu_);
+    qos_by_endpoint_["r:" + topic_name] = describe(qos);
+  }
+  auto r = std::make_unique<FastReader>(*this, topic_name);
+  // data_available is not needed: readers are polled or waited on.
+  fdds::StatusMask mask = fdds::StatusMask::all();
+  mask >> fdds::StatusMask::data_available();
+  fdds::DataReader* dr = subscriber_->create_datareader(t, rq, r.get(), mask);
+  if (!dr) throw std::runtime_error("Fast DDS: cannot create reader on '" + topic_name + "' with profile " + qos.name);
+  r->attach(dr);
+  return r;
+}
+
+std::string FastParticipant::describe_remote(const fdds::InstanceHandle_t& h) const { return discovery_->describe(h); }
+
+std::string FastParticipant::incompatible_remotes(const std::string& topic, bool remote_is_writer,
+                                                  const std::string& policy) const {
+  return discovery_->incompatible(topic, remote_is_writer, policy);
+}
+
+}  // namespace plexus::rt

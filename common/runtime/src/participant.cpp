@@ -1,0 +1,18 @@
+#include "plexus/runtime/participant.hpp"
+
+#include "cyclone/cyclone_participant.hpp"
+#include "fastdds/fast_participant.hpp"
+#include "plexus/base/input_error.hpp"
+
+namespace plexus::rt {
+
+std::unique_ptr<Participant> Participant::create(const ParticipantOptions& options) {
+  if (options.domain_id < 0 || options.domain_id > 232)
+    throw InputError("--domain: DDS domain id must be in 0..232, got " + std::to_string(options.domain_id));
+  if (options.network.max_participants_per_host < 1 || options.network.max_participants_per_host > 120)
+    throw InputError("network: max_participants_per_host must be in 1..120");
+  if (options.vendor == Vendor::fast) return std::make_unique<FastParticipant>(options);
+  return std::make_unique<CycloneParticipant>(options);
+}
+
+}  // namespace plexus::rt
