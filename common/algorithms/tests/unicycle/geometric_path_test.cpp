@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "validation_message.hpp"
+
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -58,14 +60,7 @@ TEST(GeometricPath, ZeroSetsAreTheIntendedCurves) {
 }
 
 TEST(GeometricPath, ValidationNamesTheParameter) {
-  auto message = [](const PathShape& s) -> std::string {
-    try {
-      GeometricPath p(s);
-    } catch (const std::invalid_argument& e) {
-      return e.what();
-    }
-    return "";
-  };
+  auto message = [](const PathShape& s) { return testing::invalid_argument_message<GeometricPath>(s); };
   EXPECT_NE(message(CirclePath{{0, 0}, -1.0}).find("radius"), std::string::npos);
   EXPECT_NE(message(LinePath{{0, 0}, {0, 0}}).find("normal"), std::string::npos);
   EXPECT_NE(message(EllipsePath{{0, 0}, 1.0, 0.0, 0.0}).find("ellipse.b"), std::string::npos);

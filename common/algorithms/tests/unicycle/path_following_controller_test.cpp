@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "validation_message.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -141,13 +143,8 @@ TEST(PathFollowing, FiniteAndReportedWhenGHatVanishes) {
 }
 
 TEST(PathFollowing, ValidationNamesTheParameter) {
-  auto message = [](PathFollowingParams p) -> std::string {
-    try {
-      PathFollowingController c(p);
-    } catch (const std::invalid_argument& e) {
-      return e.what();
-    }
-    return "";
+  auto message = [](const PathFollowingParams& p) {
+    return testing::invalid_argument_message<PathFollowingController>(p);
   };
   PathFollowingParams p;
   p.k1 = -1.0;

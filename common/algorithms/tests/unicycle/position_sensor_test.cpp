@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "validation_message.hpp"
+
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -105,13 +107,9 @@ TEST(PositionSensor, GaussianIsReproducibleWithTheSeedAndHasTheRightSpread) {
 }
 
 TEST(PositionSensor, ValidationNamesTheParameter) {
-  auto expect_throw = [](PositionSensorParams p, const std::string& name) {
-    try {
-      PositionSensor s(p);
-      FAIL() << "no exception for " << name;
-    } catch (const std::invalid_argument& e) {
-      EXPECT_NE(std::string(e.what()).find(name), std::string::npos) << e.what();
-    }
+  auto expect_throw = [](const PositionSensorParams& p, const std::string& name) {
+    const std::string msg = testing::invalid_argument_message<PositionSensor>(p);
+    EXPECT_NE(msg.find(name), std::string::npos) << "message: \"" << msg << "\"";
   };
   PositionSensorParams p;
   p.sigma = -0.1;

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "validation_message.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -188,13 +190,8 @@ TEST(TrajectoryTracking, FiniteWhenObserverEstimateIsZero) {
 // ---------------------------------------------------------------- parameters
 
 TEST(TrajectoryTracking, ValidationNamesTheParameterAndValue) {
-  auto message = [](TrackingControllerParams p) -> std::string {
-    try {
-      TrajectoryTrackingController c(p);
-    } catch (const std::invalid_argument& e) {
-      return e.what();
-    }
-    return "";
+  auto message = [](const TrackingControllerParams& p) {
+    return testing::invalid_argument_message<TrajectoryTrackingController>(p);
   };
   TrackingControllerParams p;
   p.k1 = 0.0;

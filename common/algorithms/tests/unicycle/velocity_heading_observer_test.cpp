@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "validation_message.hpp"
+
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -66,13 +68,8 @@ TEST(VelocityHeadingObserver, PaperStatesAndHeldPositionVariant) {
 }
 
 TEST(VelocityHeadingObserver, ValidationNamesTheGain) {
-  auto message = [](double L2, double L4) -> std::string {
-    try {
-      VelocityHeadingObserver obs({L2, L4});
-    } catch (const std::invalid_argument& e) {
-      return e.what();
-    }
-    return "";
+  auto message = [](double L2, double L4) {
+    return testing::invalid_argument_message<VelocityHeadingObserver>(VelocityHeadingObserverParams{L2, L4});
   };
   EXPECT_NE(message(0.0, 1.0).find("L2"), std::string::npos);
   EXPECT_NE(message(1.0, -2.0).find("L4"), std::string::npos);
