@@ -1,0 +1,122 @@
+// Components: the unit a scenario composes (plants, sensors, reference generators,
+// estimators, controllers).
+//
+// A component is built once from its validated YAML section (ComponentConfig), declares
+// its input and output ports in its constructor, and then runs `step(k, t)` at its rate.
+// `step` reads its inputs, writes its outputs and must not allocate. The same component
+// object runs in `plexus sim` (in process, see executor.hpp) and, later, inside a DDS
+// service in lockstep mode: the runner fills the inputs before `step` and publishes the
+// outputs after it, so the component never knows where its data comes from.
+//
+// Ports are named relative to the component's robot: port `state` of a component on
+// robot `r1` is the signal `r1/state`, unless the scenario remaps it (`remap: {state:
+// other/state}`) or the port name already contains a '/'.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "plexus/base/yaml_reader.hpp"
+#include "plexus/scenario/signal.hpp"
+
+namespace plexus::scenario {
+
+/// What a component is; fixes where it may appear in a scenario and its execution stage.
+/// Within one base step, stages run in this order (plants first, controllers last).
+enum class ComponentKind { plant = 0, sensor = 1, reference = 2, estimator = 3, controller = 4 };
+
+/// "plant", "sensor", "reference", "estimator", "controller".
+const char* to_string(ComponentKind kind);
+
+/// Everything a component factory gets: the section it is built from and its place in the run.
+struct ComponentConfig {
+  std::string name;        ///< instance name: `<robot>/plant`, `<robot>/<sensor>` or the service name
+  std::string key;         ///< its key in the scenario: the sensor or service name, or "plant"
+  std::string robot;       ///< robot it belongs to; empty for a robot-less service
+  std::string type;        ///< registered type name
+  ComponentKind kind{};    ///< kind of the registered type
+  double base_step = 0.0;  ///< s, the scenario's base step
+  int64_t period_steps = 1;  ///< runs every period_steps base steps
+  uint64_t seed = 0;       ///< its own seed (given, or derived from the scenario seed and `name`)
+  std::map<std::string, std::string> remap;  ///< port -> signal name overrides from the scenario
+  const YamlMap* section = nullptr;  ///< its YAML section: read your parameters from here
+
+  /// Period in seconds (period_steps * base_step).
+  double period() const { return static_cast<double>(period_steps) * base_step; }
+  /// The parameters: read every key you accept; the scenario loader rejects the rest.
+  const YamlMap& params() const { return *section; }
+  /// The signal a port binds to: the remap if any, else the port name if it contains '/',
+  /// else `<robot>/<port>` (or `<port>` without a robot).
+  std::string signal_for(const std::string& port) const;
+};
+
+/// A port: a signal name, the fields used, and the current sample.
+class Port {
+ public:
+  Port(std::string port, std::string signal, std::vector<std::string> fields)
+      : port_(std::move(port)), signal_(std::move(signal)), fields_(std::move(fields)) {}
+
+  const std::string& port() const { return port_; }
+  const std::string& signal() const { return signal_; }
+  const std::vector<std::string>& fields() const { return fields_; }
+  /// For the runner: the sample it fills (inputs) or publishes (outputs).
+  SignalSample& sample() { return sample_; }
+  const SignalSample& sample() const { return sample_; }
+
+ protected:
+  std::string port_;
+  std::string signal_;
+  std::vector<std::string> fields_;
+  SignalSample sample_;
+};
+
+/// An input: the latest sample of its signal that is due at this step (see executor.hpp).
+class InputPort : public Port {
+ public:
+  using Port::Port;
+  /// Field i, in the order the component declared its fields.
+  double operator[](std::size_t i) const { return sample_.values[i]; }
+  /// False until the producer has produced its first sample.
+  bool valid() const { return sample_.step >= 0; }
+};
+
+/// An output: the component writes every field at each of its steps.
+class OutputPort : public Port {
+ public:
+  using Port::Port;
+  double& operator[](std::size_t i) { return sample_.values[i]; }
+};
+
+class Component {
+ public:
+  explicit Component(const ComponentConfig& config);
+  virtual ~Component() = default;
+  Component(const Component&) = delete;
+  Component& operator=(const Component&) = delete;
+
+  /// Runs base step k at time t = k * base_step: read inputs, compute, write outputs.
+  /// Must not allocate.
+  virtual void step(int64_t k, double t) = 0;
+
+  const std::string& name() const { return name_; }
+  const std::vector<std::unique_ptr<InputPort>>& inputs() const { return inputs_; }
+  const std::vector<std::unique_ptr<OutputPort>>& outputs() const { return outputs_; }
+
+ protected:
+  /// Declares an input port that reads `fields` (by name) of the signal the port binds to.
+  InputPort& add_input(const std::string& port, std::vector<std::string> fields);
+  /// Declares an output port producing a signal with these fields.
+  OutputPort& add_output(const std::string& port, std::vector<std::string> fields);
+
+ private:
+  std::string name_;
+  std::string robot_;
+  std::map<std::string, std::string> remap_;
+  std::vector<std::unique_ptr<InputPort>> inputs_;
+  std::vector<std::unique_ptr<OutputPort>> outputs_;
+};
+
+}  // namespace plexus::scenario

@@ -1,0 +1,41 @@
+#include "plexus/scenario/component.hpp"
+
+namespace plexus::scenario {
+
+const char* to_string(ComponentKind kind) {
+  switch (kind) {
+    case ComponentKind::plant: return "plant";
+    case ComponentKind::sensor: return "sensor";
+    case ComponentKind::reference: return "reference";
+    case ComponentKind::estimator: return "estimator";
+    case ComponentKind::controller: return "controller";
+  }
+  return "?";
+}
+
+namespace {
+
+std::string resolve_signal(const std::string& robot, const std::map<std::string, std::string>& remap,
+                           const std::string& port) {
+  if (auto it = remap.find(port); it != remap.end()) return it->second;
+  if (port.find('/') != std::string::npos || robot.empty()) return port;
+  return robot + "/" + port;
+}
+
+}  // namespace
+
+std::string ComponentConfig::signal_for(const std::string& port) const { return resolve_signal(robot, remap, port); }
+
+Component::Component(const ComponentConfig& config) : name_(config.name), robot_(config.robot), remap_(config.remap) {}
+
+InputPort& Component::add_input(const std::string& port, std::vector<std::string> fields) {
+  inputs_.push_back(std::make_unique<InputPort>(port, resolve_signal(robot_, remap_, port), std::move(fields)));
+  return *inputs_.back();
+}
+
+OutputPort& Component::add_output(const std::string& port, std::vector<std::string> fields) {
+  outputs_.push_back(std::make_unique<OutputPort>(port, resolve_signal(robot_, remap_, port), std::move(fields)));
+  return *outputs_.back();
+}
+
+}  // namespace plexus::scenario

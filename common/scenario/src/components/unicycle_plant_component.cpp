@@ -1,0 +1,65 @@
+// Registry entry for the unicycle plant (plexus/algorithms/unicycle/unicycle_plant.hpp).
+//
+//   type: unicycle         (plant)
+//   x0, y0, theta0         initial pose, m, m, rad (default 0)
+//   v_noise_std            actuation noise, m/s, >= 0 (default 0): each plant step applies
+//   omega_noise_std        v + N(0, v_noise_std^2), omega + N(0, omega_noise_std^2), drawn
+//                          from the plant's own seed (v first, then omega)
+//   input  cmd   {v, omega}     held over each plant period (the latest command before the step)
+//   output state {x, y, theta}  theta continuous (not wrapped)
+#include <memory>
+
+#include "plexus/algorithms/core/random.hpp"
+#include "plexus/algorithms/unicycle/unicycle_plant.hpp"
+#include "plexus/scenario/registry.hpp"
+
+namespace plexus::scenario {
+namespace {
+
+double noise_std(const YamlMap& params, const std::string& key) {
+  const double v = params.optional<double>(key, 0.0);
+  if (v < 0.0) params.fail(key, "must be >= 0");
+  return v;
+}
+
+class UnicyclePlantComponent final : public Component {
+ public:
+  explicit UnicyclePlantComponent(const ComponentConfig& c)
+      : Component(c),
+        state_{c.params().optional<double>("x0", 0.0), c.params().optional<double>("y0", 0.0),
+               c.params().optional<double>("theta0", 0.0)},
+        h_(c.period()),
+        v_noise_(noise_std(c.params(), "v_noise_std")),
+        omega_noise_(noise_std(c.params(), "omega_noise_std")),
+        rng_(c.seed),
+        cmd_(add_input("cmd", {"v", "omega"})),
+        out_(add_output("state", {"x", "y", "theta"})) {}
+
+  void step(int64_t k, double /*t*/) override {
+    if (k > 0 && cmd_.valid()) {
+      algorithms::UnicycleInput u{cmd_[0], cmd_[1]};
+      if (v_noise_ > 0.0) u.v += v_noise_ * rng_.normal();
+      if (omega_noise_ > 0.0) u.omega += omega_noise_ * rng_.normal();
+      state_ = algorithms::unicycle_step(state_, u, h_);
+    }
+    out_[0] = state_.x;
+    out_[1] = state_.y;
+    out_[2] = state_.theta;
+  }
+
+ private:
+  algorithms::UnicycleState state_;
+  double h_;
+  double v_noise_;
+  double omega_noise_;
+  algorithms::Rng rng_;
+  InputPort& cmd_;
+  OutputPort& out_;
+};
+
+const ComponentRegistration kUnicycle{
+    "unicycle", ComponentKind::plant, "unicycle kinematics, exact integration; in cmd {v, omega}, out state {x, y, theta}",
+    [](const ComponentConfig& c) { return std::make_unique<UnicyclePlantComponent>(c); }};
+
+}  // namespace
+}  // namespace plexus::scenario

@@ -1,0 +1,282 @@
+// Loading and validating a scenario file (format: docs/scenarios.md).
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <set>
+#include <stdexcept>
+
+#include "plexus/base/input_error.hpp"
+#include "plexus/base/yaml_reader.hpp"
+#include "plexus/scenario/digest.hpp"
+#include "plexus/scenario/registry.hpp"
+#include "plexus/scenario/scenario.hpp"
+#include "wiring.hpp"
+
+namespace plexus::scenario {
+namespace {
+
+bool valid_name(const std::string& s) {
+  if (s.empty() || s.size() > 64) return false;
+  for (char c : s)
+    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-')) return false;
+  return true;
+}
+
+std::string known_list(const std::vector<std::string>& names) {
+  std::string out;
+  for (const auto& n : names) out += (out.empty() ? "" : ", ") + n;
+  return out.empty() ? "none" : out;
+}
+
+std::string name_key(const YamlMap& parent, const std::string& key, const char* what) {
+  if (!valid_name(key)) parent.fail(key, std::string("invalid ") + what + " name (letters, digits, '_' and '-', at most 64)");
+  return key;
+}
+
+struct Loader {
+  Scenario& sc;
+  std::set<std::string> hosts;
+  std::set<std::string> robot_names;
+  std::vector<std::pair<YAML::Node, uint64_t>> derived_seeds;  // written into the resolved tree
+
+  int64_t period_of(const YamlMap& section) const {
+    if (!section.has("rate")) return 1;
+    const double rate = section.required<double>("rate");
+    const double base_rate = 1.0 / sc.step;
+    if (rate <= 0.0) section.fail("rate", "must be > 0 Hz");
+    if (rate > base_rate * (1.0 + 1e-9))
+      section.fail("rate", "is faster than the base rate " + std::to_string(base_rate) + " Hz (1 / step)");
+    const double period = base_rate / rate;
+    const double whole = std::round(period);
+    if (std::abs(period - whole) > 1e-6 * whole)
+      section.fail("rate", "must divide the base rate " + std::to_string(base_rate) +
+                               " Hz: the period must be a whole number of steps");
+    return static_cast<int64_t>(whole);
+  }
+
+  ScenarioComponent build(const YamlMap& section, const std::string& path, const std::string& key,
+                          const std::string& robot, const YAML::Node& node, bool service) {
+    ComponentConfig cfg;
+    cfg.key = key;
+    cfg.robot = robot;
+    cfg.name = service ? key : robot + "/" + key;
+    cfg.type = section.required<std::string>("type");
+    const ComponentType* type = find_component_type(cfg.type);
+    if (!type) {
+      std::vector<std::string> names;
+      for (const auto* t : component_types()) names.push_back(t->name);
+      section.fail("type", "unknown component type '" + cfg.type + "' (known: " + known_list(names) + ")");
+    }
+    cfg.kind = type->kind;
+    const bool fits = service ? (cfg.kind != ComponentKind::plant && cfg.kind != ComponentKind::sensor)
+                              : (key == "plant" ? cfg.kind == ComponentKind::plant : cfg.kind == ComponentKind::sensor);
+    if (!fits) {
+      const std::string place = service ? "services" : key == "plant" ? "a robot's plant" : "a robot's sensors";
+      section.fail("type", "'" + cfg.type + "' is a " + to_string(cfg.kind) + " and cannot be used in " + place);
+    }
+    cfg.base_step = sc.step;
+    cfg.period_steps = period_of(section);
+    if (section.has("seed")) {
+      const long long seed = section.required<long long>("seed");
+      if (seed < 0) section.fail("seed", "must be >= 0");
+      cfg.seed = static_cast<uint64_t>(seed);
+    } else {
+      cfg.seed = derive_seed(sc.seed, cfg.name);
+      derived_seeds.emplace_back(node, cfg.seed);
+    }
+    if (section.has("remap")) {
+      const YamlMap remap = section.map("remap");
+      for (const auto& port : remap.keys()) cfg.remap[port] = remap.required<std::string>(port);
+    }
+    ScenarioComponent out;
+    if (service) {
+      if (section.has("robot")) {
+        cfg.robot = section.required<std::string>("robot");
+        if (!robot_names.count(cfg.robot)) section.fail("robot", "no robot '" + cfg.robot + "' in robots");
+      }
+      out.host = section.optional<std::string>("host", "");
+      if (section.has("host") && !hosts.count(out.host))
+        section.fail("host", "no host '" + out.host + "' in hosts");
+      out.qos = section.optional<std::string>("qos", "");
+      if (section.has("qos") && out.qos.empty()) section.fail("qos", "must name a QoS profile");
+    }
+    cfg.section = &section;
+    out.kind = cfg.kind;
+    out.period_steps = cfg.period_steps;
+    out.where = section.where() + ": " + path;
+    try {
+      out.component = type->factory(cfg);
+    } catch (const InputError&) {
+      throw;
+    } catch (const std::invalid_argument& e) {  // an algorithm's own parameter check
+      throw InputError(out.where + ": " + e.what());
+    } catch (const std::domain_error& e) {
+      throw InputError(out.where + ": " + e.what());
+    }
+    section.reject_unknown();
+    for (const auto& [port, signal] : cfg.remap) {
+      bool found = false;
+      for (const auto& p : out.component->inputs()) found = found || p->port() == port;
+      for (const auto& p : out.component->outputs()) found = found || p->port() == port;
+      if (!found) section.fail("remap", "'" + cfg.type + "' has no port '" + port + "'");
+    }
+    return out;
+  }
+
+  void load_top(const YamlMap& top) {
+    sc.name = top.required<std::string>("name");
+    if (!valid_name(sc.name)) top.fail("name", "letters, digits, '_' and '-' only, at most 64 characters");
+    sc.description = top.optional<std::string>("description", "");
+    sc.duration = top.required<double>("duration");
+    if (sc.duration <= 0.0) top.fail("duration", "must be > 0 s");
+    sc.step = top.required<double>("step");
+    if (sc.step <= 0.0) top.fail("step", "must be > 0 s");
+    if (sc.step > sc.duration) top.fail("step", "must not exceed the duration");
+    const double steps = sc.duration / sc.step;
+    if (steps > 1e9) top.fail("step", "gives more than 1e9 steps");
+    sc.steps = std::llround(steps);
+    if (std::abs(steps - static_cast<double>(sc.steps)) > 1e-6)
+      top.fail("duration", "must be a whole number of steps (duration / step = " + std::to_string(steps) + ")");
+    const long long seed = top.required<long long>("seed");
+    if (seed < 0) top.fail("seed", "must be >= 0");
+    sc.seed = static_cast<uint64_t>(seed);
+    if (top.has("clock")) {
+      const YamlMap clock = top.map("clock");
+      const auto mode = clock.required<std::string>("mode");
+      if (mode == "lockstep") sc.clock = ClockMode::lockstep;
+      else if (mode == "realtime") sc.clock = ClockMode::realtime;
+      else clock.fail("mode", "expected lockstep or realtime, got '" + mode + "'");
+      clock.reject_unknown();
+    }
+    if (top.has("dds")) {
+      const YamlMap dds = top.map("dds");
+      sc.dds_vendor = dds.optional<std::string>("vendor", "");
+      if (dds.has("vendor") && sc.dds_vendor != "fast" && sc.dds_vendor != "cyclone")
+        dds.fail("vendor", "expected fast or cyclone, got '" + sc.dds_vendor + "'");
+      sc.dds_domain = dds.optional<int>("domain", 0);
+      if (sc.dds_domain < 0 || sc.dds_domain > 232) dds.fail("domain", "must be in 0..232");
+      dds.reject_unknown();
+    }
+    if (top.has("hosts")) {
+      const YamlMap hs = top.map("hosts");
+      for (const auto& h : hs.keys()) {
+        const YamlMap host = hs.map(name_key(hs, h, "host"));
+        host.optional<std::string>("address", "");
+        host.reject_unknown();
+        hosts.insert(h);
+        sc.hosts.push_back(h);
+      }
+    }
+  }
+
+  void load_components(const YamlMap& top) {
+    std::vector<ScenarioComponent> all;
+    const YamlMap robots = top.map("robots");
+    if (robots.keys().empty()) top.fail("robots", "needs at least one robot");
+    for (const auto& r : robots.keys()) {
+      const YamlMap robot = robots.map(name_key(robots, r, "robot"));
+      robot_names.insert(r);
+      const std::string rpath = "robots." + r;
+      const YamlMap plant = robot.map("plant");
+      all.push_back(build(plant, rpath + ".plant", "plant", r, sc.resolved["robots"][r]["plant"], false));
+      if (robot.has("sensors")) {
+        const YamlMap sensors = robot.map("sensors");
+        for (const auto& s : sensors.keys()) {
+          const YamlMap sensor = sensors.map(name_key(sensors, s, "sensor"));
+          all.push_back(build(sensor, rpath + ".sensors." + s, s, r, sc.resolved["robots"][r]["sensors"][s], false));
+        }
+      }
+      robot.reject_unknown();
+    }
+    if (top.has("services")) {
+      const YamlMap services = top.map("services");
+      for (const auto& s : services.keys()) {
+        const YamlMap service = services.map(name_key(services, s, "service"));
+        all.push_back(build(service, "services." + s, s, "", sc.resolved["services"][s], true));
+      }
+    }
+    std::stable_sort(all.begin(), all.end(), [](const ScenarioComponent& a, const ScenarioComponent& b) {
+      return static_cast<int>(a.kind) < static_cast<int>(b.kind);
+    });
+    sc.components = std::move(all);
+    sc.signals = detail::wire(sc.components).signals;
+  }
+
+  void load_metrics(const YamlMap& top) {
+    if (!top.has("metrics")) return;
+    const auto entries = top.sequence("metrics");
+    std::set<std::string> names{"digest"};
+    for (std::size_t i = 0; i < entries.size(); ++i) {
+      const YamlMap entry(entries[i], sc.file, "metrics." + std::to_string(i));
+      ScenarioMetric m;
+      m.type = entry.required<std::string>("type");
+      m.name = entry.optional<std::string>("name", m.type);
+      const MetricType* type = find_metric_type(m.type);
+      if (!type) {
+        std::vector<std::string> known;
+        for (const auto* t : metric_types()) known.push_back(t->name);
+        entry.fail("type", "unknown metric type '" + m.type + "' (known: " + known_list(known) + ")");
+      }
+      if (!valid_name(m.name)) entry.fail("name", "letters, digits, '_' and '-' only");
+      if (!names.insert(m.name).second) entry.fail("name", "metric '" + m.name + "' is defined twice (or is 'digest')");
+      const MetricSetup setup(entry, sc.signals, sc.step, sc.duration);
+      m.compute = type->factory(setup);
+      entry.reject_unknown();
+      sc.metrics.push_back(std::move(m));
+    }
+  }
+
+  void load_expectations(const YamlMap& top) {
+    if (!top.has("expectations")) return;
+    const YamlMap ex = top.map("expectations");
+    for (const auto& metric : ex.keys()) {
+      const auto text = ex.required<std::string>(metric);
+      const bool known = std::any_of(sc.metrics.begin(), sc.metrics.end(), [&](const auto& m) { return m.name == metric; });
+      if (!known) ex.fail(metric, "no metric '" + metric + "' in metrics");
+      Expectation e;
+      if (!parse_expectation(metric, text, e))
+        ex.fail(metric, "expected '<op> <number>' with op one of <=, >=, <, >, ==; got '" + text + "'");
+      sc.expectations.push_back(e);
+    }
+  }
+
+  void load(const YamlMap& top) {
+    // Read every top-level key first, so a misspelt one is reported before anything deeper.
+    for (const char* k : {"robots", "services", "metrics", "expectations"}) top.node(k);
+    load_top(top);
+    top.reject_unknown();
+    load_components(top);
+    load_metrics(top);
+    load_expectations(top);
+    for (auto& [node, seed] : derived_seeds) {
+      YAML::Node n = node;
+      n["seed"] = seed;
+    }
+  }
+};
+
+Scenario load_root(YAML::Node root, const std::string& origin, const std::vector<Override>& overrides) {
+  Scenario sc;
+  sc.file = origin;
+  try {
+    apply_overrides(root, overrides);
+    sc.resolved = root;
+    Loader loader{sc, {}, {}, {}};
+    loader.load(YamlMap(root, origin));
+  } catch (const InputError& e) {
+    throw InputError(attribute_to_override(e.what(), origin, overrides));
+  }
+  return sc;
+}
+
+}  // namespace
+
+Scenario load_scenario(const std::string& path, const std::vector<Override>& overrides) {
+  return load_root(load_yaml_file(path), path, overrides);
+}
+
+Scenario load_scenario_text(const std::string& text, const std::string& origin, const std::vector<Override>& overrides) {
+  return load_root(load_yaml_string(text, origin), origin, overrides);
+}
+
+}  // namespace plexus::scenario

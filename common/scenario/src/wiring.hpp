@@ -1,0 +1,36 @@
+// Binding of component ports to signals (internal to plexus_scenario).
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+#include "plexus/scenario/scenario.hpp"
+
+namespace plexus::scenario::detail {
+
+struct InputBinding {
+  InputPort* port = nullptr;
+  std::size_t signal = 0;  ///< index into Wiring::signals
+  bool delayed = false;    ///< reads the latest sample before this step (producer in same or later stage)
+  std::size_t width = 0;
+  std::array<std::size_t, kMaxSignalFields> field_of{};  ///< port field i = signal field field_of[i]
+};
+
+struct OutputBinding {
+  OutputPort* port = nullptr;
+  std::size_t signal = 0;
+};
+
+struct Wiring {
+  std::vector<SignalSpec> signals;
+  std::vector<ComponentKind> producer_kind;             ///< per signal
+  std::vector<std::vector<InputBinding>> inputs;        ///< per component
+  std::vector<std::vector<OutputBinding>> outputs;      ///< per component
+};
+
+/// Binds every port; throws InputError naming the component for an output signal produced
+/// twice, an input with no producer, a missing field or a bad field count.
+Wiring wire(const std::vector<ScenarioComponent>& components);
+
+}  // namespace plexus::scenario::detail
