@@ -1,0 +1,23 @@
+// Starting the other plexus executables (services, peers) from the CLI.
+#pragma once
+
+#include <sys/types.h>
+
+#include <string>
+#include <vector>
+
+namespace plexus::cli {
+
+/// Directory of the running plexus executable (build/bin): services live beside it.
+std::string bin_dir();
+
+/// Starts `bin_dir()/program args...`; returns its pid. Throws std::runtime_error.
+pid_t spawn(const std::string& program, const std::vector<std::string>& args);
+
+/// Runs `bin_dir()/program args...` to completion, capturing stdout. Returns the exit code.
+int run_capture(const std::string& program, const std::vector<std::string>& args, std::string& out);
+
+/// SIGTERM, then waits (SIGKILL after `grace_ms`). Returns the exit status.
+int stop(pid_t pid, int grace_ms = 3000);
+
+}  // namespace plexus::cli
