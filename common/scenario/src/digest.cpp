@@ -38,7 +38,7 @@ uint64_t derive_seed(uint64_t scenario_seed, const std::string& name) {
   z += 0x9e3779b97f4a7c15ULL;
   z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
   z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-  return z ^ (z >> 31);
+  return (z ^ (z >> 31)) >> 1;  // 63 bits: a seed the scenario format can state (0 .. 2^63-1)
 }
 
 }  // namespace plexus::scenario

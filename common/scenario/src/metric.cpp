@@ -1,37 +1,25 @@
 #include "plexus/scenario/metric.hpp"
 
-#include <cstdio>
-#include <cstdlib>
-#include <map>
+#include "named_registry.hpp"
+#include "plexus/scenario/params.hpp"
 
 namespace plexus::scenario {
 namespace {
 
-std::map<std::string, MetricType>& types() {
-  static std::map<std::string, MetricType> registry;
+detail::NamedRegistry<MetricType>& types() {
+  static detail::NamedRegistry<MetricType> registry("metric type");  // built on first use
   return registry;
 }
 
 }  // namespace
 
 MetricRegistration::MetricRegistration(std::string name, std::string summary, MetricFactory factory) {
-  auto [it, added] = types().emplace(name, MetricType{name, std::move(summary), std::move(factory)});
-  if (!added) {
-    std::fprintf(stderr, "plexus: metric type '%s' registered twice\n", name.c_str());
-    std::abort();
-  }
+  types().add(MetricType{std::move(name), std::move(summary), std::move(factory)});
 }
 
-const MetricType* find_metric_type(const std::string& name) {
-  auto it = types().find(name);
-  return it == types().end() ? nullptr : &it->second;
-}
+const MetricType* find_metric_type(const std::string& name) { return types().find(name); }
 
-std::vector<const MetricType*> metric_types() {
-  std::vector<const MetricType*> out;
-  for (const auto& [name, type] : types()) out.push_back(&type);
-  return out;
-}
+std::vector<const MetricType*> metric_types() { return types().all(); }
 
 const SignalSpec& MetricSetup::signal(const std::string& key) const {
   const auto name = entry_.required<std::string>(key);
@@ -52,17 +40,8 @@ int MetricSetup::field(const SignalSpec& spec, const std::string& key) const {
 
 std::vector<std::string> MetricSetup::fields(const std::vector<const SignalSpec*>& specs, const std::string& key,
                                              const std::vector<std::string>& fallback) const {
-  std::vector<std::string> names = fallback;
-  if (entry_.has(key)) {
-    names.clear();
-    for (const auto& n : entry_.sequence(key)) {
-      if (!n.IsScalar()) entry_.fail(key, "expected a list of field names");
-      names.push_back(n.Scalar());
-    }
-    if (names.empty()) entry_.fail(key, "needs at least one field");
-  } else {
-    entry_.node(key);  // mark as read
-  }
+  entry_.node(key);  // marks it read even when absent
+  const std::vector<std::string> names = entry_.has(key) ? required_names(entry_, key, kMaxSignalFields) : fallback;
   for (const auto* spec : specs)
     for (const auto& n : names) {
       bool found = false;

@@ -1,15 +1,12 @@
 #include "plexus/scenario/registry.hpp"
 
-#include <algorithm>
-#include <cstdio>
-#include <cstdlib>
-#include <map>
+#include "named_registry.hpp"
 
 namespace plexus::scenario {
 namespace {
 
-std::map<std::string, ComponentType>& types() {
-  static std::map<std::string, ComponentType> registry;  // constructed on first use: safe at static init
+detail::NamedRegistry<ComponentType>& types() {
+  static detail::NamedRegistry<ComponentType> registry("component type");  // built on first use
   return registry;
 }
 
@@ -17,22 +14,11 @@ std::map<std::string, ComponentType>& types() {
 
 ComponentRegistration::ComponentRegistration(std::string name, ComponentKind kind, std::string summary,
                                              ComponentFactory factory) {
-  auto [it, added] = types().emplace(name, ComponentType{name, kind, std::move(summary), std::move(factory)});
-  if (!added) {
-    std::fprintf(stderr, "plexus: component type '%s' registered twice\n", name.c_str());
-    std::abort();
-  }
+  types().add(ComponentType{std::move(name), kind, std::move(summary), std::move(factory)});
 }
 
-const ComponentType* find_component_type(const std::string& name) {
-  auto it = types().find(name);
-  return it == types().end() ? nullptr : &it->second;
-}
+const ComponentType* find_component_type(const std::string& name) { return types().find(name); }
 
-std::vector<const ComponentType*> component_types() {
-  std::vector<const ComponentType*> out;
-  for (const auto& [name, type] : types()) out.push_back(&type);
-  return out;
-}
+std::vector<const ComponentType*> component_types() { return types().all(); }
 
 }  // namespace plexus::scenario

@@ -144,3 +144,22 @@ TEST(Executor, ASensorSeedOnlyMovesThatSensor) {
 
 }  // namespace
 }  // namespace plexus::scenario
+
+namespace plexus::scenario {
+namespace {
+
+TEST(Executor, TheResolvedScenarioReproducesTheRun) {
+  const std::string file = std::string(PLEXUS_SOURCE_DIR) + "/deploy/scenarios/unicycle_circle.yaml";
+  const std::vector<Override> noisy{parse_override("robots.r1.plant.omega_noise_std=0.01")};
+  Scenario a = load_scenario(file, noisy);
+  YAML::Emitter em;
+  em << a.resolved;
+  Scenario b = load_scenario_text(em.c_str(), "resolved.yaml");
+  const RunLog la = run_scenario(a);
+  const RunLog lb = run_scenario(b);
+  EXPECT_EQ(run_digest(la), run_digest(lb));
+  EXPECT_EQ(la.find("r1/gps")->values, lb.find("r1/gps")->values);
+}
+
+}  // namespace
+}  // namespace plexus::scenario

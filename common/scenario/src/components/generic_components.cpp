@@ -13,36 +13,20 @@
 #include <memory>
 
 #include "plexus/algorithms/core/random.hpp"
+#include "plexus/scenario/params.hpp"
 #include "plexus/scenario/registry.hpp"
 
 namespace plexus::scenario {
 namespace {
 
-std::vector<std::string> string_list(const YamlMap& params, const std::string& key) {
-  std::vector<std::string> out;
-  for (const auto& n : params.sequence(key)) {
-    if (!n.IsScalar()) params.fail(key, "expected a list of field names");
-    out.push_back(n.Scalar());
-  }
-  if (out.empty() || out.size() > kMaxSignalFields)
-    params.fail(key, "needs 1 to " + std::to_string(kMaxSignalFields) + " field names");
-  return out;
-}
-
-double non_negative(const YamlMap& params, const std::string& key) {
-  const double v = params.optional<double>(key, 0.0);
-  if (v < 0.0) params.fail(key, "must be >= 0");
-  return v;
-}
-
 class Measurement final : public Component {
  public:
   explicit Measurement(const ComponentConfig& c)
       : Component(c),
-        noise_std_(non_negative(c.params(), "noise_std")),
-        quantum_(non_negative(c.params(), "quantum")),
+        noise_std_(optional_non_negative(c.params(), "noise_std")),
+        quantum_(optional_non_negative(c.params(), "quantum")),
         rng_(c.seed),
-        in_(add_input(c.params().optional<std::string>("source", "state"), string_list(c.params(), "fields"))),
+        in_(add_input(c.params().optional<std::string>("source", "state"), required_names(c.params(), "fields", kMaxSignalFields))),
         out_(add_output(c.key, in_.fields())) {}
 
   void step(int64_t /*k*/, double /*t*/) override {

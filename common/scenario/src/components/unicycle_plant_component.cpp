@@ -11,16 +11,11 @@
 
 #include "plexus/algorithms/core/random.hpp"
 #include "plexus/algorithms/unicycle/unicycle_plant.hpp"
+#include "plexus/scenario/params.hpp"
 #include "plexus/scenario/registry.hpp"
 
 namespace plexus::scenario {
 namespace {
-
-double noise_std(const YamlMap& params, const std::string& key) {
-  const double v = params.optional<double>(key, 0.0);
-  if (v < 0.0) params.fail(key, "must be >= 0");
-  return v;
-}
 
 class UnicyclePlantComponent final : public Component {
  public:
@@ -29,8 +24,8 @@ class UnicyclePlantComponent final : public Component {
         state_{c.params().optional<double>("x0", 0.0), c.params().optional<double>("y0", 0.0),
                c.params().optional<double>("theta0", 0.0)},
         h_(c.period()),
-        v_noise_(noise_std(c.params(), "v_noise_std")),
-        omega_noise_(noise_std(c.params(), "omega_noise_std")),
+        v_noise_(optional_non_negative(c.params(), "v_noise_std")),
+        omega_noise_(optional_non_negative(c.params(), "omega_noise_std")),
         rng_(c.seed),
         cmd_(add_input("cmd", {"v", "omega"})),
         out_(add_output("state", {"x", "y", "theta"})) {}

@@ -27,6 +27,7 @@ uint64_t run_digest(const RunLog& log);
 
 /// A 64-bit seed derived from a scenario seed and a component name, so that each
 /// component has its own random stream and changing one does not move the others.
+/// Always below 2^63, so the resolved scenario can state it as a YAML integer.
 uint64_t derive_seed(uint64_t scenario_seed, const std::string& name);
 
 }  // namespace plexus::scenario
