@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "message_pattern.hpp"
+#include "simple_values.hpp"
 #include "plexus/base/clock.hpp"
 #include "plexus/base/input_error.hpp"
 #include "plexus/base/logging.hpp"
@@ -36,14 +37,40 @@ struct Endpoints {
   void (*destroy)(void*) = nullptr;
   int received = 0;
   int corrupted = 0;
+  void (*fill)(const msg::TypeSupport&, void*, uint64_t) = nullptr;
+  bool (*check)(const msg::TypeSupport&, void*) = nullptr;
 };
 
+// --values pattern: every type, a byte pattern. --values simple: Pose2D and JointState
+// with the values the vendor-native peers use (simple_values.hpp).
+void fill_pattern(const msg::TypeSupport& ts, void* obj, uint64_t seq) { plexus::test::fill_pattern(ts, obj, seq); }
+bool check_pattern(const msg::TypeSupport& ts, void* obj) { return plexus::test::matches_pattern(ts, obj); }
 template <class T>
-void add(std::vector<Endpoints>& eps, const std::string& only, const std::string& prefix) {
+void fill_simple(const msg::TypeSupport&, void* obj, uint64_t seq) {
+  plexus::test::fill_simple(*static_cast<T*>(obj), seq);
+}
+template <class T>
+bool check_simple(const msg::TypeSupport&, void* obj) {
+  return plexus::test::check_simple(*static_cast<const T*>(obj));
+}
+
+template <class T>
+void add(std::vector<Endpoints>& eps, const std::string& only, const std::string& prefix, bool simple) {
   const auto& ts = msg::type_support<T>();
   std::string short_name = std::string(ts.type_name).substr(std::string("plexus::msg::").size());
   if (!only.empty() && only != "all" && only != short_name) return;
   Endpoints e;
+  if (simple) {
+    if constexpr (std::is_same_v<T, msg::Pose2D> || std::is_same_v<T, msg::JointState>) {
+      e.fill = &fill_simple<T>;
+      e.check = &check_simple<T>;
+    } else {
+      return;
+    }
+  } else {
+    e.fill = &fill_pattern;
+    e.check = &check_pattern;
+  }
   e.ts = &ts;
   e.topic = prefix + "/" + short_name;
   e.obj = new T();
@@ -55,7 +82,7 @@ void add(std::vector<Endpoints>& eps, const std::string& only, const std::string
 
 int main(int argc, char** argv) {
   CLI::App app{"plexus test peer"};
-  std::string role, dds = "fast", types = "all", prefix = "peer";
+  std::string role, dds = "fast", types = "all", prefix = "peer", values = "pattern";
   int domain = 0, count = 5;
   double timeout_s = 20.0;
   app.add_option("role", role, "pub or sub")->required()->check(CLI::IsMember({"pub", "sub"}));
@@ -65,6 +92,8 @@ int main(int argc, char** argv) {
   app.add_option("--types", types, "all, or one type name (Pose2D)");
   app.add_option("--prefix", prefix, "topic prefix");
   app.add_option("--timeout", timeout_s, "seconds");
+  app.add_option("--values", values, "pattern (every type) or simple (Pose2D, JointState: native peers' values)")
+      ->check(CLI::IsMember({"pattern", "simple"}));
   CLI11_PARSE(app, argc, argv);
 
   try {
@@ -81,7 +110,7 @@ int main(int argc, char** argv) {
     qos.depth = count;
 
     std::vector<Endpoints> eps;
-    std::apply([&](auto... t) { (add<decltype(t)>(eps, types, prefix), ...); }, msg::AllTopicTypes{});
+    std::apply([&](auto... t) { (add<decltype(t)>(eps, types, prefix, values == "simple"), ...); }, msg::AllTopicTypes{});
     if (eps.empty()) throw InputError("--types: unknown type '" + types + "'");
     const int64_t deadline = monotonic_ns() + static_cast<int64_t>(timeout_s * 1e9);
 
@@ -97,7 +126,7 @@ int main(int argc, char** argv) {
         }
       for (auto& e : eps)
         for (int k = 1; k <= count; ++k) {
-          plexus::test::fill_pattern(*e.ts, e.obj, static_cast<uint64_t>(k));
+          e.fill(*e.ts, e.obj, static_cast<uint64_t>(k));
           if (!e.writer->write(e.obj)) {
             std::fprintf(stderr, "pub: write failed on %s\n", e.topic.c_str());
             return 1;
@@ -115,7 +144,7 @@ int main(int argc, char** argv) {
         done = true;
         for (auto& e : eps) {
           while (e.reader->take(e.obj, nullptr)) {
-            if (plexus::test::matches_pattern(*e.ts, e.obj))
+            if (e.check(*e.ts, e.obj))
               ++e.received;
             else
               ++e.corrupted;
