@@ -103,6 +103,30 @@ TEST_P(QosBehaviour, KeepLastDepthIsHonoured) {
   EXPECT_EQ(got, (std::vector<double>{8, 9, 10}));
 }
 
+TEST_P(QosBehaviour, LivelinessLostAndRegained) {
+  auto p = make(3, "liveliness_reader");
+  auto other = make(3, "liveliness_writer");
+  std::atomic<int> lost{0}, not_alive{0}, alive{0};
+  auto count = [&](const Event& e) {
+    if (e.kind == EventKind::liveliness_lost) lost++;
+    if (e.kind == EventKind::liveliness_changed) (e.alive ? alive : not_alive)++;
+  };
+  p->on_event(count);
+  other->on_event(count);
+  QosProfile q = profile(QosProfile::Reliability::reliable, 1);
+  q.liveliness = QosProfile::Liveliness::manual_by_topic;
+  q.liveliness_lease_s = 0.2;
+  auto pub = other->publisher<msg::Pose2D>("qos/liveliness", q);
+  auto sub = p->subscriber<msg::Pose2D>("qos/liveliness", q);
+  ASSERT_TRUE(eventually([&] { return pub.matched_count() > 0 && sub.matched_count() > 0; }));
+  msg::Pose2D m;
+  pub.publish(m);  // asserts liveliness once, then the writer falls silent past its lease
+  EXPECT_TRUE(eventually([&] { return alive > 0 && not_alive > 0 && lost > 0; }));
+  const int alive_before = alive;
+  pub.assert_liveliness();  // back
+  EXPECT_TRUE(eventually([&] { return alive > alive_before; }));
+}
+
 INSTANTIATE_TEST_SUITE_P(Vendors, QosBehaviour, ::testing::Values(Vendor::fast, Vendor::cyclone),
                          [](const ::testing::TestParamInfo<Vendor>& v) { return std::string(to_string(v.param)); });
 
