@@ -29,6 +29,14 @@ struct RunLog {
   int64_t steps = 0;       ///< number of base steps run after step 0 (the last step is `steps`)
   std::vector<SignalTrace> signals;
 
+  /// Appends a sample of signal `index` (reserve the traces first to stay allocation-free).
+  void record(std::size_t index, const SignalSample& sample) {
+    auto& trace = signals[index];
+    trace.steps.push_back(sample.step);
+    trace.values.insert(trace.values.end(), sample.values.begin(),
+                        sample.values.begin() + static_cast<std::ptrdiff_t>(trace.width()));
+  }
+
   /// The trace of a signal, or nullptr.
   const SignalTrace* find(const std::string& name) const;
   /// Time of a base step, s.

@@ -1,0 +1,55 @@
+// One base step of a scenario's components, with the lockstep semantics of executor.hpp,
+// for any subset of the components. `plexus sim` runs every component in one process with
+// it; a distributed lockstep host runs its share and gets the other inputs over DDS.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "plexus/scenario/scenario.hpp"
+#include "plexus/scenario/signal.hpp"
+
+namespace plexus::scenario {
+
+class StepExecutor {
+ public:
+  /// Fills `sample` with the sample of `signal` due at step `due` (its producer is not
+  /// hosted here). Called only with due >= 0; never for a signal produced locally.
+  using RemoteInput = std::function<void(std::size_t signal, int64_t due, SignalSample& sample)>;
+  /// Receives every output sample of a hosted component, in execution order.
+  using OutputSink = std::function<void(std::size_t signal, const SignalSample& sample)>;
+
+  /// Binds every port of the scenario (all components, hosted or not, so signal indices
+  /// are the same in every process). `hosted[i]` says whether component i runs here;
+  /// empty means all of them. Throws InputError for a wiring error.
+  explicit StepExecutor(Scenario& scenario, std::vector<bool> hosted = {});
+  ~StepExecutor();
+  StepExecutor(const StepExecutor&) = delete;
+  StepExecutor& operator=(const StepExecutor&) = delete;
+
+  /// Every signal of the scenario, indexed as in the callbacks.
+  const std::vector<SignalSpec>& signals() const;
+  /// Signals that hosted components read but that no hosted component produces.
+  std::vector<std::size_t> remote_inputs() const;
+  /// Signals produced by hosted components.
+  std::vector<std::size_t> local_outputs() const;
+  /// Whether component i runs here.
+  bool hosted(std::size_t component) const { return hosted_[component]; }
+
+  /// The step whose sample an input reads at step k: the latest multiple of the producer's
+  /// period at or before k (or k-1 for a delayed input); -1 when there is none yet.
+  static int64_t due_step(int64_t k, int64_t producer_period, bool delayed);
+
+  /// Runs base step k of the hosted components. Does not allocate (the callbacks must not either).
+  void step(int64_t k, const RemoteInput& remote, const OutputSink& sink);
+
+ private:
+  struct Impl;
+  Scenario& scenario_;
+  std::vector<bool> hosted_;
+  Impl* impl_;
+};
+
+}  // namespace plexus::scenario

@@ -1,0 +1,104 @@
+#include "plexus/scenario/step_executor.hpp"
+
+#include "wiring.hpp"
+
+namespace plexus::scenario {
+namespace {
+
+/// The bus slot of one local signal: its current sample and the one before, so a delayed
+/// reader can take "the latest sample before step k" whatever the execution order.
+struct Slot {
+  SignalSample current;
+  SignalSample previous;
+};
+
+}  // namespace
+
+struct StepExecutor::Impl {
+  detail::Wiring wiring;
+  std::vector<Slot> bus;
+  std::vector<bool> produced_here;  // per signal
+  SignalSample remote_sample;       // scratch for remote inputs
+};
+
+StepExecutor::StepExecutor(Scenario& scenario, std::vector<bool> hosted)
+    : scenario_(scenario), hosted_(std::move(hosted)), impl_(new Impl{detail::wire(scenario.components), {}, {}, {}}) {
+  if (hosted_.empty()) hosted_.assign(scenario_.components.size(), true);
+  impl_->bus.resize(impl_->wiring.signals.size());
+  impl_->produced_here.assign(impl_->wiring.signals.size(), false);
+  for (std::size_t ci = 0; ci < scenario_.components.size(); ++ci)
+    if (hosted_[ci])
+      for (const auto& out : impl_->wiring.outputs[ci]) impl_->produced_here[out.signal] = true;
+}
+
+StepExecutor::~StepExecutor() { delete impl_; }
+
+const std::vector<SignalSpec>& StepExecutor::signals() const { return impl_->wiring.signals; }
+
+std::vector<std::size_t> StepExecutor::remote_inputs() const {
+  std::vector<bool> seen(impl_->wiring.signals.size(), false);
+  std::vector<std::size_t> out;
+  for (std::size_t ci = 0; ci < scenario_.components.size(); ++ci) {
+    if (!hosted_[ci]) continue;
+    for (const auto& in : impl_->wiring.inputs[ci])
+      if (!impl_->produced_here[in.signal] && !seen[in.signal]) {
+        seen[in.signal] = true;
+        out.push_back(in.signal);
+      }
+  }
+  return out;
+}
+
+std::vector<std::size_t> StepExecutor::local_outputs() const {
+  std::vector<std::size_t> out;
+  for (std::size_t s = 0; s < impl_->produced_here.size(); ++s)
+    if (impl_->produced_here[s]) out.push_back(s);
+  return out;
+}
+
+int64_t StepExecutor::due_step(int64_t k, int64_t producer_period, bool delayed) {
+  const int64_t target = delayed ? k - 1 : k;
+  if (target < 0) return -1;
+  return target - target % producer_period;
+}
+
+void StepExecutor::step(int64_t k, const RemoteInput& remote, const OutputSink& sink) {
+  auto& w = impl_->wiring;
+  const double t = static_cast<double>(k) * scenario_.step;
+  const std::size_t n = scenario_.components.size();
+  for (std::size_t ci = 0; ci < n; ++ci) {
+    if (!hosted_[ci]) continue;
+    auto& c = scenario_.components[ci];
+    if (k % c.period_steps != 0) continue;
+    for (const auto& in : w.inputs[ci]) {
+      const SignalSample* src = nullptr;
+      if (impl_->produced_here[in.signal]) {
+        const Slot& slot = impl_->bus[in.signal];
+        src = (in.delayed && slot.current.step >= k) ? &slot.previous : &slot.current;
+      } else {
+        SignalSample& r = impl_->remote_sample;
+        const int64_t due = due_step(k, w.signals[in.signal].period_steps, in.delayed);
+        if (due < 0) {
+          r = SignalSample{};  // not produced yet: invalid input, fields zero
+        } else {
+          remote(in.signal, due, r);
+        }
+        src = &r;
+      }
+      SignalSample& dst = in.port->sample();
+      dst.step = src->step;
+      for (std::size_t f = 0; f < in.width; ++f) dst.values[f] = src->values[in.field_of[f]];
+    }
+    c.component->step(k, t);
+    for (const auto& out : w.outputs[ci]) {
+      Slot& slot = impl_->bus[out.signal];
+      SignalSample& sample = out.port->sample();
+      sample.step = k;
+      slot.previous = slot.current;
+      slot.current = sample;
+      sink(out.signal, sample);
+    }
+  }
+}
+
+}  // namespace plexus::scenario
