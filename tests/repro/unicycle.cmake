@@ -82,3 +82,33 @@ unicycle_repro(path_following_circle.radius_2_outside path_following_circle --se
 unicycle_repro(path_following_circle.radius_2_inside path_following_circle --set services.path.radius=2)
 unicycle_repro(path_following_circle.u1_0.5_offset path_following_circle --set services.controller.u1=0.5
                --set services.path.center_x=0.5 --set services.path.center_y=-0.3)
+unicycle_repro(path_following_circle.state_feedback path_following_circle --set services.controller.feedback=state)
+# Another shape (variant file): a rotated ellipse; with u2 held over a step, h settles to an
+# O(step) residual, so at 1 kHz the bound is 10x tighter.
+unicycle_repro(path_following_ellipse path_following_ellipse)
+unicycle_repro(path_following_ellipse.state_feedback path_following_ellipse --set services.controller.feedback=state)
+unicycle_repro(path_following_ellipse.1kHz path_following_ellipse --set step=0.001
+               "--set" "expectations.final_path_error=<= 1e-3")
+
+# ---- bad configuration is exit 2 with the file, the section and the parameter
+function(unicycle_bad_config name scenario stderr)
+  list(JOIN ARGN "|" sets)
+  add_test(NAME unicycle_cli.${name}
+           COMMAND ${CMAKE_COMMAND}
+                   "-DCOMMAND=$<TARGET_FILE:plexus>|sim|${UNICYCLE_SCENARIOS}/${scenario}.yaml|--quiet|--out|${UNICYCLE_RUNS}/bad|${sets}"
+                   -DEXPECT_RC=2 "-DEXPECT_STDERR=${stderr}"
+                   -P ${PROJECT_SOURCE_DIR}/common/scenario/tests/cli/expect_cli.cmake)
+  set_tests_properties(unicycle_cli.${name} PROPERTIES LABELS "cli")
+endfunction()
+unicycle_bad_config(observer_gain wmr_observer "wmr_observer.yaml:[0-9]+: services.observer: heading_observer: L must be finite and > 0 \\(got -1\\)"
+                    --set services.observer.L=-1)
+unicycle_bad_config(sensor_kind wmr_output_feedback_rfid "robots.r1.sensors.position.kind: expected exact, gaussian or rfid_grid, got 'laser'"
+                    --set robots.r1.sensors.position.kind=laser)
+unicycle_bad_config(sensor_key_of_other_kind wmr_output_feedback "robots.r1.sensors.position.grid_spacing: unknown key"
+                    --set robots.r1.sensors.position.grid_spacing=0.1)
+unicycle_bad_config(feedback wmr_state_feedback "services.controller.feedback: expected state or output, got 'magic'"
+                    --set services.controller.feedback=magic)
+unicycle_bad_config(path_shape path_following_circle "services.path.shape: expected circle, line, ellipse or polynomial, got 'square'"
+                    --set services.path.shape=square)
+unicycle_bad_config(path_speed path_following_circle "services.controller.u1: must be finite and != 0 m/s"
+                    --set services.controller.u1=0)
