@@ -1,0 +1,71 @@
+// The filter steps must not allocate: this binary replaces the global operator new with
+// a counting one and checks the count around predict/update of all three filters.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cmath>
+#include <cstdlib>
+#include <new>
+
+#include "plexus/algorithms/core/ekf.hpp"
+#include "plexus/algorithms/core/ukf.hpp"
+
+namespace {
+std::atomic<long> g_allocations{0};
+}  // namespace
+
+void* operator new(std::size_t n) {
+  ++g_allocations;
+  if (void* p = std::malloc(n ? n : 1)) return p;
+  throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+
+namespace plexus::algorithms {
+namespace {
+
+using Vec3 = Eigen::Vector3d;
+using Mat3 = Eigen::Matrix3d;
+using V1 = Eigen::Matrix<double, 1, 1>;
+
+TEST(NoAllocation, FilterStepsDoNotAllocate) {
+  ExtendedKalmanFilter<3> ekf;
+  AdditiveUkf<3> add;
+  AugmentedUkf<3, 3, 1> aug;
+  const Mat3 Q = Vec3(1e-4, 1e-3, 1e-5).asDiagonal();
+  const V1 R(1e-3);
+  ekf.reset(Vec3(0.1, 0, 0), Mat3::Identity() * 0.01);
+  add.reset(Vec3(0.1, 0, 0), Mat3::Identity() * 0.01);
+  aug.reset(Vec3(0.1, 0, 0), Mat3::Identity() * 0.01);
+  auto f = [](const Vec3& x) -> Vec3 { return {x(0) + 0.01 * x(1), x(1) + 0.01 * std::sin(x(0)), x(2)}; };
+  auto h = [](const Vec3& x) { return V1(x(0) + x(2)); };
+
+  const long before = g_allocations.load();
+  for (int k = 0; k < 100; ++k) {
+    const V1 z(0.1 + 0.001 * k);
+    ekf.predict(
+        [&](const Vec3& x, Mat3& F) {
+          F << 1, 0.01, 0, 0.01 * std::cos(x(0)), 1, 0, 0, 0, 1;
+          return f(x);
+        },
+        Q);
+    ekf.update<1>(
+        z,
+        [&](const Vec3& x, Eigen::Matrix<double, 1, 3>& H) {
+          H << 1, 0, 1;
+          return h(x);
+        },
+        R);
+    add.predict(f, Q);
+    add.update<1>(z, h, R);
+    aug.predict([&](const Vec3& x, const Vec3& w) -> Vec3 { return f(x) + w; }, Q, R);
+    aug.update<1>(z, [&](const Vec3& x, const V1& v) { return V1(h(x) + v); });
+  }
+  const long after = g_allocations.load();
+  EXPECT_EQ(after - before, 0);
+  EXPECT_TRUE(ekf.state().allFinite() && add.state().allFinite() && aug.state().allFinite());
+}
+
+}  // namespace
+}  // namespace plexus::algorithms
