@@ -15,6 +15,7 @@ struct Command {
 
 Command add_demo_command(CLI::App& root);
 Command add_qos_command(CLI::App& root);
+Command add_launch_command(CLI::App& root);
 Command add_sim_command(CLI::App& root);
 Command add_report_command(CLI::App& root);
 

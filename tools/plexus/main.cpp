@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
   std::vector<plexus::cli::Command> commands;
   commands.push_back(plexus::cli::add_demo_command(app));
   commands.push_back(plexus::cli::add_qos_command(app));
+  commands.push_back(plexus::cli::add_launch_command(app));
   commands.push_back(plexus::cli::add_sim_command(app));
   commands.push_back(plexus::cli::add_report_command(app));
   // Further subcommands register here.

@@ -1,0 +1,85 @@
+// Distributed lockstep: the scenario's components split over processes (and hosts),
+// stepping exactly as `plexus sim` does.
+//
+// Protocol:
+//  - the clock (in `plexus launch`) publishes ClockStep k on `lockstep/clock`;
+//  - every host runs base step k of its components (StepExecutor). An input produced in
+//    another process is read from `lockstep/<signal>` (plexus::msg::Signal, bit-exact):
+//    the host waits for exactly the sample the in-process executor would use (the latest
+//    one due at step k, or k-1 for a delayed input);
+//  - every output sample is published on `lockstep/<signal>`;
+//  - the clock records every signal; when all samples due at step k have arrived, it
+//    publishes ClockStep k+1. After the last step it publishes the end-of-run step.
+// The same scenario and seed therefore give the same log and digest as `plexus sim`,
+// whatever the vendors and the split. Waiting is bounded: a missing sample fails the run
+// after the timeout with a message naming the signal, its producer and the step.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "plexus/runtime/participant.hpp"
+#include "plexus/scenario/executor.hpp"
+#include "plexus/scenario/scenario.hpp"
+#include "plexus/scenario/step_executor.hpp"
+
+namespace plexus::distributed {
+
+/// ClockStep::step_index that ends the run.
+inline constexpr uint64_t kEndOfRun = ~uint64_t{0};
+
+/// DDS topic carrying a scenario signal in lockstep mode.
+std::string lockstep_topic(const std::string& signal);
+inline const char* const kClockTopic = "lockstep/clock";
+
+struct LockstepOptions {
+  double timeout_s = 10.0;  ///< longest wait for one sample or one clock step
+};
+
+/// A run that cannot go on: a producer stopped answering, or data arrived out of order.
+class LockstepError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Runs the hosted components of a scenario as the clock commands.
+class LockstepHost {
+ public:
+  /// `hosted[i]`: component i runs in this process. Creates the endpoints.
+  LockstepHost(scenario::Scenario& scenario, std::vector<bool> hosted, rt::Participant& participant,
+               const rt::QosProfile& qos, LockstepOptions options = {});
+  ~LockstepHost();
+
+  /// Steps until the end of run (returns the number of steps run) or until `stop` is set.
+  /// Throws LockstepError when an input or the clock stays silent past the timeout.
+  int64_t run(const std::atomic<bool>& stop);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+/// The lockstep clock: steps the run and records every signal.
+class LockstepClock {
+ public:
+  LockstepClock(scenario::Scenario& scenario, rt::Participant& participant, const rt::QosProfile& qos,
+                LockstepOptions options = {});
+  ~LockstepClock();
+
+  /// Waits until `hosts` hosts follow the clock and every signal has a producer; throws
+  /// LockstepError naming what is missing after `timeout_s`.
+  void wait_ready(int hosts, double timeout_s, const std::atomic<bool>& stop);
+
+  /// Runs every step and returns the log (the same as `plexus sim`'s). Throws LockstepError.
+  scenario::RunLog run(const std::atomic<bool>& stop, const scenario::StepObserver& observer = {});
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace plexus::distributed

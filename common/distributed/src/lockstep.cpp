@@ -1,0 +1,241 @@
+#include "plexus/distributed/lockstep.hpp"
+
+#include <spdlog/spdlog.h>
+
+#include <array>
+#include <thread>
+
+#include "plexus/base/clock.hpp"
+#include "signal_codec.hpp"
+
+namespace plexus::distributed {
+namespace {
+
+using scenario::SignalSample;
+using scenario::SignalSpec;
+
+int64_t to_ns(double s) { return static_cast<int64_t>(s * 1e9); }
+
+std::string step_text(int64_t k) { return "step " + std::to_string(k); }
+
+/// The latest samples received of one remote signal, by step.
+class RemoteSignal {
+ public:
+  RemoteSignal(const SignalSpec& spec, rt::Subscriber<msg::Signal> sub) : spec_(&spec), sub_(std::move(sub)) {}
+
+  /// Copies the sample produced at step `due` into `out`, waiting for it up to `timeout_ns`.
+  void get(int64_t due, int64_t timeout_ns, SignalSample& out) {
+    const int64_t deadline = monotonic_ns() + timeout_ns;
+    for (;;) {
+      const Entry& e = ring_[slot(due)];
+      if (e.sample.step == due) {
+        out = e.sample;
+        return;
+      }
+      drain();
+      if (ring_[slot(due)].sample.step == due) continue;
+      const int64_t now = monotonic_ns();
+      if (now >= deadline)
+        throw LockstepError("lockstep: no sample of '" + spec_->name + "' (produced by '" + spec_->producer + "') for " +
+                            step_text(due) + " within " + std::to_string(timeout_ns / 1'000'000'000) + " s");
+      sub_.wait(deadline - now);
+    }
+  }
+
+  /// Takes every received sample into the ring.
+  void drain() {
+    while (sub_.take(msg_)) {
+      SignalSample s;
+      if (!detail::from_message(msg_, spec_->fields.size(), s)) {
+        ++malformed_;
+        continue;
+      }
+      ring_[slot(s.step)].sample = s;
+    }
+  }
+
+  rt::Subscriber<msg::Signal>& subscriber() { return sub_; }
+  const SignalSpec& spec() const { return *spec_; }
+
+ private:
+  struct Entry {
+    SignalSample sample;
+  };
+  std::size_t slot(int64_t step) const {
+    return static_cast<std::size_t>((step / spec_->period_steps) % static_cast<int64_t>(kRing));
+  }
+  static constexpr std::size_t kRing = 32;
+  const SignalSpec* spec_;
+  rt::Subscriber<msg::Signal> sub_;
+  msg::Signal msg_;
+  std::array<Entry, kRing> ring_{};
+  uint64_t malformed_ = 0;
+};
+
+}  // namespace
+
+std::string lockstep_topic(const std::string& signal) { return "lockstep/" + signal; }
+
+// --- host -------------------------------------------------------------------
+
+struct LockstepHost::Impl {
+  scenario::Scenario& sc;
+  scenario::StepExecutor exec;
+  LockstepOptions opt;
+  rt::Subscriber<msg::ClockStep> clock;
+  std::vector<std::unique_ptr<RemoteSignal>> remote;  // indexed by signal (null if not remote)
+  std::vector<rt::Publisher<msg::Signal>> out;        // indexed by signal (empty if not local)
+  msg::Signal out_msg;
+
+  Impl(scenario::Scenario& s, std::vector<bool> hosted, rt::Participant& p, const rt::QosProfile& qos,
+       LockstepOptions o)
+      : sc(s), exec(s, std::move(hosted)), opt(o) {
+    clock = p.subscriber<msg::ClockStep>(kClockTopic, qos);
+    const auto& signals = exec.signals();
+    remote.resize(signals.size());
+    out.resize(signals.size());
+    for (std::size_t i : exec.remote_inputs())
+      remote[i] = std::make_unique<RemoteSignal>(signals[i], p.subscriber<msg::Signal>(lockstep_topic(signals[i].name), qos));
+    for (std::size_t i : exec.local_outputs()) out[i] = p.publisher<msg::Signal>(lockstep_topic(signals[i].name), qos);
+  }
+};
+
+LockstepHost::LockstepHost(scenario::Scenario& scenario, std::vector<bool> hosted, rt::Participant& participant,
+                           const rt::QosProfile& qos, LockstepOptions options)
+    : impl_(std::make_unique<Impl>(scenario, std::move(hosted), participant, qos, options)) {}
+
+LockstepHost::~LockstepHost() = default;
+
+int64_t LockstepHost::run(const std::atomic<bool>& stop) {
+  Impl& m = *impl_;
+  const int64_t timeout = to_ns(m.opt.timeout_s);
+  const int64_t step_ns = to_ns(m.sc.step);
+  const scenario::StepExecutor::RemoteInput remote = [&m, timeout](std::size_t signal, int64_t due, SignalSample& s) {
+    m.remote[signal]->get(due, timeout, s);
+  };
+  const scenario::StepExecutor::OutputSink publish = [&m, step_ns](std::size_t signal, const SignalSample& s) {
+    detail::to_message(s, m.exec.signals()[signal].fields.size(), step_ns, m.out_msg);
+    if (!m.out[signal].publish(m.out_msg))
+      throw LockstepError("lockstep: cannot publish '" + m.exec.signals()[signal].name + "' at " + step_text(s.step));
+  };
+  msg::ClockStep tick;
+  int64_t steps = 0;
+  int64_t expected = 0;
+  int64_t last_tick = monotonic_ns();
+  while (!stop.load(std::memory_order_relaxed)) {
+    if (!m.clock.take(tick)) {
+      // The clock waits for our outputs, so silence here means the clock is gone; the
+      // launcher's timeout covers a slow run, this one a dead launcher.
+      if (monotonic_ns() - last_tick > 3 * timeout)
+        throw LockstepError("lockstep: the clock stopped at " + step_text(expected) + " for more than " +
+                            std::to_string(3 * timeout / 1'000'000'000) + " s");
+      m.clock.wait(100'000'000);
+      continue;
+    }
+    last_tick = monotonic_ns();
+    if (tick.step_index() == kEndOfRun) break;
+    const auto k = static_cast<int64_t>(tick.step_index());
+    if (k < expected) continue;  // a repeat (late join): already done
+    if (k != expected)
+      throw LockstepError("lockstep: the clock jumped from " + step_text(expected) + " to " + step_text(k));
+    m.exec.step(k, remote, publish);
+    ++expected;
+    ++steps;
+  }
+  return steps;
+}
+
+// --- clock ------------------------------------------------------------------
+
+struct LockstepClock::Impl {
+  scenario::Scenario& sc;
+  scenario::StepExecutor exec;  // wiring only (nothing hosted): the signal list, same indices everywhere
+  LockstepOptions opt;
+  rt::Publisher<msg::ClockStep> clock;
+  std::vector<rt::Subscriber<msg::Signal>> subs;
+  msg::Signal in;
+
+  Impl(scenario::Scenario& s, rt::Participant& p, const rt::QosProfile& qos, LockstepOptions o)
+      : sc(s), exec(s, std::vector<bool>(s.components.size(), false)), opt(o) {
+    clock = p.publisher<msg::ClockStep>(kClockTopic, qos);
+    for (const auto& spec : exec.signals()) subs.push_back(p.subscriber<msg::Signal>(lockstep_topic(spec.name), qos));
+  }
+};
+
+LockstepClock::LockstepClock(scenario::Scenario& scenario, rt::Participant& participant, const rt::QosProfile& qos,
+                             LockstepOptions options)
+    : impl_(std::make_unique<Impl>(scenario, participant, qos, options)) {}
+
+LockstepClock::~LockstepClock() = default;
+
+void LockstepClock::wait_ready(int hosts, double timeout_s, const std::atomic<bool>& stop) {
+  Impl& m = *impl_;
+  const int64_t deadline = monotonic_ns() + to_ns(timeout_s);
+  for (;;) {
+    std::string missing;
+    if (m.clock.matched_count() < hosts)
+      missing = std::to_string(hosts - m.clock.matched_count()) + " of " + std::to_string(hosts) + " hosts";
+    for (std::size_t i = 0; i < m.subs.size() && missing.empty(); ++i)
+      if (m.subs[i].matched_count() == 0)
+        missing = "the producer of '" + m.exec.signals()[i].name + "' ('" + m.exec.signals()[i].producer + "')";
+    if (missing.empty()) return;
+    if (stop) throw LockstepError("lockstep: stopped while waiting for " + missing);
+    if (monotonic_ns() > deadline)
+      throw LockstepError("lockstep: " + missing + " did not join within " + std::to_string(timeout_s) + " s");
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+}
+
+scenario::RunLog LockstepClock::run(const std::atomic<bool>& stop, const scenario::StepObserver& observer) {
+  Impl& m = *impl_;
+  const auto& signals = m.exec.signals();
+  scenario::RunLog log;
+  log.base_step = m.sc.step;
+  log.steps = m.sc.steps;
+  log.signals.resize(signals.size());
+  for (std::size_t s = 0; s < signals.size(); ++s) {
+    auto& trace = log.signals[s];
+    trace.spec = signals[s];
+    const auto samples = static_cast<std::size_t>(m.sc.steps / trace.spec.period_steps + 1);
+    trace.steps.reserve(samples);
+    trace.values.reserve(samples * trace.width());
+  }
+  const int64_t timeout = to_ns(m.opt.timeout_s);
+  const int64_t step_ns = to_ns(m.sc.step);
+  msg::ClockStep tick;
+  SignalSample sample;
+  for (int64_t k = 0; k <= m.sc.steps; ++k) {
+    if (stop.load(std::memory_order_relaxed)) throw LockstepError("lockstep: stopped at " + step_text(k));
+    tick.step_index(static_cast<uint64_t>(k));
+    tick.sim_time_ns(k * step_ns);
+    tick.step_ns(step_ns);
+    tick.header().origin_time_ns(0);
+    tick.header().data_time_ns(k * step_ns);
+    m.clock.publish(tick);
+    // Every signal due at step k, from every host: then step k is complete everywhere.
+    for (std::size_t s = 0; s < signals.size(); ++s) {
+      if (k % signals[s].period_steps != 0) continue;
+      const int64_t deadline = monotonic_ns() + timeout;
+      for (;;) {
+        if (m.subs[s].take(m.in)) {
+          if (!detail::from_message(m.in, signals[s].fields.size(), sample) || sample.step != k)
+            throw LockstepError("lockstep: '" + signals[s].name + "' sent step " + std::to_string(m.in.step_index()) +
+                                " while the clock is at " + step_text(k));
+          log.record(s, sample);
+          break;
+        }
+        const int64_t now = monotonic_ns();
+        if (now >= deadline || stop.load(std::memory_order_relaxed))
+          throw LockstepError("lockstep: no sample of '" + signals[s].name + "' from '" + signals[s].producer +
+                              "' for " + step_text(k) + " within " + std::to_string(m.opt.timeout_s) + " s");
+        m.subs[s].wait(std::min<int64_t>(deadline - now, 100'000'000));
+      }
+    }
+    if (observer && (k % 1024 == 0 || k == m.sc.steps)) observer(k, m.sc.steps);
+  }
+  tick.step_index(kEndOfRun);
+  m.clock.publish(tick);
+  return log;
+}
+
+}  // namespace plexus::distributed

@@ -1,0 +1,115 @@
+// plant_simulator / component_host: run a share of a scenario's components in lockstep
+// over DDS. `plexus launch` starts these; they can also be started by hand on another
+// machine with the same scenario file.
+//
+//   plant_simulator SCENARIO [--robots r1,r2] --dds fast --domain 7
+//   component_host  SCENARIO --components tracker,observer --dds cyclone --domain 7
+#include <sys/prctl.h>
+
+#include <CLI/CLI.hpp>
+
+#include <csignal>
+#include <cstdio>
+#include <set>
+#include <sstream>
+
+#include "plexus/base/input_error.hpp"
+#include "plexus/base/logging.hpp"
+#include "plexus/distributed/lockstep.hpp"
+#include "plexus/scenario/overrides.hpp"
+
+namespace {
+
+std::atomic<bool> g_stop{false};
+void on_signal(int) { g_stop = true; }
+
+#ifdef PLEXUS_PLANT_SIMULATOR
+constexpr const char* kName = "plant_simulator";
+constexpr const char* kAbout =
+    "plant_simulator: the plants and sensors of a scenario's robots, stepped in lockstep over DDS";
+#else
+constexpr const char* kName = "component_host";
+constexpr const char* kAbout = "component_host: named components of a scenario, stepped in lockstep over DDS";
+#endif
+
+std::set<std::string> split(const std::string& csv) {
+  std::set<std::string> out;
+  std::stringstream ss(csv);
+  for (std::string item; std::getline(ss, item, ',');)
+    if (!item.empty()) out.insert(item);
+  return out;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace plexus;
+  CLI::App app{kAbout};
+  std::string scenario_file, dds = "fast", qos_file, profile = "lockstep", log_level = "warn", selection;
+  std::vector<std::string> sets;
+  int domain = 0;
+  double timeout = 10.0;
+  app.add_option("scenario", scenario_file, "Scenario file")->required();
+#ifdef PLEXUS_PLANT_SIMULATOR
+  app.add_option("--robots", selection, "Comma-separated robots to simulate (default: all)");
+#else
+  app.add_option("--components", selection, "Comma-separated component names to host")->required();
+#endif
+  app.add_option("--set", sets, "Scenario override dotted.key=value (as plexus sim)");
+  app.add_option("--dds", dds, "DDS vendor: fast or cyclone");
+  app.add_option("--domain", domain, "DDS domain id");
+  app.add_option("--qos-file", qos_file, "QoS profiles (default deploy/qos.yaml)");
+  app.add_option("--profile", profile, "QoS profile of the lockstep topics");
+  app.add_option("--timeout", timeout, "Seconds to wait for one input before failing");
+  app.add_option("--log-level", log_level, "trace, debug, info, warn, error");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? 0 : kExitBadInput;
+  }
+  prctl(PR_SET_PDEATHSIG, SIGTERM);  // never outlive the launcher
+  std::signal(SIGINT, on_signal);
+  std::signal(SIGTERM, on_signal);
+  try {
+    init_logging(kName, "", log_level);
+    std::vector<scenario::Override> overrides;
+    for (const auto& s : sets) overrides.push_back(scenario::parse_override(s));
+    scenario::Scenario sc = scenario::load_scenario(scenario_file, overrides);
+
+    const auto wanted = split(selection);
+    std::vector<bool> hosted(sc.components.size(), false);
+    std::set<std::string> found;
+    for (std::size_t i = 0; i < sc.components.size(); ++i) {
+      const auto& c = sc.components[i];
+#ifdef PLEXUS_PLANT_SIMULATOR
+      const bool physical = c.kind == scenario::ComponentKind::plant || c.kind == scenario::ComponentKind::sensor;
+      const std::string robot = c.component->name().substr(0, c.component->name().find('/'));
+      hosted[i] = physical && (wanted.empty() || wanted.count(robot));
+      if (hosted[i]) found.insert(robot);
+#else
+      hosted[i] = wanted.count(c.component->name()) != 0;
+      if (hosted[i]) found.insert(c.component->name());
+#endif
+    }
+    for (const auto& w : wanted)
+      if (!found.count(w)) throw InputError(std::string("--") + (kName[0] == 'p' ? "robots" : "components") + ": '" + w +
+                                            "' is not in " + scenario_file);
+
+    rt::ParticipantOptions po;
+    po.vendor = rt::parse_vendor(dds);
+    po.domain_id = domain;
+    po.name = kName + std::string(selection.empty() ? "" : " " + selection);
+    const auto profiles = rt::QosProfiles::load(qos_file.empty() ? rt::default_qos_file() : qos_file);
+    auto participant = rt::Participant::create(po);
+    distributed::LockstepHost host(sc, hosted, *participant, profiles.get(profile), {.timeout_s = timeout});
+    const int64_t steps = host.run(g_stop);
+    spdlog::info("ran {} steps", steps);
+    return 0;
+  } catch (const InputError& e) {
+    std::fprintf(stderr, "%s: error: %s\n", kName, e.what());
+    return kExitBadInput;
+  } catch (const distributed::LockstepError& e) {
+    std::fprintf(stderr, "%s: %s\n", kName, e.what());
+    return 1;
+  }
+}
