@@ -1,0 +1,134 @@
+// ICR EKF (paper 001 section 3.1; docs/algorithms/skid_steer.md).
+#include "plexus/algorithms/skid_steer/icr_ekf.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+#include "plexus/algorithms/core/validation.hpp"
+
+namespace plexus::algorithms {
+
+namespace {
+constexpr const char* kWhere = "icr_ekf";
+constexpr double kDeg3 = 3.0 * std::numbers::pi / 180.0;
+
+template <int N>
+void require_diag(const char* name, const Eigen::Matrix<double, N, 1>& d, bool allow_zero) {
+  for (int i = 0; i < N; ++i) {
+    const std::string n = std::string(name) + "[" + std::to_string(i) + "]";
+    if (allow_zero) {
+      validation::require_non_negative(kWhere, n, d(i));
+    } else {
+      validation::require_positive(kWhere, n, d(i));
+    }
+  }
+}
+}  // namespace
+
+ProcessNoiseModel process_noise_model_from_string(const std::string& name) {
+  if (name == "dt_squared") return ProcessNoiseModel::kDtSquared;
+  if (name == "continuous") return ProcessNoiseModel::kContinuous;
+  if (name == "per_step") return ProcessNoiseModel::kPerStep;
+  throw std::invalid_argument("icr_ekf: process_noise must be dt_squared, continuous or per_step (got '" + name + "')");
+}
+
+IcrVector IcrEkfParams::paper_q() {
+  IcrVector q;
+  q << 0.3 * 0.3, 0.3 * 0.3, kDeg3 * kDeg3, 0.01 * 0.01, 0.01 * 0.01, 0.01 * 0.01;  // eq. (21)
+  return q;
+}
+
+Eigen::Vector3d IcrEkfParams::paper_r() { return {0.01 * 0.01, 0.01 * 0.01, kDeg3 * kDeg3}; }  // eq. (21)
+
+IcrVector IcrEkfParams::paper_p_b() {
+  IcrVector p;
+  p << 0.3 * 0.3, 0.3 * 0.3, kDeg3 * kDeg3, 0.5 * 0.5, 0.5 * 0.5, 0.5 * 0.5;  // eq. (22)
+  return p;
+}
+
+IcrEkf::IcrEkf(const IcrEkfParams& params) : params_(params) {
+  require_diag("q_diag", params.q_diag, true);
+  require_diag("r_diag", params.r_diag, false);
+  require_diag("p0_diag", params.p0_diag, false);
+  require_diag("p_b_diag", params.p_b_diag, false);
+  validate_icr("icr_ekf: initial_icr", params.initial_icr);
+  validation::require_positive(kWhere, "min_track_separation", params.min_track_separation);
+  p0_ = params.p0_diag.asDiagonal();
+  p_b_ = params.p_b_diag.asDiagonal();
+  r_ = params.r_diag.asDiagonal();
+  reset({});
+}
+
+void IcrEkf::reset(const Pose2& pose) {
+  IcrVector x;
+  x << pose.x, pose.y, pose.theta, params_.initial_icr.y_l, params_.initial_icr.y_r, params_.initial_icr.x_G;
+  ekf_.reset(x, p0_);
+}
+
+void IcrEkf::reset_covariance_to_p_b() { ekf_.reset_covariance(p_b_); }
+
+IcrVector IcrEkf::transition(const IcrVector& x, const TrackSpeeds& u, double dt) {
+  const BodyVelocity b = icr_body_velocity({x(3), x(4), x(5)}, u);
+  const Pose2 p = icr_euler_step({x(0), x(1), x(2)}, b, dt);
+  IcrVector out = x;
+  out(0) = p.x;
+  out(1) = p.y;
+  out(2) = p.theta;
+  return out;
+}
+
+IcrMatrix IcrEkf::jacobian(const IcrVector& x, const TrackSpeeds& u, double dt) {
+  const double yl = x(3), yr = x(4), xg = x(5);
+  const double d = yl - yr;
+  const double dv = u.v_r - u.v_l;
+  const double d2 = d * d;
+  const BodyVelocity b = icr_body_velocity({yl, yr, xg}, u);
+  const double c = std::cos(x(2)), s = std::sin(x(2));
+  // Partial derivatives of the body velocities (header comment).
+  const double dvx_dyl = -yr * dv / d2, dvx_dyr = yl * dv / d2;
+  const double dvy_dyl = -xg * dv / d2, dvy_dyr = xg * dv / d2, dvy_dxg = dv / d;
+  const double dw_dyl = -dv / d2, dw_dyr = dv / d2;
+  IcrMatrix F = IcrMatrix::Identity();
+  F(0, 2) = -dt * (b.v_x * s + b.v_y * c);
+  F(1, 2) = dt * (b.v_x * c - b.v_y * s);
+  F(0, 3) = dt * (c * dvx_dyl - s * dvy_dyl);
+  F(0, 4) = dt * (c * dvx_dyr - s * dvy_dyr);
+  F(0, 5) = dt * (-s * dvy_dxg);
+  F(1, 3) = dt * (s * dvx_dyl + c * dvy_dyl);
+  F(1, 4) = dt * (s * dvx_dyr + c * dvy_dyr);
+  F(1, 5) = dt * (c * dvy_dxg);
+  F(2, 3) = dt * dw_dyl;
+  F(2, 4) = dt * dw_dyr;
+  return F;
+}
+
+bool IcrEkf::predict(const TrackSpeeds& u, double dt) {
+  const IcrVector& x = ekf_.state();
+  if (!(dt > 0.0) || !std::isfinite(dt) || !std::isfinite(u.v_l) || !std::isfinite(u.v_r) ||
+      !(x(3) - x(4) > params_.min_track_separation)) {
+    ++rejected_;
+    return false;
+  }
+  double scale = 1.0;  // L Q L^T with L = I * sqrt(scale)
+  if (params_.process_noise == ProcessNoiseModel::kDtSquared) scale = dt * dt;  // eq. (12): L = I dt
+  if (params_.process_noise == ProcessNoiseModel::kContinuous) scale = dt;
+  const IcrMatrix Q = (scale * params_.q_diag).asDiagonal();
+  if (!ekf_.predict(transition(x, u, dt), jacobian(x, u, dt), Q)) {
+    ++rejected_;
+    return false;
+  }
+  return true;
+}
+
+bool IcrEkf::update(const Pose2& z) {
+  Eigen::Matrix<double, 3, 6> H = Eigen::Matrix<double, 3, 6>::Zero();
+  H.leftCols<3>().setIdentity();  // eq. (14)
+  const IcrVector& x = ekf_.state();
+  const Eigen::Vector3d zm(z.x, z.y, z.theta);
+  const Eigen::Vector3d zp(x(0), x(1), x(2));
+  return ekf_.update<3>(zm, zp, H, r_, AngularMask{1u << 2});  // heading residual wrapped
+}
+
+}  // namespace plexus::algorithms

@@ -1,0 +1,83 @@
+// The hot paths of the skid-steer family (plant step, sensors, vibration, ICR EKF
+// predict/update, PSD features, kNN classification, odometry, window buffering) must not
+// allocate. This binary replaces the global operator new with a counting one.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cstdlib>
+#include <new>
+#include <vector>
+
+#include "plexus/algorithms/skid_steer/driving_pattern.hpp"
+#include "plexus/algorithms/skid_steer/icr_ekf.hpp"
+#include "plexus/algorithms/skid_steer/icr_odometry.hpp"
+#include "plexus/algorithms/skid_steer/knn_classifier.hpp"
+#include "plexus/algorithms/skid_steer/skid_steer_plant.hpp"
+#include "plexus/algorithms/skid_steer/skid_steer_sensors.hpp"
+#include "plexus/algorithms/skid_steer/terrain_change_detector.hpp"
+#include "plexus/algorithms/skid_steer/terrain_features.hpp"
+
+namespace {
+std::atomic<long> g_allocations{0};
+}  // namespace
+
+void* operator new(std::size_t n) {
+  ++g_allocations;
+  if (void* p = std::malloc(n ? n : 1)) return p;
+  throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+
+namespace plexus::algorithms {
+namespace {
+
+TEST(NoAllocation, HotPathsDoNotAllocate) {
+  SkidSteerPlantParams pp;
+  pp.schedule = {{0.0, 0}, {1.0, 1}};
+  SkidSteerPlant plant(pp);
+  const DrivingPattern drive({});
+  const PoseSensor gps({});
+  const TrackSpeedSensor wheels(0.01);
+  const ImuZSensor imu(0.05, 0.0);
+  IcrEkf ekf({});
+  IcrOdometry odo;
+  PsdFeatureExtractor features({});
+  SampleWindow window(100, 100);
+  TrainingSet set;
+  set.layout.features = features.size();
+  for (int i = 0; i < 45; ++i) {
+    set.labels.push_back(i % 3);
+    for (std::size_t j = 0; j < features.size(); ++j) set.features.push_back(0.01 * (i % 3) + 0.001 * static_cast<double>(j));
+  }
+  const KnnClassifier knn(set, {});
+  TerrainChangeDetector detector;
+  std::vector<double> f(features.size());
+  Rng rng(1);
+  ekf.reset(plant.state().pose);
+  odo.reset(plant.state().pose);
+
+  const long before = g_allocations.load();
+  double sink = 0;
+  for (int k = 0; k < 300; ++k) {
+    const double t = 0.01 * k;
+    const TrackSpeeds u = drive.at(t);
+    const SkidSteerState& s = plant.step(t, u, rng);
+    const TrackSpeeds m = wheels.measure(u, rng);
+    ekf.predict(m, 0.01);
+    if (k % 5 == 0) ekf.update(gps.measure(s.pose, rng));
+    odo.step(m, ekf.icr(), 0.01);
+    if (window.push(imu.measure(s.a_z, rng))) {
+      features.compute(window.window(), f);
+      const KnnResult r = knn.classify(f);
+      if (detector.observe(r.label)) ekf.reset_covariance_to_p_b();
+      sink += r.confidence;
+    }
+  }
+  const long after = g_allocations.load();
+  EXPECT_EQ(after - before, 0);
+  EXPECT_TRUE(std::isfinite(sink + odo.pose().x));
+}
+
+}  // namespace
+}  // namespace plexus::algorithms
