@@ -1,6 +1,7 @@
 // ICR EKF (paper 001 section 3.1; docs/algorithms/skid_steer.md).
 #include "plexus/algorithms/skid_steer/icr_ekf.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -55,6 +56,12 @@ IcrEkf::IcrEkf(const IcrEkfParams& params) : params_(params) {
   require_diag("p_b_diag", params.p_b_diag, false);
   validate_icr("icr_ekf: initial_icr", params.initial_icr);
   validation::require_positive(kWhere, "min_track_separation", params.min_track_separation);
+  validation::require_non_negative(kWhere, "track_side_margin", params.track_side_margin);
+  if (params.enforce_track_sides &&
+      !(params.initial_icr.y_l >= params.track_side_margin && params.initial_icr.y_r <= -params.track_side_margin)) {
+    throw std::invalid_argument("icr_ekf: initial_icr must have y_l >= track_side_margin and y_r <= -track_side_margin "
+                                "when enforce_track_sides is on");
+  }
   p0_ = params.p0_diag.asDiagonal();
   p_b_ = params.p_b_diag.asDiagonal();
   r_ = params.r_diag.asDiagonal();
@@ -128,7 +135,18 @@ bool IcrEkf::update(const Pose2& z) {
   const IcrVector& x = ekf_.state();
   const Eigen::Vector3d zm(z.x, z.y, z.theta);
   const Eigen::Vector3d zp(x(0), x(1), x(2));
-  return ekf_.update<3>(zm, zp, H, r_, AngularMask{1u << 2});  // heading residual wrapped
+  if (!ekf_.update<3>(zm, zp, H, r_, AngularMask{1u << 2})) return false;  // heading residual wrapped
+  if (params_.enforce_track_sides) {
+    const double m = params_.track_side_margin;
+    if (ekf_.state()(3) < m || ekf_.state()(4) > -m) {
+      IcrVector clamped = ekf_.state();
+      clamped(3) = std::max(clamped(3), m);
+      clamped(4) = std::min(clamped(4), -m);
+      ekf_.reset(clamped, ekf_.covariance());
+      ++clamps_;
+    }
+  }
+  return true;
 }
 
 }  // namespace plexus::algorithms

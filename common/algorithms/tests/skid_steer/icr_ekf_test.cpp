@@ -135,8 +135,35 @@ TEST(IcrEkf, ResetToPbKeepsTheStateAndSetsTheCovariance) {
   EXPECT_TRUE(run.ekf.covariance().isApprox(IcrMatrix(IcrEkfParams::paper_p_b().asDiagonal())));
 }
 
+TEST(IcrEkf, TrackSidesAreEnforcedAfterUpdates) {
+  IcrEkfParams p;
+  p.initial_icr = {0.05, -0.05, 0.0};
+  p.p0_diag << 1e-4, 1e-4, 1e-4, 1.0, 1.0, 1.0;
+  IcrEkf ekf(p);
+  ekf.reset({});
+  // Driving straight at 1 m/s with the right track at 0.5 m/s would need y_l = -y_r...
+  // Instead feed a heading that says the robot turned right a lot: the unconstrained update
+  // pushes y_r across the centreline.
+  for (int i = 0; i < 20; ++i) {
+    ekf.predict({0.5, 0.1}, 0.05);
+    ekf.update({0.0, 0.0, 0.0});
+    EXPECT_GE(ekf.icr().y_l, p.track_side_margin);
+    EXPECT_LE(ekf.icr().y_r, -p.track_side_margin);
+  }
+  EXPECT_GT(ekf.side_clamps(), 0);
+  p.enforce_track_sides = false;
+  IcrEkf free(p);
+  free.reset({});
+  for (int i = 0; i < 20; ++i) {
+    free.predict({0.5, 0.1}, 0.05);
+    free.update({0.0, 0.0, 0.0});
+  }
+  EXPECT_EQ(free.side_clamps(), 0);
+}
+
 TEST(IcrEkf, SingularIcrEstimateRejectsThePrediction) {
   IcrEkfParams p;
+  p.enforce_track_sides = false;
   p.initial_icr = {0.0005, 0.0, 0.0};
   IcrEkf ekf(p);
   EXPECT_FALSE(ekf.predict({0.1, 0.2}, 0.01));
@@ -171,12 +198,20 @@ TEST(IcrEkf, RejectsBadParameters) {
   p.p0_diag(1) = -2;
   EXPECT_EQ(invalid_argument_message<IcrEkf>(p), "icr_ekf: p0_diag[1] must be finite and > 0 (got -2)");
   p = {};
+  p.initial_icr = {0.2, 0.1, 0.0};
+  EXPECT_EQ(invalid_argument_message<IcrEkf>(p),
+            "icr_ekf: initial_icr must have y_l >= track_side_margin and y_r <= -track_side_margin when "
+            "enforce_track_sides is on");
+  p.enforce_track_sides = false;
   p.initial_icr = {-1.0, 1.0, 0.0};
   EXPECT_EQ(invalid_argument_message<IcrEkf>(p),
             "icr_ekf: initial_icr: y_l - y_r must be > 0 (y_l left of y_r) (got -2)");
   p = {};
   p.min_track_separation = 0;
   EXPECT_EQ(invalid_argument_message<IcrEkf>(p), "icr_ekf: min_track_separation must be finite and > 0 (got 0)");
+  p = {};
+  p.track_side_margin = -1;
+  EXPECT_EQ(invalid_argument_message<IcrEkf>(p), "icr_ekf: track_side_margin must be finite and >= 0 (got -1)");
   EXPECT_THROW(process_noise_model_from_string("dt"), std::invalid_argument);
   EXPECT_EQ(process_noise_model_from_string("continuous"), ProcessNoiseModel::kContinuous);
 }

@@ -25,6 +25,12 @@
 // R = diag(0.01^2, 0.01^2, (3 pi/180)^2); initial ICR guess (1.0, -1.0, 1.0).
 // Adaptive reset (eq. (22)): P <- P_B = diag(0.3^2, 0.3^2, (3 pi/180)^2, 0.5^2, 0.5^2, 0.5^2).
 // The initial covariance is not given by the paper; default P_0 = P_B.
+// Track sides (an option, on by default): the left track's ICR lies left of the body's
+// centreline and the right one's right of it (y_l > 0 > y_r). After an adaptive reset P_B is
+// large and one update can throw the estimate across that boundary onto a spurious branch
+// of the model (measured: y_r jumped to +1.2 m on a user terrain and never came back), so
+// after every update y_l is clamped to >= track_side_margin and y_r to <= -track_side_margin
+// (a projection of the estimate; P is kept).
 // A prediction whose ICR estimate has y_l - y_r <= min_track_separation is not applied
 // (the kinematics are singular there); predict() returns false and counts it.
 #pragma once
@@ -52,6 +58,8 @@ struct IcrEkfParams {
   IcrParams initial_icr{1.0, -1.0, 1.0};        ///< paper section 4.1
   ProcessNoiseModel process_noise = ProcessNoiseModel::kDtSquared;
   double min_track_separation = 1e-3;           ///< m, > 0: predictions need y_l - y_r above it
+  bool enforce_track_sides = true;              ///< clamp y_l >= margin, y_r <= -margin after updates
+  double track_side_margin = 0.01;              ///< m, >= 0
 
   static IcrVector paper_q();
   static Eigen::Vector3d paper_r();
@@ -81,6 +89,8 @@ class IcrEkf {
   IcrParams icr() const { return {state()(3), state()(4), state()(5)}; }
   const IcrEkfParams& params() const { return params_; }
   long rejected_predictions() const { return rejected_; }
+  /// How many updates were followed by a track-side clamp.
+  long side_clamps() const { return clamps_; }
   double last_nis() const { return ekf_.last_nis(); }
 
   /// The Euler transition f(x, u) and its Jacobian (above). Public for tests.
@@ -93,6 +103,7 @@ class IcrEkf {
   IcrMatrix p0_, p_b_;
   Eigen::Matrix3d r_;
   long rejected_ = 0;
+  long clamps_ = 0;
 };
 
 }  // namespace plexus::algorithms

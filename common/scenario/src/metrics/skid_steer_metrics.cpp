@@ -1,0 +1,240 @@
+// Metrics of the skid-steer family (paper 001; definitions in docs/algorithms/skid_steer.md).
+// `fields` defaults to [y_l, y_r, x_G]; from / to give a window in s (default: the run).
+//
+//   icr_rise_time        estimate: the largest, over the fields, 10 % -> 90 % rise time of
+//     the estimate from its value at the window start p0 to its final value pf (the mean
+//     over the last `final_average_s` (1 s) of the window): t90 - t10 with t_x the first
+//     time (p - p0) / (pf - p0) >= x (paper 001 section 4.1, after Dorf & Bishop). The
+//     window length when a field never rises. Series: the normalised progress of the
+//     slowest field.
+//   icr_error_final      estimate, truth: the largest absolute error over the fields at the
+//     last estimate sample of the window (truth held). Series: largest error vs time.
+//   icr_reconvergence_time  estimate, truth, tolerance (0.02 m): for every change of the
+//     true fields (a terrain switch) at time s, the time from s until every field is
+//     within `tolerance` of the truth and stays so until the next switch (or the end);
+//     value: the largest over the switches; a switch that never re-converges counts as
+//     the run length (the duration). NaN if the truth never changes. Series: largest error.
+//   classification_accuracy  classifier (fields class, windows), truth (field terrain),
+//     window_s (1.0): over the classifier's decisions in the window (a new `windows`
+//     count), the fraction whose class equals the true terrain, counting only decisions
+//     whose whole window (t - window_s, t] lay on one terrain. Series: 1 correct / 0 wrong.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "plexus/scenario/metric.hpp"
+
+namespace plexus::scenario {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+/// Named fields of one signal, validated at load time.
+struct Columns {
+  std::string signal;
+  std::vector<std::size_t> index;
+};
+
+Columns columns(const MetricSetup& s, const std::string& key, const std::vector<std::string>& names) {
+  const SignalSpec& sig = s.signal(key);
+  Columns c{sig.name, {}};
+  for (const auto& f : s.fields({&sig}, "fields", names)) {
+    c.index.push_back(static_cast<std::size_t>(std::find(sig.fields.begin(), sig.fields.end(), f) - sig.fields.begin()));
+  }
+  return c;
+}
+
+Columns columns_of(const MetricSetup& s, const std::string& key, const std::vector<std::string>& names) {
+  const SignalSpec& sig = s.signal(key);
+  Columns c{sig.name, {}};
+  for (const auto& f : names) {
+    const auto it = std::find(sig.fields.begin(), sig.fields.end(), f);
+    if (it == sig.fields.end()) s.params().fail(key, "signal '" + sig.name + "' has no field '" + f + "'");
+    c.index.push_back(static_cast<std::size_t>(it - sig.fields.begin()));
+  }
+  return c;
+}
+
+const std::vector<std::string> kIcrFields = {"y_l", "y_r", "x_G"};
+
+/// Rows of `trace` at or before increasing steps.
+struct Held {
+  const SignalTrace* trace;
+  std::size_t next = 0;
+  long row(int64_t step) {
+    while (next < trace->size() && trace->steps[next] <= step) ++next;
+    return static_cast<long>(next) - 1;
+  }
+};
+
+bool in_window(double t, double from, double to, double step) { return t >= from - 1e-9 * step && t <= to + 1e-9 * step; }
+
+/// (t, largest |estimate - truth| over the fields, truth values) at every estimate sample in the window.
+struct ErrorSample {
+  double t;
+  double error;
+  std::vector<double> truth;
+};
+
+std::vector<ErrorSample> errors(const RunLog& log, const Columns& est, const Columns& tru, double from, double to) {
+  const SignalTrace& e = *log.find(est.signal);
+  Held truth{log.find(tru.signal)};
+  std::vector<ErrorSample> out;
+  for (std::size_t i = 0; i < e.size(); ++i) {
+    const double t = log.time(e.steps[i]);
+    const long r = truth.row(e.steps[i]);
+    if (r < 0 || !in_window(t, from, to, log.base_step)) continue;
+    ErrorSample s{t, 0.0, {}};
+    for (std::size_t f = 0; f < est.index.size(); ++f) {
+      const double tv = truth.trace->at(static_cast<std::size_t>(r), tru.index[f]);
+      s.truth.push_back(tv);
+      s.error = std::max(s.error, std::abs(e.at(i, est.index[f]) - tv));
+    }
+    out.push_back(std::move(s));
+  }
+  return out;
+}
+
+const MetricRegistration kRiseTime{
+    "icr_rise_time", "largest 10%->90% rise time of the ICR estimates towards their final values, s",
+    [](const MetricSetup& s) -> MetricFunction {
+      const Columns est = columns(s, "estimate", kIcrFields);
+      const auto [from, to] = s.window();
+      const double avg = s.params().optional<double>("final_average_s", 1.0);
+      if (!(avg > 0.0) || avg > to - from) s.params().fail("final_average_s", "must be > 0 and fit in the window");
+      return [=](const RunLog& log) {
+        const SignalTrace& e = *log.find(est.signal);
+        std::vector<std::size_t> rows;
+        for (std::size_t i = 0; i < e.size(); ++i) {
+          if (in_window(log.time(e.steps[i]), from, to, log.base_step)) rows.push_back(i);
+        }
+        MetricResult r;
+        if (rows.size() < 2) return r;
+        double worst = -1.0;
+        for (std::size_t f : est.index) {
+          const double p0 = e.at(rows.front(), f);
+          double pf = 0.0;
+          int n = 0;
+          for (std::size_t i : rows) {
+            if (log.time(e.steps[i]) >= to - avg) pf += e.at(i, f), ++n;
+          }
+          pf /= n;
+          double t10 = kNaN, t90 = kNaN;
+          std::vector<std::pair<double, double>> progress;
+          for (std::size_t i : rows) {
+            const double t = log.time(e.steps[i]);
+            const double x = pf == p0 ? 1.0 : (e.at(i, f) - p0) / (pf - p0);
+            progress.emplace_back(t, x);
+            if (std::isnan(t10) && x >= 0.1) t10 = t;
+            if (std::isnan(t90) && x >= 0.9) t90 = t;
+          }
+          const double rise = std::isnan(t90) || std::isnan(t10) ? to - from : t90 - t10;
+          if (rise > worst) {
+            worst = rise;
+            r.series = std::move(progress);
+          }
+        }
+        r.value = worst;
+        return r;
+      };
+    }};
+
+const MetricRegistration kErrorFinal{
+    "icr_error_final", "largest absolute ICR estimate error at the end of the window, m",
+    [](const MetricSetup& s) -> MetricFunction {
+      const Columns est = columns(s, "estimate", kIcrFields);
+      const Columns tru = columns(s, "truth", kIcrFields);
+      const auto [from, to] = s.window();
+      return [=](const RunLog& log) {
+        MetricResult r;
+        for (const ErrorSample& e : errors(log, est, tru, from, to)) r.series.emplace_back(e.t, e.error);
+        if (!r.series.empty()) r.value = r.series.back().second;
+        return r;
+      };
+    }};
+
+const MetricRegistration kReconvergence{
+    "icr_reconvergence_time",
+    "largest time from a terrain switch until the ICR estimates stay within tolerance of the truth, s",
+    [](const MetricSetup& s) -> MetricFunction {
+      const Columns est = columns(s, "estimate", kIcrFields);
+      const Columns tru = columns(s, "truth", kIcrFields);
+      const auto [from, to] = s.window();
+      const double tol = s.params().optional<double>("tolerance", 0.02);
+      if (!(tol > 0.0)) s.params().fail("tolerance", "must be > 0");
+      const double duration = s.duration();
+      return [=](const RunLog& log) {
+        const std::vector<ErrorSample> samples = errors(log, est, tru, from, to);
+        MetricResult r;
+        for (const ErrorSample& e : samples) r.series.emplace_back(e.t, e.error);
+        // Segments between changes of the truth; the first segment is the initial convergence.
+        std::vector<std::size_t> starts;
+        for (std::size_t i = 1; i < samples.size(); ++i) {
+          if (samples[i].truth != samples[i - 1].truth) starts.push_back(i);
+        }
+        if (starts.empty()) return r;
+        double worst = 0.0;
+        for (std::size_t k = 0; k < starts.size(); ++k) {
+          const std::size_t begin = starts[k];
+          const std::size_t end = k + 1 < starts.size() ? starts[k + 1] : samples.size();
+          // Last sample of the segment outside the tolerance; converged right after it.
+          std::size_t settled = begin;
+          for (std::size_t i = begin; i < end; ++i) {
+            if (!(samples[i].error <= tol)) settled = i + 1;
+          }
+          // The switch happened between the previous sample and this one.
+          const double switch_t = samples[begin - 1].t;
+          const double time = settled >= end ? duration : samples[settled].t - switch_t;
+          worst = std::max(worst, time);
+        }
+        r.value = worst;
+        return r;
+      };
+    }};
+
+const MetricRegistration kAccuracy{
+    "classification_accuracy", "fraction of classifier windows (on one terrain) whose class is the true terrain",
+    [](const MetricSetup& s) -> MetricFunction {
+      const Columns cls = columns_of(s, "classifier", {"class", "windows"});
+      const Columns tru = columns_of(s, "truth", {"terrain"});
+      const auto [from, to] = s.window();
+      const double window = s.params().optional<double>("window_s", 1.0);
+      if (!(window > 0.0)) s.params().fail("window_s", "must be > 0 s");
+      return [=](const RunLog& log) {
+        const SignalTrace& c = *log.find(cls.signal);
+        const SignalTrace& t = *log.find(tru.signal);
+        MetricResult r;
+        double last_count = 0.0;
+        long counted = 0, correct = 0;
+        for (std::size_t i = 0; i < c.size(); ++i) {
+          const double count = c.at(i, cls.index[1]);
+          if (count == last_count) continue;
+          last_count = count;
+          const double ti = log.time(c.steps[i]);
+          if (!in_window(ti, from, to, log.base_step)) continue;
+          // True terrain over (ti - window, ti]: every truth sample in it, plus the one held at its start.
+          double terrain = kNaN;
+          bool uniform = true;
+          for (std::size_t j = 0; j < t.size(); ++j) {
+            const double tj = log.time(t.steps[j]);
+            const bool held_at_start = tj <= ti - window && (j + 1 == t.size() || log.time(t.steps[j + 1]) > ti - window);
+            if (tj > ti + 1e-9 * log.base_step || (!held_at_start && tj <= ti - window)) continue;
+            const double v = t.at(j, tru.index[0]);
+            if (std::isnan(terrain)) terrain = v;
+            uniform = uniform && v == terrain;
+          }
+          if (!uniform || std::isnan(terrain)) continue;
+          const bool ok = std::lround(c.at(i, cls.index[0])) == std::lround(terrain);
+          ++counted;
+          correct += ok ? 1 : 0;
+          r.series.emplace_back(ti, ok ? 1.0 : 0.0);
+        }
+        if (counted > 0) r.value = static_cast<double>(correct) / static_cast<double>(counted);
+        return r;
+      };
+    }};
+
+}  // namespace
+}  // namespace plexus::scenario

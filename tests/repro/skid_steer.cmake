@@ -1,0 +1,117 @@
+# Paper reproductions of the skid-steer family (paper 001) through `plexus sim`.
+# The check is each scenario's own `expectations:` (exit 1 when one fails). Variants run the
+# same scenarios with other terrains, ICRs, schedules, sensor rates and noise levels via
+# --set; where a variant changes what the paper's figure means, its expectations are
+# overridden on the command line with the reason next to it. Every run takes < 1 s.
+# docs/algorithms/skid_steer.md has the measured figures and the targets missed.
+set(SKID_SCENARIOS ${PROJECT_SOURCE_DIR}/deploy/scenarios)
+set(SKID_RUNS ${CMAKE_BINARY_DIR}/test-runs/skid_steer)
+set(SKID_TRAINING ${PROJECT_SOURCE_DIR}/deploy/training/icr_terrain_psd.txt)
+
+# skid_repro(<test suffix> <scenario> [--set key=value ...])
+function(skid_repro suffix scenario)
+  add_test(NAME repro.${suffix}
+           COMMAND $<TARGET_FILE:plexus> sim ${SKID_SCENARIOS}/${scenario}.yaml --quiet --out ${SKID_RUNS}/${suffix} ${ARGN})
+  set_tests_properties(repro.${suffix} PROPERTIES LABELS "repro")
+endfunction()
+
+# ---- section 4.1, one terrain: rise time <= 0.5 s, final error <= 0.02 m, ICR odometry < 0.1 m
+skid_repro(icr_single_terrain icr_single_terrain)
+skid_repro(icr_single_terrain.tile icr_single_terrain --set "robots.r1.plant.schedule=[[0, tile]]")
+skid_repro(icr_single_terrain.grass icr_single_terrain --set "robots.r1.plant.schedule=[[0, grass]]")
+skid_repro(icr_single_terrain.wheel_noise icr_single_terrain --set robots.r1.sensors.wheels.noise_std=0.01)
+skid_repro(icr_single_terrain.200Hz icr_single_terrain --set step=0.005 --set robots.r1.sensors.wheels.rate=200)
+# Half the GPS rate and twice its noise: 8x less information per second, so a slower rise
+# (measured 0.9 s); the accuracy targets stay.
+skid_repro(icr_single_terrain.gps_10Hz_noisy icr_single_terrain --set robots.r1.sensors.gps.rate=10
+           --set robots.r1.sensors.gps.position_std=0.02 --set robots.r1.sensors.gps.heading_std_deg=2
+           --set "expectations.convergence_time_s='<= 2'")
+# A user's terrain with other ICRs (x_G > 0, asymmetric tracks): measured rise 0.6 s.
+skid_repro(icr_single_terrain.custom_icr icr_single_terrain
+           --set "robots.r1.plant.terrains={sand: {y_l: 0.6, y_r: -0.45, x_G: 0.15, floor_rms: 0.2}}"
+           --set "robots.r1.plant.schedule=[[0, sand]]" --set "expectations.convergence_time_s='<= 1'")
+# Circles at 1 rad/s: the no-slip model errs mostly in turn rate, which a circle partly
+# cancels in position, so its error is smaller than on the figure-eight; still >> ICR's.
+skid_repro(icr_single_terrain.circle icr_single_terrain --set services.driver.pattern=circle
+           --set services.driver.turn_rate=1.0 --set "expectations.odometry_error_noslip_m='>= 0.2'")
+
+# ---- section 4.2, plain EKF: re-convergence > 100 s
+skid_repro(icr_terrain_switch_ekf icr_terrain_switch_ekf)
+skid_repro(icr_terrain_switch_ekf.second_switch_200s icr_terrain_switch_ekf
+           --set "robots.r1.plant.schedule=[[0, concrete], [50, tile], [200, grass]]")
+
+# ---- section 4.2, classifier + reset. Known miss: the paper's "within 3 s" is not met
+# (measured 5.5 s: the reset comes 2 windows = 2 s after the switch, and the estimates then
+# need ~3.5 s to stay within 0.02 m). This test passes only while that is the ONE failing
+# expectation (classifier_accuracy >= 0.95 holds); it fails if the miss is fixed, so the
+# docs and this test get updated.
+add_test(NAME repro.icr_terrain_switch_akf
+         COMMAND ${CMAKE_COMMAND}
+                 "-DCOMMAND=$<TARGET_FILE:plexus>|sim|${SKID_SCENARIOS}/icr_terrain_switch_akf.yaml|--quiet|--out|${SKID_RUNS}/icr_terrain_switch_akf"
+                 -DEXPECT_RC=1
+                 "-DEXPECT_STDERR=^expectation failed: reconvergence_time_s = [0-9.]+, bound <= 3\n$"
+                 -P ${PROJECT_SOURCE_DIR}/common/scenario/tests/cli/expect_cli.cmake)
+set_tests_properties(repro.icr_terrain_switch_akf PROPERTIES LABELS "repro")
+# Variants: the classifier stays >= 95 % accurate, the reset fires exactly once per switch,
+# and re-convergence stays an order of magnitude below the plain EKF's (> 100 s).
+set(AKF_CHECK "expectations={classifier_accuracy: '>= 0.95', reconvergence_time_s: '< 10'}")
+skid_repro(icr_terrain_switch_akf.second_switch_200s icr_terrain_switch_akf
+           --set "robots.r1.plant.schedule=[[0, concrete], [50, tile], [200, grass]]" --set "${AKF_CHECK}")
+skid_repro(icr_terrain_switch_akf.four_switches icr_terrain_switch_akf --set duration=160
+           --set "robots.r1.plant.schedule=[[0, grass], [40, concrete], [80, tile], [120, grass]]"
+           --set "expectations={classifier_accuracy: '>= 0.95', reconvergence_time_s: '< 10', resets: '== 3'}")
+skid_repro(icr_terrain_switch_akf.noisy_sensors icr_terrain_switch_akf --set robots.r1.sensors.imu.noise_std=0.1
+           --set robots.r1.sensors.wheels.noise_std=0.01 --set "${AKF_CHECK}")
+skid_repro(icr_terrain_switch_akf.k1_unscaled icr_terrain_switch_akf --set services.classifier.k=1
+           --set services.classifier.scaling=none --set "${AKF_CHECK}")
+skid_repro(icr_terrain_switch_akf.k7_shrink_minmax icr_terrain_switch_akf --set services.classifier.k=7
+           --set services.classifier.tie_rule=shrink_k --set services.classifier.scaling=min_max --set "${AKF_CHECK}")
+
+# ---- training data: re-recording reproduces the committed file byte for byte
+skid_repro(icr_record_training icr_record_training --set services.recorder.output=${SKID_RUNS}/icr_terrain_psd.txt)
+add_test(NAME repro.icr_record_training.matches_committed
+         COMMAND ${CMAKE_COMMAND} -E compare_files ${SKID_RUNS}/icr_terrain_psd.txt ${SKID_TRAINING})
+set_tests_properties(repro.icr_record_training PROPERTIES LABELS "repro" FIXTURES_SETUP skid_training)
+set_tests_properties(repro.icr_record_training.matches_committed PROPERTIES LABELS "repro" FIXTURES_REQUIRED skid_training)
+
+# ---- a user's own terrains: four classes with other ICRs and spectra, recorded, then used
+set(FOUR_TERRAINS "robots.r1.plant.terrains={\
+sand: {y_l: 0.6, y_r: -0.45, x_G: 0.15, floor_rms: 0.3, resonances: [[3, 0.5, 0.6]]},\
+gravel: {y_l: 0.35, y_r: -0.4, x_G: 0.0, floor_rms: 0.4, resonances: [[28, 0.2, 0.8], [42, 0.1, 0.3]]},\
+carpet: {y_l: 0.25, y_r: -0.3, x_G: -0.05, floor_rms: 0.02, resonances: [[15, 0.3, 0.2]]},\
+mud: {y_l: 0.8, y_r: -0.9, x_G: 0.3, floor_rms: 0.1, resonances: [[6, 0.1, 0.5], [20, 0.3, 0.2]]}}")
+skid_repro(icr_record_training.four_terrains icr_record_training --set "${FOUR_TERRAINS}" --set duration=80
+           --set "robots.r1.plant.schedule=[[0, sand], [20, gravel], [40, carpet], [60, mud]]"
+           --set "services.recorder.class_names=[sand, gravel, carpet, mud]"
+           --set services.recorder.output=${SKID_RUNS}/four_terrains.txt --set "expectations.windows_written='== 60'")
+skid_repro(icr_terrain_switch_akf.four_terrains icr_terrain_switch_akf --set "${FOUR_TERRAINS}" --set duration=200
+           --set "robots.r1.plant.schedule=[[0, gravel], [50, mud], [100, carpet], [150, sand]]"
+           --set services.classifier.training_file=${SKID_RUNS}/four_terrains.txt
+           --set "expectations={classifier_accuracy: '>= 0.95', reconvergence_time_s: '< 20', resets: '== 3'}")
+# (< 20 s here: the mud -> carpet switch moves y_r by 0.6 m and takes 11.7 s, measured; the
+# other two switches take ~6 s. Still far below the plain EKF's > 100 s.)
+set_tests_properties(repro.icr_record_training.four_terrains PROPERTIES FIXTURES_SETUP skid_four_terrains)
+set_tests_properties(repro.icr_terrain_switch_akf.four_terrains PROPERTIES FIXTURES_REQUIRED skid_four_terrains)
+
+# ---- bad inputs are exit 2 with file and line: a broken training file, a mismatched one, a bad key
+file(WRITE ${SKID_RUNS}/bad_training.txt "plexus-terrain-training 1\nsample_rate_hz 100\nwindow_samples 100\nfeatures fifty\n")
+function(skid_bad_input suffix regex)
+  add_test(NAME cli.${suffix}
+           COMMAND ${CMAKE_COMMAND}
+                   "-DCOMMAND=$<TARGET_FILE:plexus>|sim|${SKID_SCENARIOS}/icr_terrain_switch_akf.yaml|--quiet|--out|${SKID_RUNS}/${suffix}|${ARGN}"
+                   -DEXPECT_RC=2 "-DEXPECT_STDERR=${regex}" -P ${PROJECT_SOURCE_DIR}/common/scenario/tests/cli/expect_cli.cmake)
+  set_tests_properties(cli.${suffix} PROPERTIES LABELS "cli")
+endfunction()
+skid_bad_input(icr_bad_training_file
+               "icr_terrain_switch_akf.yaml[^\n]*: services.classifier.training_file: [^\n]*bad_training.txt:4: features: expected an integer, got 'fifty'"
+               --set services.classifier.training_file=${SKID_RUNS}/bad_training.txt)
+skid_bad_input(icr_training_layout_mismatch
+               "services.classifier.training_file: [^\n]*icr_terrain_psd.txt: its features were computed differently from this classifier's \\(band_hz 1 50 vs 1 40"
+               --set services.classifier.max_hz=40)
+skid_bad_input(icr_missing_training_file "services.classifier.training_file: [^\n]*nope.txt:0: cannot open the training file"
+               --set services.classifier.training_file=nope.txt)
+skid_bad_input(icr_bad_k "services.classifier.k: knn_classifier: k must be in 1..45 \\(the training samples\\) \\(got 46\\)"
+               --set services.classifier.k=46)
+skid_bad_input(icr_bad_schedule "robots.r1.plant.schedule: unknown terrain 'ice'" "--set|robots.r1.plant.schedule=[[0, ice]]")
+skid_bad_input(icr_bad_q "services.ekf: icr_ekf: q_diag\\[3\\] must be finite and >= 0 \\(got -1\\)"
+               "--set|services.ekf.q_diag=[1, 1, 1, -1, 1, 1]")
