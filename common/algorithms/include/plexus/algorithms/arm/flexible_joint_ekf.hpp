@@ -1,0 +1,103 @@
+// "Indirect" EKF observer of a flexible-joint arm (paper 004, section 4.2), continuous time.
+//
+// State x = [tau, tau', phi, phi'] (4n), measurement y = h(x) = [phi, phi'] (eq. (29)):
+//   f(x, u) = [tau'; K (phi'' - q''); phi'; phi'']                        (35)
+//   phi'' = J^{-1} (u - tau - F phi'),   q'' = M(q)^{-1} (tau - C(q, q') q' - G(q)),
+//   q = phi - K^{-1} tau,   q' = phi' - K^{-1} tau'                        (17)
+// (K (phi'' - q'') is the paper's N expanded.) The filter (eqs. (31)-(33)):
+//   x^' = f(x^, u) + L (y - h(x^)),   P' = F P + P F^T + Q - L H P,   L = P H^T R^{-1},
+// with Q = q I, R = r I, P(0) = p0 I (paper: 4, 0.1, 1).
+//
+// Jacobian F = df/dx:
+//  - kFull (default): exact, including the dependence of M, C, G on q(phi, tau) and
+//    q'(phi', tau'); with A = dq''/dq, B = dq''/dq' (central differences of the KDL forward
+//    dynamics, step `fd_step`):
+//      df2/dtau = K (-J^{-1} - M^{-1} + A K^{-1}),  df2/dtau' = K B K^{-1},
+//      df2/dphi = -K A,                               df2/dphi' = -K (J^{-1} F + B),
+//      df4/dtau = -J^{-1},                             df4/dphi' = -J^{-1} F.
+//  - kPaper: eq. (36), i.e. A = B = 0; the printed (4,1) block J^{-1} has the wrong sign
+//    (phi'' = J^{-1}(u - tau - F phi')), we use -J^{-1}.
+//
+// Integration over one controller step dt (the EKF runs inside the controller's step):
+// `substeps` RK4 steps of x^ with P held, then of P with F held (both refreshed each
+// sub-step); u is held over the step (zero-order hold) and y interpolated linearly between
+// the previous sample and this one (first-order hold; holding y_k biases the estimate by
+// about half a step).
+// Link side: q^ = phi^ - K^{-1} tau^, q^' = phi^' - K^{-1} tau^'. q^'' (LinkAcceleration):
+//  - kModel (default): the observer's own forward dynamics M^{-1}(tau^ - C q^' - G) at x^,
+//    algebraic, no lag;
+//  - kDifferentiator: a filtered differentiator of q^' (the paper's section 4, cutoff
+//    `accel_filter_hz`). Its lag destabilises the VDC phi_r'' loop at 1 kHz (measured, see
+//    docs/algorithms/arm.md), so it is not the default.
+#pragma once
+
+#include <Eigen/Core>
+
+#include "plexus/algorithms/arm/arm_feedback.hpp"
+#include "plexus/algorithms/arm/arm_model.hpp"
+#include "plexus/algorithms/arm/filtered_differentiator.hpp"
+#include "plexus/algorithms/arm/rigid_body_dynamics.hpp"
+
+namespace plexus::algorithms {
+
+enum class EkfJacobian { kFull, kPaper };
+enum class LinkAcceleration { kModel, kDifferentiator };
+
+struct FlexibleJointEkfParams {
+  ArmModel model = ArmModel::paper_2dof();  ///< the observer's (nominal) model
+  double q = 4.0;      ///< Q = q I, > 0
+  double r = 0.1;      ///< R = r I, > 0
+  double p0 = 1.0;     ///< P(0) = p0 I, > 0
+  int substeps = 2;    ///< RK4 sub-steps per update, >= 1
+  double step = 1e-3;  ///< s, the update period (for the q'' differentiator), > 0
+  double accel_filter_hz = 50.0;  ///< cutoff of the q'' differentiator, > 0
+  double fd_step = 1e-6;          ///< rad, rad/s: central-difference step of A and B, > 0
+  EkfJacobian jacobian = EkfJacobian::kFull;
+  LinkAcceleration acceleration = LinkAcceleration::kModel;
+};
+
+class FlexibleJointEkf {
+ public:
+  using Vector = Eigen::VectorXd;
+  using Matrix = Eigen::MatrixXd;
+
+  /// Validates the parameters; state x^ = 0, P = p0 I.
+  explicit FlexibleJointEkf(const FlexibleJointEkfParams& params);
+
+  int dof() const { return n_; }
+  /// Sets x^ = [tau, tau', phi, phi'] and P = p0 I; resets the q'' differentiator.
+  void reset(const Vector& x0);
+
+  /// Integrates the observer over dt with input u (held) and measurement y = [phi, phi'].
+  /// Non-finite inputs or dt <= 0 leave the state unchanged. No allocation.
+  void update(const Vector& u, const Vector& y, double dt);
+
+  /// f(x, u) of eq. (35).
+  void dynamics(const Vector& x, const Vector& u, Vector& dx);
+  /// F = df/dx at (x, u) (mode per params).
+  void jacobian(const Vector& x, const Vector& u, Matrix& f);
+
+  const Vector& state() const { return x_; }
+  const Matrix& covariance() const { return p_; }
+  /// Link- and motor-side feedback from the estimate (q, q', q'', tau, tau', phi, phi').
+  const ArmFeedback& feedback() const { return fb_; }
+
+ private:
+  void link_state(const Vector& x);  // fills q_, qd_ from x
+  void riccati(const Matrix& p, Matrix& dp);
+
+  FlexibleJointEkfParams params_;
+  int n_;
+  ArmRigidBodyDynamics dyn_;
+  Vector k_, j_, f_;
+  Vector x_, k1_, k2_, k3_, k4_, xt_, innovation_;
+  Matrix p_, fjac_, p1_, p2_, p3_, p4_, pt_, tmp_;
+  Vector q_, qd_, qdd_, qdd_plus_, qdd_minus_, tau_, qp_;
+  Matrix minv_, a_, b_;
+  Vector y_prev_;
+  bool has_y_prev_ = false;
+  ArmFeedback fb_;
+  FilteredDifferentiator accel_;
+};
+
+}  // namespace plexus::algorithms

@@ -1,0 +1,164 @@
+#include "plexus/algorithms/arm/flexible_joint_ekf.hpp"
+
+#include <string>
+
+#include "plexus/algorithms/core/validation.hpp"
+
+namespace plexus::algorithms {
+namespace {
+constexpr const char* kWhere = "flexible_joint_ekf";
+}
+
+FlexibleJointEkf::FlexibleJointEkf(const FlexibleJointEkfParams& p) : params_(p), n_(p.model.dof()), dyn_(p.model) {
+  validation::require_positive(kWhere, "q", p.q);
+  validation::require_positive(kWhere, "r", p.r);
+  validation::require_positive(kWhere, "p0", p.p0);
+  if (p.substeps < 1) validation::fail(kWhere, "substeps", ">= 1", p.substeps);
+  validation::require_positive(kWhere, "step", p.step);
+  validation::require_positive(kWhere, "accel_filter_hz", p.accel_filter_hz);
+  validation::require_positive(kWhere, "fd_step", p.fd_step);
+  k_.resize(n_), j_.resize(n_), f_.resize(n_);
+  for (int i = 0; i < n_; ++i) {
+    const ArmJoint& jt = p.model.joints[static_cast<std::size_t>(i)];
+    k_(i) = jt.stiffness, j_(i) = jt.motor_inertia, f_(i) = jt.friction;
+  }
+  const int m = 4 * n_;
+  for (Vector* v : {&x_, &k1_, &k2_, &k3_, &k4_, &xt_}) *v = Vector::Zero(m);
+  for (Matrix* a : {&p_, &fjac_, &p1_, &p2_, &p3_, &p4_, &pt_, &tmp_}) *a = Matrix::Zero(m, m);
+  for (Vector* v : {&q_, &qd_, &qdd_, &qdd_plus_, &qdd_minus_, &tau_, &qp_}) *v = Vector::Zero(n_);
+  innovation_ = y_prev_ = Vector::Zero(2 * n_);
+  minv_ = a_ = b_ = Matrix::Zero(n_, n_);
+  fb_ = ArmFeedback::zero(n_);
+  accel_.configure(n_, p.accel_filter_hz, p.step);
+  reset(Vector::Zero(m));
+}
+
+void FlexibleJointEkf::reset(const Vector& x0) {
+  if (x0.size() != 4 * n_) validation::fail(kWhere, "x0 size", "4 n = " + std::to_string(4 * n_), static_cast<double>(x0.size()));
+  x_ = x0;
+  p_ = params_.p0 * Matrix::Identity(4 * n_, 4 * n_);
+  accel_.reset();
+  has_y_prev_ = false;
+  link_state(x_);
+  fb_.q = q_, fb_.qd = qd_, fb_.qdd.setZero();
+  fb_.tau = x_.segment(0, n_), fb_.taud = x_.segment(n_, n_);
+  fb_.phi = x_.segment(2 * n_, n_), fb_.phid = x_.segment(3 * n_, n_);
+}
+
+void FlexibleJointEkf::link_state(const Vector& x) {
+  // Eq. (17): q = phi - K^{-1} tau, q' = phi' - K^{-1} tau'.
+  q_ = x.segment(2 * n_, n_) - x.segment(0, n_).cwiseQuotient(k_);
+  qd_ = x.segment(3 * n_, n_) - x.segment(n_, n_).cwiseQuotient(k_);
+}
+
+void FlexibleJointEkf::dynamics(const Vector& x, const Vector& u, Vector& dx) {
+  link_state(x);
+  tau_ = x.segment(0, n_);
+  dyn_.forward_dynamics(q_, qd_, tau_, qdd_);
+  // phi'' = J^{-1} (u - tau - F phi'), stored in the phi' rows, then tau'' = K (phi'' - q'') (eq. (35)).
+  dx.segment(3 * n_, n_) = (u - tau_ - f_.cwiseProduct(x.segment(3 * n_, n_))).cwiseQuotient(j_);
+  dx.segment(n_, n_) = k_.cwiseProduct(dx.segment(3 * n_, n_) - qdd_);
+  dx.segment(0, n_) = x.segment(n_, n_);
+  dx.segment(2 * n_, n_) = x.segment(3 * n_, n_);
+}
+
+void FlexibleJointEkf::jacobian(const Vector& x, const Vector& /*u*/, Matrix& f) {
+  const int n = n_;
+  f.setZero();
+  link_state(x);
+  tau_ = x.segment(0, n);
+  dyn_.forward_dynamics(q_, qd_, tau_, qdd_);
+  minv_ = dyn_.last_mass_factor().solve(Matrix::Identity(n, n));
+  a_.setZero();
+  b_.setZero();
+  if (params_.jacobian == EkfJacobian::kFull) {
+    // A = dq''/dq, B = dq''/dq' by central differences of the forward dynamics.
+    const double h = params_.fd_step;
+    for (int c = 0; c < n; ++c) {
+      qp_ = q_;
+      qp_(c) += h;
+      dyn_.forward_dynamics(qp_, qd_, tau_, qdd_plus_);
+      qp_(c) -= 2.0 * h;
+      dyn_.forward_dynamics(qp_, qd_, tau_, qdd_minus_);
+      a_.col(c) = (qdd_plus_ - qdd_minus_) / (2.0 * h);
+      qp_ = qd_;
+      qp_(c) += h;
+      dyn_.forward_dynamics(q_, qp_, tau_, qdd_plus_);
+      qp_(c) -= 2.0 * h;
+      dyn_.forward_dynamics(q_, qp_, tau_, qdd_minus_);
+      b_.col(c) = (qdd_plus_ - qdd_minus_) / (2.0 * h);
+    }
+  }
+  for (int i = 0; i < n; ++i) {
+    f(i, n + i) = 1.0;          // d tau / d tau'
+    f(2 * n + i, 3 * n + i) = 1.0;  // d phi / d phi'
+    f(3 * n + i, i) = -1.0 / j_(i);                 // d phi'' / d tau
+    f(3 * n + i, 3 * n + i) = -f_(i) / j_(i);       // d phi'' / d phi'
+    f(n + i, 3 * n + i) = -k_(i) * f_(i) / j_(i);   // K d phi'' / d phi'
+    f(n + i, i) = -k_(i) / j_(i);                    // K d phi'' / d tau
+    for (int c = 0; c < n; ++c) {
+      // -K dq''/d(.) through tau directly (M^{-1}) and through q = phi - tau/K, q' = phi' - tau'/K.
+      f(n + i, c) += -k_(i) * minv_(i, c) + k_(i) * a_(i, c) / k_(c);
+      f(n + i, n + c) += k_(i) * b_(i, c) / k_(c);
+      f(n + i, 2 * n + c) += -k_(i) * a_(i, c);
+      f(n + i, 3 * n + c) += -k_(i) * b_(i, c);
+    }
+  }
+}
+
+void FlexibleJointEkf::riccati(const Matrix& p, Matrix& dp) {
+  // P' = F P + P F^T + Q - P H^T R^{-1} H P   (eq. (32)-(33)), H = [0 I] selects phi, phi'.
+  const int m = 2 * n_;
+  tmp_.noalias() = fjac_ * p;
+  dp = tmp_ + tmp_.transpose();
+  dp.diagonal().array() += params_.q;
+  dp.noalias() -= (1.0 / params_.r) * (p.rightCols(m) * p.bottomRows(m));
+}
+
+void FlexibleJointEkf::update(const Vector& u, const Vector& y, double dt) {
+  if (!(dt > 0.0) || u.size() != n_ || y.size() != 2 * n_ || !u.allFinite() || !y.allFinite()) return;
+  const int m = 2 * n_;
+  const double h = dt / params_.substeps;
+  const double gain = 1.0 / params_.r;
+  // First-order hold of the measurement between the previous sample and this one (the
+  // continuous y(t) of eq. (31)); the first update holds y.
+  if (!has_y_prev_) y_prev_ = y;
+  auto observer = [&](const Vector& x, double t, Vector& dx) {
+    dynamics(x, u, dx);
+    const double a = t / dt;
+    innovation_ = (1.0 - a) * y_prev_ + a * y - x.tail(m);
+    dx.noalias() += gain * (p_.rightCols(m) * innovation_);  // L (y - h(x)), eq. (31)
+  };
+  for (int s = 0; s < params_.substeps; ++s) {
+    const double t0 = s * h;
+    jacobian(x_, u, fjac_);
+    observer(x_, t0, k1_);
+    xt_ = x_ + 0.5 * h * k1_;
+    observer(xt_, t0 + 0.5 * h, k2_);
+    xt_ = x_ + 0.5 * h * k2_;
+    observer(xt_, t0 + 0.5 * h, k3_);
+    xt_ = x_ + h * k3_;
+    observer(xt_, t0 + h, k4_);
+    riccati(p_, p1_);
+    pt_ = p_ + 0.5 * h * p1_;
+    riccati(pt_, p2_);
+    pt_ = p_ + 0.5 * h * p2_;
+    riccati(pt_, p3_);
+    pt_ = p_ + h * p3_;
+    riccati(pt_, p4_);
+    x_ += (h / 6.0) * (k1_ + 2.0 * k2_ + 2.0 * k3_ + k4_);
+    p_ += (h / 6.0) * (p1_ + 2.0 * p2_ + 2.0 * p3_ + p4_);
+    tmp_ = 0.5 * (p_ + p_.transpose());
+    p_ = tmp_;
+  }
+  y_prev_ = y;
+  has_y_prev_ = true;
+  dynamics(x_, u, k1_);  // also sets q_, qd_ (eq. (17)) and the model's q'' in qdd_
+  fb_.q = q_, fb_.qd = qd_;
+  const Vector& differentiated = accel_.update(qd_);  // section 4: q'' by a filtered differentiator of q'
+  fb_.qdd = params_.acceleration == LinkAcceleration::kModel ? qdd_ : differentiated;
+  fb_.tau = x_.segment(0, n_), fb_.taud = x_.segment(n_, n_);
+  fb_.phi = x_.segment(2 * n_, n_), fb_.phid = x_.segment(3 * n_, n_);
+}
+
+}  // namespace plexus::algorithms

@@ -1,0 +1,43 @@
+// Shared fixtures of the arm tests: models, random states and the validation-message helper.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include <Eigen/Core>
+
+#include "plexus/algorithms/arm/arm_model.hpp"
+#include "plexus/algorithms/core/random.hpp"
+
+namespace plexus::algorithms::testing {
+
+/// A spatial (twisted) n-link chain with gravity in an arbitrary direction.
+inline ArmModel twisted_chain(int n) {
+  ArmModel m = ArmModel::uniform_chain(n);
+  for (int i = 0; i < n; ++i) {
+    m.links[static_cast<std::size_t>(i)].twist = 0.3 * (i % 3) - 0.4;
+    m.links[static_cast<std::size_t>(i)].inertia_xx = 0.05;
+  }
+  m.gravity = Eigen::Vector3d(1.0, -3.0, 9.0);
+  return m;
+}
+
+inline Eigen::VectorXd random_vector(Rng& rng, int n, double scale) {
+  Eigen::VectorXd v(n);
+  for (int i = 0; i < n; ++i) v(i) = rng.uniform(-scale, scale);
+  return v;
+}
+
+/// The std::invalid_argument message raised by constructing T from args, "" if none.
+template <class T, class... Args>
+std::string invalid_argument_message(Args&&... args) {
+  try {
+    T object(std::forward<Args>(args)...);
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace plexus::algorithms::testing

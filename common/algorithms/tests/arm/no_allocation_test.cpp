@@ -1,0 +1,59 @@
+// The arm's hot paths (plant step, reference sample, EKF update, VDC and CT+PD steps) must
+// not allocate. This binary's global operator new counts; the count is checked around them.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cstdlib>
+#include <new>
+
+#include "plexus/algorithms/arm/ct_pd_controller.hpp"
+#include "plexus/algorithms/arm/flexible_joint_ekf.hpp"
+#include "plexus/algorithms/arm/flexible_joint_plant.hpp"
+#include "plexus/algorithms/arm/vdc_controller.hpp"
+
+namespace {
+std::atomic<long> g_allocations{0};
+}  // namespace
+
+void* operator new(std::size_t n) {
+  ++g_allocations;
+  if (void* p = std::malloc(n ? n : 1)) return p;
+  throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+
+namespace plexus::algorithms {
+namespace {
+
+TEST(ArmNoAllocation, HotPathsDoNotAllocate) {
+  FlexibleJointArmPlant plant({});
+  FlexibleJointEkfParams ep;
+  ep.step = 2e-4;
+  FlexibleJointEkf ekf(ep);
+  VdcParams vp = VdcParams::paper_2dof();
+  vp.step = 2e-4;
+  VdcController vdc(vp);
+  CtPdController ctpd(CtPdParams::paper_2dof());
+  ArmSineReference ref(ArmSineReferenceParams::paper(2));
+  ArmReferenceSample r;
+  ref.sample(0.0, r);
+  Eigen::VectorXd u = Eigen::VectorXd::Zero(2), y = Eigen::VectorXd::Zero(4);
+  double sink = 0.0;
+  const long before = g_allocations.load();
+  for (int k = 1; k < 200; ++k) {
+    plant.step(u, 2e-4);
+    const FlexibleJointArmState& s = plant.state();
+    y << s.phi, s.phid;
+    ekf.update(u, y, 2e-4);
+    ref.sample(k * 2e-4, r);
+    u = vdc.step(r, ekf.feedback());
+    sink += ctpd.step(r, ekf.feedback()).sum();
+  }
+  const long after = g_allocations.load();
+  EXPECT_EQ(after - before, 0);
+  EXPECT_TRUE(std::isfinite(sink + u.sum()));
+}
+
+}  // namespace
+}  // namespace plexus::algorithms
