@@ -1,14 +1,12 @@
-// Shared fixtures of the arm tests: models, random states and the validation-message helper.
+// Shared fixtures of the arm tests: models and random states (plus the family-independent
+// validation-message helper of the unicycle tests).
 #pragma once
-
-#include <stdexcept>
-#include <string>
-#include <utility>
 
 #include <Eigen/Core>
 
 #include "plexus/algorithms/arm/arm_model.hpp"
 #include "plexus/algorithms/core/random.hpp"
+#include "../unicycle/validation_message.hpp"  // invalid_argument_message<T>(args...)
 
 namespace plexus::algorithms::testing {
 
@@ -27,17 +25,6 @@ inline Eigen::VectorXd random_vector(Rng& rng, int n, double scale) {
   Eigen::VectorXd v(n);
   for (int i = 0; i < n; ++i) v(i) = rng.uniform(-scale, scale);
   return v;
-}
-
-/// The std::invalid_argument message raised by constructing T from args, "" if none.
-template <class T, class... Args>
-std::string invalid_argument_message(Args&&... args) {
-  try {
-    T object(std::forward<Args>(args)...);
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "";
 }
 
 }  // namespace plexus::algorithms::testing
