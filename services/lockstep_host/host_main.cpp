@@ -16,6 +16,7 @@
 #include "plexus/base/input_error.hpp"
 #include "plexus/base/logging.hpp"
 #include "plexus/distributed/lockstep.hpp"
+#include "plexus/distributed/realtime.hpp"
 #include "plexus/scenario/overrides.hpp"
 
 namespace {
@@ -45,7 +46,8 @@ std::set<std::string> split(const std::string& csv) {
 int main(int argc, char** argv) {
   using namespace plexus;
   CLI::App app{kAbout};
-  std::string scenario_file, dds = "fast", qos_file, profile = "lockstep", log_level = "warn", selection;
+  std::string scenario_file, dds = "fast", qos_file, profile = "lockstep", log_level = "warn", selection, mode;
+  int priority = 0, cpu = -1;
   std::vector<std::string> sets;
   int domain = 0;
   double timeout = 10.0;
@@ -60,7 +62,11 @@ int main(int argc, char** argv) {
   app.add_option("--domain", domain, "DDS domain id");
   app.add_option("--qos-file", qos_file, "QoS profiles (default deploy/qos.yaml)");
   app.add_option("--profile", profile, "QoS profile of the lockstep topics");
-  app.add_option("--timeout", timeout, "Seconds to wait for one input before failing");
+  app.add_option("--timeout", timeout, "Lockstep: seconds to wait for one input before failing");
+  app.add_option("--mode", mode, "lockstep or realtime (default: the scenario's clock mode)")
+      ->check(CLI::IsMember({"lockstep", "realtime"}));
+  app.add_option("--priority", priority, "Realtime: SCHED_FIFO priority (0: normal scheduling)");
+  app.add_option("--cpu", cpu, "Realtime: pin the loop to this CPU");
   app.add_option("--log-level", log_level, "trace, debug, info, warn, error");
   try {
     app.parse(argc, argv);
@@ -101,6 +107,18 @@ int main(int argc, char** argv) {
     po.name = kName + std::string(selection.empty() ? "" : " " + selection);
     const auto profiles = rt::QosProfiles::load(qos_file.empty() ? rt::default_qos_file() : qos_file);
     auto participant = rt::Participant::create(po);
+    const bool realtime = mode.empty() ? sc.clock == scenario::ClockMode::realtime : mode == "realtime";
+    if (realtime) {
+      distributed::RealtimeOptions ro;
+      ro.service = po.name;
+      ro.loop.priority = priority;
+      ro.loop.cpu = cpu;
+      distributed::RealtimeHost host(sc, hosted, *participant, profiles, ro);
+      const auto r = host.run(g_stop);
+      spdlog::info("ran {} ticks: {} holds, {} stale input reads, jitter p99 {:.1f} us, {} overruns", r.ticks, r.holds,
+                   r.stale_inputs, r.loop.jitter_p99_us, r.loop.overruns);
+      return 0;
+    }
     distributed::LockstepHost host(sc, hosted, *participant, profiles.get(profile), {.timeout_s = timeout});
     const int64_t steps = host.run(g_stop);
     spdlog::info("ran {} steps", steps);

@@ -62,6 +62,13 @@ int run_capture(const std::string& program, const std::vector<std::string>& args
   return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
 }
 
+bool exited(pid_t pid, int& status) {
+  int st = 0;
+  if (waitpid(pid, &st, WNOHANG) != pid) return false;
+  status = WIFEXITED(st) ? WEXITSTATUS(st) : 128 + WTERMSIG(st);
+  return true;
+}
+
 int stop(pid_t pid, int grace_ms) {
   kill(pid, SIGTERM);
   int status = 0;

@@ -17,6 +17,9 @@ pid_t spawn(const std::string& program, const std::vector<std::string>& args);
 /// Runs `bin_dir()/program args...` to completion, capturing stdout. Returns the exit code.
 int run_capture(const std::string& program, const std::vector<std::string>& args, std::string& out);
 
+/// If the child has exited, reaps it and returns true with its exit status in `status`.
+bool exited(pid_t pid, int& status);
+
 /// SIGTERM, then waits (SIGKILL after `grace_ms`). Returns the exit status.
 int stop(pid_t pid, int grace_ms = 3000);
 

@@ -8,7 +8,12 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <algorithm>
+#include <fstream>
 #include <map>
+#include <thread>
+
+#include <nlohmann/json.hpp>
 
 #include "child_process.hpp"
 #include "command.hpp"
@@ -16,6 +21,8 @@
 #include "plexus/base/input_error.hpp"
 #include "plexus/base/logging.hpp"
 #include "plexus/distributed/lockstep.hpp"
+#include "plexus/distributed/realtime.hpp"
+#include "plexus/scenario/step_executor.hpp"
 #include "plexus/scenario/evaluation.hpp"
 #include "plexus/scenario/progress_bar.hpp"
 #include "plexus/scenario/run_folder.hpp"
@@ -43,7 +50,110 @@ struct Process {
   std::vector<std::string> select;
   std::string vendor;
   pid_t pid = 0;
+
+  /// The service name the process reports in its heartbeats and DDS participant.
+  std::string service() const { return select.empty() ? program : program + " " + select.back(); }
 };
+
+double percentile_us(std::vector<int64_t> v, double q) {
+  if (v.empty()) return 0.0;
+  const auto k = static_cast<std::size_t>(q * static_cast<double>(v.size() - 1) + 0.5);
+  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(k), v.end());
+  return static_cast<double>(v[k]) * 1e-3;
+}
+
+/// Realtime mode: start every process together, record every signal with its latency from
+/// the sensor sample that started its chain, collect heartbeats, stop after the duration.
+struct RealtimeResult {
+  scenario::RunLog log;
+  nlohmann::ordered_json services = nlohmann::ordered_json::object();
+  nlohmann::ordered_json latency = nlohmann::ordered_json::object();
+  double wall = 0;
+};
+
+RealtimeResult run_realtime(scenario::Scenario& sc, rt::Participant& participant, const rt::QosProfiles& profiles,
+                            std::vector<Process>& procs, double start_timeout_s) {
+  RealtimeResult res;
+  scenario::StepExecutor wiring(sc, std::vector<bool>(sc.components.size(), false));
+  const auto& signals = wiring.signals();
+  // The signals the plants read from other processes: the commands.
+  std::vector<bool> plants(sc.components.size(), false);
+  for (std::size_t i = 0; i < sc.components.size(); ++i)
+    plants[i] = sc.components[i].kind == scenario::ComponentKind::plant;
+  const auto commands = scenario::StepExecutor(sc, plants).remote_inputs();
+
+  rt::QosProfile any = profiles.get("sensor");  // best effort, volatile: matches every producer
+  any.depth = 256;
+  std::vector<rt::Subscriber<msg::Signal>> subs;
+  for (const auto& spec : signals) subs.push_back(participant.subscriber<msg::Signal>(distributed::signal_topic(spec.name), any));
+  std::vector<rt::Subscriber<msg::Heartbeat>> beats;
+  for (const auto& p : procs) beats.push_back(participant.subscriber<msg::Heartbeat>("health/" + p.service(), profiles.get("health")));
+  auto go = participant.publisher<msg::ClockStep>(distributed::kClockTopic, profiles.get("lockstep"));
+
+  res.log.base_step = sc.step;
+  res.log.steps = sc.steps;
+  res.log.signals.resize(signals.size());
+  for (std::size_t s = 0; s < signals.size(); ++s) res.log.signals[s].spec = signals[s];
+  std::vector<std::vector<int64_t>> latency(signals.size());
+  std::vector<msg::Heartbeat> last(procs.size());
+  std::vector<bool> seen(procs.size(), false);
+
+  auto drain_beats = [&] {
+    for (std::size_t i = 0; i < beats.size(); ++i)
+      if (beats[i].take_latest(last[i])) seen[i] = true;
+  };
+  const int64_t give_up = monotonic_ns() + static_cast<int64_t>(start_timeout_s * 1e9);
+  while (std::find(seen.begin(), seen.end(), false) != seen.end()) {
+    drain_beats();
+    if (g_stop || monotonic_ns() > give_up) {
+      std::string missing;
+      for (std::size_t i = 0; i < seen.size(); ++i)
+        if (!seen[i]) missing += (missing.empty() ? "" : ", ") + procs[i].service();
+      throw distributed::LockstepError("realtime: no heartbeat from " + missing);
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  msg::ClockStep start;
+  start.step_index(0);
+  go.publish(start);
+  const int64_t t0 = monotonic_ns();
+  const int64_t end = t0 + static_cast<int64_t>((sc.duration + 2.0) * 1e9);
+  msg::Signal m;
+  scenario::SignalSample sample;
+  while (monotonic_ns() < end && !g_stop) {
+    bool any_data = false;
+    for (std::size_t s = 0; s < subs.size(); ++s) {
+      while (subs[s].take(m)) {
+        any_data = true;
+        const int64_t now = wall_time_ns();
+        if (m.count() != signals[s].fields.size()) continue;
+        sample.step = m.step_index();
+        std::copy_n(m.field_values().begin(), m.count(), sample.values.begin());
+        res.log.record(s, sample);
+        latency[s].push_back(now - m.header().origin_time_ns());
+      }
+    }
+    drain_beats();
+    bool all_done = true;
+    for (const auto& hb : last) all_done = all_done && hb.state() == msg::SERVICE_DRAINING;
+    if (all_done) break;
+    if (!any_data) std::this_thread::sleep_for(std::chrono::microseconds(200));
+  }
+  res.wall = static_cast<double>(monotonic_ns() - t0) * 1e-9;
+  for (std::size_t i = 0; i < procs.size(); ++i) {
+    const auto& hb = last[i];
+    res.services[procs[i].service()] = {{"loop_count", hb.loop_count()},         {"overruns", hb.overruns()},
+                                        {"stale_input_reads", hb.rejected_inputs()}, {"jitter_p50_us", hb.jitter_p50_us()},
+                                        {"jitter_p99_us", hb.jitter_p99_us()},     {"jitter_max_us", hb.jitter_max_us()},
+                                        {"compute_p50_us", hb.compute_p50_us()},   {"compute_p99_us", hb.compute_p99_us()}};
+  }
+  for (std::size_t s : commands)
+    res.latency[signals[s].name] = {{"samples", latency[s].size()},
+                                    {"p50_us", percentile_us(latency[s], 0.5)},
+                                    {"p99_us", percentile_us(latency[s], 0.99)},
+                                    {"max_us", percentile_us(latency[s], 1.0)}};
+  return res;
+}
 
 std::vector<Process> plan(const scenario::Scenario& sc) {
   std::vector<Process> procs;
@@ -84,6 +194,11 @@ int run_launch(const LaunchOptions& o) {
   if (!vendor_of.empty())
     throw InputError("--vendor " + vendor_of.begin()->first + ": no such process (processes: plant_simulator or a service name)");
 
+  // Every QoS profile the scenario names must exist before anything starts.
+  for (const auto& c : sc.components)
+    if (!c.qos.empty() && !profiles.contains(c.qos))
+      throw InputError(c.where + ".qos: unknown QoS profile '" + c.qos + "' in " + qos_file);
+
   init_logging("launch", "", o.quiet ? "error" : "warn");
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
@@ -96,22 +211,82 @@ int run_launch(const LaunchOptions& o) {
   po.domain_id = domain;
   po.name = "plexus launch";
   auto participant = rt::Participant::create(po);
-  distributed::LockstepClock clock(sc, *participant, qos, {.timeout_s = o.timeout});
 
+  const bool realtime = sc.clock == scenario::ClockMode::realtime;
   for (auto& p : procs) {
     std::vector<std::string> args = common;
     args.insert(args.end(), p.select.begin(), p.select.end());
-    args.insert(args.end(), {"--dds", p.vendor});
+    args.insert(args.end(), {"--dds", p.vendor, "--mode", realtime ? "realtime" : "lockstep"});
     p.pid = spawn(p.program, args);
   }
-  auto stop_all = [&procs] {
+  // A child that dies ends the run at once, with its name and exit code.
+  std::string died;
+  std::atomic<bool> watching{true};
+  std::thread watcher([&] {
+    while (watching) {
+      for (auto& p : procs) {
+        int status = 0;
+        if (p.pid > 0 && exited(p.pid, status)) {
+          p.pid = 0;
+          if (status != 0 && died.empty()) {
+            died = p.service() + " exited with code " + std::to_string(status);
+            g_stop = true;
+          }
+        }
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+  });
+  auto stop_all = [&] {
+    watching = false;
+    if (watcher.joinable()) watcher.join();
     for (auto& p : procs)
       if (p.pid > 0) stop(p.pid), p.pid = 0;
+  };
+  auto failure = [&](const std::string& what) {
+    stop_all();
+    std::fprintf(stderr, "plexus launch: %s\n", died.empty() ? what.c_str() : died.c_str());
+    return 1;
   };
 
   scenario::RunLog log;
   double wall = 0;
+  if (realtime) {
+    RealtimeResult r;
+    try {
+      r = run_realtime(sc, *participant, profiles, procs, 30.0);
+    } catch (const distributed::LockstepError& e) {
+      return failure(e.what());
+    }
+    stop_all();
+    if (!died.empty()) return failure(died);
+    const scenario::Evaluation ev = scenario::evaluate(sc, r.log);
+    const auto dir = o.out.empty() ? scenario::default_run_folder(sc.name) : std::filesystem::path(o.out);
+    scenario::write_run_folder(dir, sc, r.log, ev, r.wall);
+    nlohmann::ordered_json j = ev.to_json();
+    j["services"] = r.services;
+    j["command_latency"] = r.latency;
+    {
+      std::ofstream f(dir / "realtime.json");
+      f << j.dump(2) << "\n";
+    }
+    if (o.json) {
+      std::cout << j.dump() << std::endl;
+    } else {
+      std::printf("scenario %s: realtime over %zu processes (%s), %.3g s\n", sc.name.c_str(), procs.size(),
+                  vendor.c_str(), r.wall);
+      for (const auto& [name, m] : ev.metrics)
+        std::printf("  %-24s %s\n", name.c_str(), scenario::format_number(m.value).c_str());
+      for (const auto& [name, l] : r.latency.items())
+        std::printf("  latency sensor -> %-12s p50 %.0f us, p99 %.0f us (%d samples)\n", name.c_str(),
+                    l["p50_us"].get<double>(), l["p99_us"].get<double>(), l["samples"].get<int>());
+    }
+    if (!o.quiet) std::fprintf(stderr, "run folder: %s\n", dir.string().c_str());
+    for (const auto& f : ev.failures) std::fprintf(stderr, "%s\n", f.c_str());
+    return ev.failures.empty() ? 0 : 1;
+  }
   try {
+    distributed::LockstepClock clock(sc, *participant, qos, {.timeout_s = o.timeout});
     clock.wait_ready(static_cast<int>(procs.size()), 30.0, g_stop);
     scenario::ProgressBar bar(!o.quiet);
     const int64_t start = monotonic_ns();
@@ -119,9 +294,7 @@ int run_launch(const LaunchOptions& o) {
     wall = static_cast<double>(monotonic_ns() - start) * 1e-9;
     bar.finish();
   } catch (const distributed::LockstepError& e) {
-    stop_all();
-    std::fprintf(stderr, "plexus launch: %s\n", e.what());
-    return 1;
+    return failure(e.what());
   }
   stop_all();
 

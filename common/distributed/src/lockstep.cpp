@@ -74,7 +74,7 @@ class RemoteSignal {
 
 }  // namespace
 
-std::string lockstep_topic(const std::string& signal) { return "lockstep/" + signal; }
+std::string signal_topic(const std::string& signal) { return "sig/" + signal; }
 
 // --- host -------------------------------------------------------------------
 
@@ -95,8 +95,8 @@ struct LockstepHost::Impl {
     remote.resize(signals.size());
     out.resize(signals.size());
     for (std::size_t i : exec.remote_inputs())
-      remote[i] = std::make_unique<RemoteSignal>(signals[i], p.subscriber<msg::Signal>(lockstep_topic(signals[i].name), qos));
-    for (std::size_t i : exec.local_outputs()) out[i] = p.publisher<msg::Signal>(lockstep_topic(signals[i].name), qos);
+      remote[i] = std::make_unique<RemoteSignal>(signals[i], p.subscriber<msg::Signal>(signal_topic(signals[i].name), qos));
+    for (std::size_t i : exec.local_outputs()) out[i] = p.publisher<msg::Signal>(signal_topic(signals[i].name), qos);
   }
 };
 
@@ -158,7 +158,7 @@ struct LockstepClock::Impl {
   Impl(scenario::Scenario& s, rt::Participant& p, const rt::QosProfile& qos, LockstepOptions o)
       : sc(s), exec(s, std::vector<bool>(s.components.size(), false)), opt(o) {
     clock = p.publisher<msg::ClockStep>(kClockTopic, qos);
-    for (const auto& spec : exec.signals()) subs.push_back(p.subscriber<msg::Signal>(lockstep_topic(spec.name), qos));
+    for (const auto& spec : exec.signals()) subs.push_back(p.subscriber<msg::Signal>(signal_topic(spec.name), qos));
   }
 };
 

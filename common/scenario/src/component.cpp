@@ -38,4 +38,9 @@ OutputPort& Component::add_output(const std::string& port, std::vector<std::stri
   return *outputs_.back();
 }
 
+void Component::hold(int64_t, double) {
+  for (auto& out : outputs_)
+    for (std::size_t i = 0; i < out->fields().size(); ++i) (*out)[i] = 0.0;
+}
+
 }  // namespace plexus::scenario

@@ -146,6 +146,9 @@ struct Loader {
       if (mode == "lockstep") sc.clock = ClockMode::lockstep;
       else if (mode == "realtime") sc.clock = ClockMode::realtime;
       else clock.fail("mode", "expected lockstep or realtime, got '" + mode + "'");
+      sc.input_deadline_periods = clock.optional<double>("input_deadline_periods", sc.input_deadline_periods);
+      if (!(sc.input_deadline_periods >= 1.0 && sc.input_deadline_periods <= 1000.0))
+        clock.fail("input_deadline_periods", "must be in [1, 1000]");
       clock.reject_unknown();
     }
     if (top.has("dds")) {

@@ -62,7 +62,7 @@ int64_t StepExecutor::due_step(int64_t k, int64_t producer_period, bool delayed)
   return target - target % producer_period;
 }
 
-void StepExecutor::step(int64_t k, const RemoteInput& remote, const OutputSink& sink) {
+void StepExecutor::step(int64_t k, const RemoteInput& remote, const OutputSink& sink, const Gate& gate) {
   auto& w = impl_->wiring;
   const double t = static_cast<double>(k) * scenario_.step;
   const std::size_t n = scenario_.components.size();
@@ -89,7 +89,10 @@ void StepExecutor::step(int64_t k, const RemoteInput& remote, const OutputSink& 
       dst.step = src->step;
       for (std::size_t f = 0; f < in.width; ++f) dst.values[f] = src->values[in.field_of[f]];
     }
-    c.component->step(k, t);
+    if (!gate || gate(ci))
+      c.component->step(k, t);
+    else
+      c.component->hold(k, t);
     for (const auto& out : w.outputs[ci]) {
       Slot& slot = impl_->bus[out.signal];
       SignalSample& sample = out.port->sample();

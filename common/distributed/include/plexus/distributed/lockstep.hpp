@@ -4,10 +4,10 @@
 // Protocol:
 //  - the clock (in `plexus launch`) publishes ClockStep k on `lockstep/clock`;
 //  - every host runs base step k of its components (StepExecutor). An input produced in
-//    another process is read from `lockstep/<signal>` (plexus::msg::Signal, bit-exact):
+//    another process is read from `sig/<signal>` (plexus::msg::Signal, bit-exact):
 //    the host waits for exactly the sample the in-process executor would use (the latest
 //    one due at step k, or k-1 for a delayed input);
-//  - every output sample is published on `lockstep/<signal>`;
+//  - every output sample is published on `sig/<signal>`;
 //  - the clock records every signal; when all samples due at step k have arrived, it
 //    publishes ClockStep k+1. After the last step it publishes the end-of-run step.
 // The same scenario and seed therefore give the same log and digest as `plexus sim`,
@@ -32,8 +32,8 @@ namespace plexus::distributed {
 /// ClockStep::step_index that ends the run.
 inline constexpr uint64_t kEndOfRun = ~uint64_t{0};
 
-/// DDS topic carrying a scenario signal in lockstep mode.
-std::string lockstep_topic(const std::string& signal);
+/// DDS topic carrying a scenario signal (both clock modes): "sig/<signal>".
+std::string signal_topic(const std::string& signal);
 inline const char* const kClockTopic = "lockstep/clock";
 
 struct LockstepOptions {

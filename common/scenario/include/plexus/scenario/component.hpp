@@ -101,6 +101,12 @@ class Component {
   /// Must not allocate.
   virtual void step(int64_t k, double t) = 0;
 
+  /// Realtime mode only: called instead of step() when an input this component reads from
+  /// another process is older than its deadline. Writes the component's safe output. The
+  /// default sets every output field to zero (zero velocity, zero torque); a controller
+  /// that must hold something else overrides it. Must not allocate.
+  virtual void hold(int64_t k, double t);
+
   const std::string& name() const { return name_; }
   const std::vector<std::unique_ptr<InputPort>>& inputs() const { return inputs_; }
   const std::vector<std::unique_ptr<OutputPort>>& outputs() const { return outputs_; }

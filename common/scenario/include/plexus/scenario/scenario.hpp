@@ -47,6 +47,8 @@ struct Scenario {
   int64_t steps = 0;      ///< duration / step
   uint64_t seed = 0;
   ClockMode clock = ClockMode::lockstep;
+  /// Realtime mode: an input older than this many periods of its producer is stale.
+  double input_deadline_periods = 3.0;
   std::string dds_vendor;  ///< "fast" | "cyclone" | "" (launch default)
   int dds_domain = 0;
   std::vector<std::string> hosts;

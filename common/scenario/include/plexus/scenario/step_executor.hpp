@@ -20,6 +20,9 @@ class StepExecutor {
   using RemoteInput = std::function<void(std::size_t signal, int64_t due, SignalSample& sample)>;
   /// Receives every output sample of a hosted component, in execution order.
   using OutputSink = std::function<void(std::size_t signal, const SignalSample& sample)>;
+  /// Asked after a component's inputs are read: true runs step(), false runs hold()
+  /// (realtime mode, stale inputs). Empty: always step().
+  using Gate = std::function<bool(std::size_t component)>;
 
   /// Binds every port of the scenario (all components, hosted or not, so signal indices
   /// are the same in every process). `hosted[i]` says whether component i runs here;
@@ -43,7 +46,7 @@ class StepExecutor {
   static int64_t due_step(int64_t k, int64_t producer_period, bool delayed);
 
   /// Runs base step k of the hosted components. Does not allocate (the callbacks must not either).
-  void step(int64_t k, const RemoteInput& remote, const OutputSink& sink);
+  void step(int64_t k, const RemoteInput& remote, const OutputSink& sink, const Gate& gate = {});
 
  private:
   struct Impl;

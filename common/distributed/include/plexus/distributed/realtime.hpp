@@ -1,0 +1,63 @@
+// Realtime mode: the scenario's components on wall-clock loops, latest-sample semantics.
+//
+//  - Each host runs its components in one absolute-deadline loop at the base rate
+//    (PeriodicLoop); a component runs at the ticks its period divides.
+//  - An input from another process is the latest sample received on `sig/<signal>`. It is
+//    stale when it is older than `input_deadline_periods` periods of its producer (scenario
+//    `clock.input_deadline_periods`, default 3), or has never arrived.
+//  - A controller with a stale input runs hold() instead of step(): its documented safe
+//    output (by default all zero: zero velocity, zero torque). It recovers by itself at the
+//    first tick where its inputs are fresh again. Other components run on the last sample.
+//  - Every output carries in its header the origin time of the newest remote input it was
+//    computed from (a sensor, which has none, starts a chain), so the latency from a sensor
+//    sample to the command at the plant can be measured from the data.
+//  - Every host publishes a Heartbeat with its loop statistics on `health/<service>` once a
+//    second, and starts only when the launcher's start signal (ClockStep 0 on
+//    `lockstep/clock`) arrives, so all processes begin together.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "plexus/runtime/participant.hpp"
+#include "plexus/runtime/periodic_loop.hpp"
+#include "plexus/runtime/qos.hpp"
+#include "plexus/scenario/scenario.hpp"
+
+namespace plexus::distributed {
+
+/// The QoS profile of a signal: its producer's `qos` key, else "state".
+const rt::QosProfile& signal_qos(const scenario::Scenario& sc, const std::string& producer, const rt::QosProfiles& profiles);
+
+struct RealtimeOptions {
+  std::string service;           ///< name in heartbeats and logs
+  rt::LoopOptions loop;          ///< rate_hz is set from the scenario's base step
+  double start_timeout_s = 30;   ///< longest wait for the launcher's start signal
+};
+
+/// What a realtime host did, for the launcher and the logs.
+struct RealtimeReport {
+  int64_t ticks = 0;
+  uint64_t holds = 0;            ///< controller steps replaced by the safe output
+  uint64_t stale_inputs = 0;     ///< input reads that found a stale sample
+  rt::LoopStats loop;
+};
+
+class RealtimeHost {
+ public:
+  RealtimeHost(scenario::Scenario& scenario, std::vector<bool> hosted, rt::Participant& participant,
+               const rt::QosProfiles& profiles, RealtimeOptions options);
+  ~RealtimeHost();
+
+  /// Waits for the start signal, then runs scenario.steps + 1 ticks (or until `stop`).
+  RealtimeReport run(const std::atomic<bool>& stop);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace plexus::distributed

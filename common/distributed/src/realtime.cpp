@@ -1,0 +1,177 @@
+#include "plexus/distributed/realtime.hpp"
+
+#include <spdlog/spdlog.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstring>
+
+#include "plexus/base/clock.hpp"
+#include "plexus/base/input_error.hpp"
+#include "plexus/distributed/lockstep.hpp"
+#include "plexus/scenario/step_executor.hpp"
+#include "signal_codec.hpp"
+
+namespace plexus::distributed {
+namespace {
+
+using scenario::SignalSample;
+
+/// Latest sample of a signal produced in another process.
+struct RemoteLatest {
+  rt::Subscriber<msg::Signal> sub;
+  SignalSample sample;       // step -1 until the first one arrives
+  int64_t received_ns = 0;   // monotonic
+  int64_t origin_ns = 0;     // header origin time (wall clock)
+  int64_t deadline_ns = 0;   // stale after this age
+};
+
+void copy_name(std::array<char, 32>& dst, const std::string& src) {
+  dst.fill('\0');
+  std::memcpy(dst.data(), src.data(), std::min(src.size(), dst.size() - 1));
+}
+
+}  // namespace
+
+const rt::QosProfile& signal_qos(const scenario::Scenario& sc, const std::string& producer,
+                                 const rt::QosProfiles& profiles) {
+  for (const auto& c : sc.components)
+    if (c.component->name() == producer && !c.qos.empty()) return profiles.get(c.qos);
+  return profiles.get("state");
+}
+
+struct RealtimeHost::Impl {
+  scenario::Scenario& sc;
+  scenario::StepExecutor exec;
+  RealtimeOptions opt;
+  std::vector<std::unique_ptr<RemoteLatest>> remote;  // by signal
+  std::vector<rt::Publisher<msg::Signal>> out;        // by signal
+  std::vector<int64_t> local_origin;                  // by signal: origin of the latest local sample
+  rt::Subscriber<msg::ClockStep> start;
+  rt::Publisher<msg::Heartbeat> heartbeat;
+  msg::Signal in_msg, out_msg;
+  msg::Heartbeat hb;
+  // Per component being stepped: set while its inputs are read.
+  bool stale = false;
+  int64_t origin = 0;            // newest origin among the inputs read so far
+  int64_t component_origin = 0;  // origin of the component being stepped
+  RealtimeReport report;
+
+  Impl(scenario::Scenario& s, std::vector<bool> hosted, rt::Participant& p, const rt::QosProfiles& profiles,
+       RealtimeOptions o)
+      : sc(s), exec(s, std::move(hosted)), opt(std::move(o)) {
+    const auto& signals = exec.signals();
+    remote.resize(signals.size());
+    out.resize(signals.size());
+    local_origin.assign(signals.size(), 0);
+    for (std::size_t i : exec.remote_inputs()) {
+      auto r = std::make_unique<RemoteLatest>();
+      r->sub = p.subscriber<msg::Signal>(signal_topic(signals[i].name), signal_qos(sc, signals[i].producer, profiles));
+      r->deadline_ns = static_cast<int64_t>(sc.input_deadline_periods * static_cast<double>(signals[i].period_steps) *
+                                            sc.step * 1e9);
+      remote[i] = std::move(r);
+    }
+    for (std::size_t i : exec.local_outputs())
+      out[i] = p.publisher<msg::Signal>(signal_topic(signals[i].name), signal_qos(sc, signals[i].producer, profiles));
+    start = p.subscriber<msg::ClockStep>(kClockTopic, profiles.get("lockstep"));
+    heartbeat = p.publisher<msg::Heartbeat>("health/" + opt.service, profiles.get("health"));
+    copy_name(hb.service(), opt.service);
+    hb.pid(static_cast<uint32_t>(getpid()));
+  }
+
+  void drain(std::size_t signal) {
+    RemoteLatest& r = *remote[signal];
+    const std::size_t width = exec.signals()[signal].fields.size();
+    while (r.sub.take(in_msg)) {
+      SignalSample s;
+      if (!detail::from_message(in_msg, width, s)) continue;  // malformed: counted by the reader
+      if (s.step < r.sample.step) continue;                    // older than what we have
+      r.sample = s;
+      r.received_ns = monotonic_ns();
+      r.origin_ns = in_msg.header().origin_time_ns();
+    }
+  }
+
+  void publish_heartbeat(msg::ServiceState state, const rt::LoopStats& ls) {
+    hb.state(state);
+    hb.loop_count(ls.iterations);
+    hb.overruns(ls.overruns);
+    hb.rejected_inputs(report.stale_inputs);
+    hb.jitter_p50_us(ls.jitter_p50_us);
+    hb.jitter_p99_us(ls.jitter_p99_us);
+    hb.jitter_max_us(ls.jitter_max_us);
+    hb.compute_p50_us(ls.compute_p50_us);
+    hb.compute_p99_us(ls.compute_p99_us);
+    hb.compute_max_us(ls.compute_max_us);
+    hb.header().origin_time_ns(0);
+    heartbeat.publish(hb);
+  }
+};
+
+RealtimeHost::RealtimeHost(scenario::Scenario& scenario, std::vector<bool> hosted, rt::Participant& participant,
+                           const rt::QosProfiles& profiles, RealtimeOptions options)
+    : impl_(std::make_unique<Impl>(scenario, std::move(hosted), participant, profiles, std::move(options))) {}
+
+RealtimeHost::~RealtimeHost() = default;
+
+RealtimeReport RealtimeHost::run(const std::atomic<bool>& stop) {
+  Impl& m = *impl_;
+  // Wait for the start signal, announcing ourselves with heartbeats meanwhile.
+  const int64_t give_up = monotonic_ns() + static_cast<int64_t>(m.opt.start_timeout_s * 1e9);
+  msg::ClockStep go;
+  int64_t next_hb = 0;
+  while (!m.start.take(go)) {
+    if (stop) return m.report;
+    const int64_t now = monotonic_ns();
+    if (now > give_up) throw InputError(m.opt.service + ": no start signal from the launcher within " +
+                                        std::to_string(m.opt.start_timeout_s) + " s");
+    if (now >= next_hb) {
+      m.publish_heartbeat(msg::SERVICE_WAITING, {});
+      next_hb = now + 200'000'000;
+    }
+    m.start.wait(50'000'000);
+  }
+
+  rt::LoopOptions lo = m.opt.loop;
+  lo.rate_hz = 1.0 / m.sc.step;
+  rt::PeriodicLoop loop(lo);
+  const auto& signals = m.exec.signals();
+  const scenario::StepExecutor::RemoteInput read = [&m](std::size_t signal, int64_t, SignalSample& s) {
+    m.drain(signal);
+    const RemoteLatest& r = *m.remote[signal];
+    s = r.sample;
+    if (r.sample.step < 0 || monotonic_ns() - r.received_ns > r.deadline_ns) {
+      m.stale = true;
+      ++m.report.stale_inputs;
+    }
+    m.origin = std::max(m.origin, r.origin_ns);
+  };
+  const scenario::StepExecutor::Gate gate = [&m](std::size_t component) {
+    const bool hold = m.stale && m.sc.components[component].kind == scenario::ComponentKind::controller;
+    m.stale = false;
+    m.component_origin = m.origin;  // its inputs are read: the next component starts afresh
+    m.origin = 0;
+    if (hold) ++m.report.holds;
+    return !hold;
+  };
+  const int64_t step_ns = static_cast<int64_t>(m.sc.step * 1e9);
+  const scenario::StepExecutor::OutputSink publish = [&](std::size_t signal, const SignalSample& s) {
+    detail::to_message(s, signals[signal].fields.size(), step_ns, m.out_msg);
+    m.out_msg.header().origin_time_ns(m.component_origin);  // 0: this sample starts a chain (publish sets it)
+    m.out[signal].publish(m.out_msg);
+  };
+  const int64_t ticks = m.sc.steps + 1;
+  const int64_t hb_every = std::max<int64_t>(1, static_cast<int64_t>(1.0 / m.sc.step));
+  loop.run([&](const rt::PeriodicLoop::Tick& t) {
+    const auto k = static_cast<int64_t>(t.index);
+    m.exec.step(k, read, publish, gate);
+    if (k % hb_every == 0) m.publish_heartbeat(m.report.holds ? msg::SERVICE_DEGRADED : msg::SERVICE_RUNNING, loop.stats());
+    m.report.ticks = k + 1;
+    return k + 1 < ticks && !stop.load(std::memory_order_relaxed);
+  });
+  m.report.loop = loop.stats();
+  m.publish_heartbeat(msg::SERVICE_DRAINING, m.report.loop);
+  return m.report;
+}
+
+}  // namespace plexus::distributed
