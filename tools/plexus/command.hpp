@@ -18,5 +18,9 @@ Command add_qos_command(CLI::App& root);
 Command add_launch_command(CLI::App& root);
 Command add_sim_command(CLI::App& root);
 Command add_report_command(CLI::App& root);
+Command add_topic_command(CLI::App& root);
+Command add_record_command(CLI::App& root);
+Command add_replay_command(CLI::App& root);
+Command add_latency_command(CLI::App& root);
 
 }  // namespace plexus::cli

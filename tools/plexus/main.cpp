@@ -19,6 +19,10 @@ int main(int argc, char** argv) {
   commands.push_back(plexus::cli::add_launch_command(app));
   commands.push_back(plexus::cli::add_sim_command(app));
   commands.push_back(plexus::cli::add_report_command(app));
+  commands.push_back(plexus::cli::add_topic_command(app));
+  commands.push_back(plexus::cli::add_record_command(app));
+  commands.push_back(plexus::cli::add_replay_command(app));
+  commands.push_back(plexus::cli::add_latency_command(app));
   // Further subcommands register here.
 
   try {

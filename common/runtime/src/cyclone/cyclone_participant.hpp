@@ -22,6 +22,7 @@ class CycloneParticipant final : public Participant {
                                              const QosProfile& qos) override;
   std::unique_ptr<ReaderBackend> make_reader(const msg::TypeSupport& type, const std::string& topic,
                                              const QosProfile& qos) override;
+  std::vector<DiscoveredEndpoint> discovered_endpoints() const override;
 
   // For the endpoint listeners.
   dds_entity_t handle() const { return participant_; }

@@ -23,6 +23,7 @@
 #include <stdexcept>
 
 #include "../policy_names.hpp"
+#include "fast_endpoint_qos.hpp"
 #include "plexus/base/clock.hpp"
 
 namespace plexus::rt {
@@ -233,6 +234,7 @@ class FastParticipant::Discovery final : public fdds::DomainParticipantListener 
     fdds::DurabilityQosPolicyKind durability{};
     eprosima::fastrtps::Duration_t deadline;
     fdds::LivelinessQosPolicyKind liveliness{};
+    DiscoveredEndpoint endpoint;  // for discovered_endpoints()
   };
 
   void on_participant_discovery(fdds::DomainParticipant*, eprosima::fastrtps::rtps::ParticipantDiscoveryInfo&& info) override {
@@ -240,6 +242,10 @@ class FastParticipant::Discovery final : public fdds::DomainParticipantListener 
     std::ostringstream g;
     g << info.info.m_guid.guidPrefix;
     names_[g.str()] = info.info.m_participantName.to_string();
+    using PDI = eprosima::fastrtps::rtps::ParticipantDiscoveryInfo;
+    if (info.status == PDI::REMOVED_PARTICIPANT || info.status == PDI::DROPPED_PARTICIPANT)
+      for (auto it = remotes_.begin(); it != remotes_.end();)
+        it = it->first.rfind(g.str(), 0) == 0 ? remotes_.erase(it) : std::next(it);
   }
   void on_subscriber_discovery(fdds::DomainParticipant*, eprosima::fastrtps::rtps::ReaderDiscoveryInfo&& info) override {
     const auto& r = info.info;
@@ -250,6 +256,8 @@ class FastParticipant::Discovery final : public fdds::DomainParticipantListener 
     rem.durability = r.m_qos.m_durability.kind;
     rem.deadline = r.m_qos.m_deadline.period;
     rem.liveliness = r.m_qos.m_liveliness.kind;
+    rem.endpoint.type_name = r.typeName().to_string();
+    rem.endpoint.qos = detail::endpoint_qos_from_fast(r.m_qos);
     store(r.guid(), std::move(rem), info.status == eprosima::fastrtps::rtps::ReaderDiscoveryInfo::REMOVED_READER);
   }
   void on_publisher_discovery(fdds::DomainParticipant*, eprosima::fastrtps::rtps::WriterDiscoveryInfo&& info) override {
@@ -261,6 +269,8 @@ class FastParticipant::Discovery final : public fdds::DomainParticipantListener 
     rem.durability = w.m_qos.m_durability.kind;
     rem.deadline = w.m_qos.m_deadline.period;
     rem.liveliness = w.m_qos.m_liveliness.kind;
+    rem.endpoint.type_name = w.typeName().to_string();
+    rem.endpoint.qos = detail::endpoint_qos_from_fast(w.m_qos);
     store(w.guid(), std::move(rem), info.status == eprosima::fastrtps::rtps::WriterDiscoveryInfo::REMOVED_WRITER);
   }
 
@@ -296,8 +306,24 @@ class FastParticipant::Discovery final : public fdds::DomainParticipantListener 
     }
     auto n = names_.find(p.str());
     rem.participant = n != names_.end() && !n->second.empty() ? n->second : p.str();
+    rem.endpoint.topic = rem.topic;
+    rem.endpoint.is_writer = rem.is_writer;
+    rem.endpoint.participant = rem.participant;
+    rem.endpoint.guid = g.str();
+    rem.endpoint.local = p.str() == local_prefix;
     remotes_[g.str()] = std::move(rem);
   }
+
+ public:
+  std::string local_prefix;  // this participant's GUID prefix, set once it exists
+  std::vector<DiscoveredEndpoint> endpoints() {
+    std::lock_guard lk(mu_);
+    std::vector<DiscoveredEndpoint> out;
+    for (const auto& [guid, r] : remotes_) out.push_back(r.endpoint);
+    return out;
+  }
+
+ private:
   static std::string label(const Remote& r) {
     return std::string(r.is_writer ? "writer" : "reader") + " of participant '" + r.participant + "'";
   }
@@ -345,6 +371,11 @@ FastParticipant::FastParticipant(const ParticipantOptions& o) : Participant(o), 
   participant_ = factory->create_participant(static_cast<fdds::DomainId_t>(o.domain_id), pq, discovery_.get(),
                                              fdds::StatusMask::none() << fdds::StatusMask::data_on_readers());
   if (!participant_) throw std::runtime_error("Fast DDS: cannot create participant on domain " + std::to_string(o.domain_id));
+  {
+    std::ostringstream g;
+    g << participant_->guid().guidPrefix;
+    discovery_->local_prefix = g.str();
+  }
   participant_->set_listener(discovery_.get(), fdds::StatusMask::none());
   publisher_ = participant_->create_publisher(fdds::PUBLISHER_QOS_DEFAULT);
   subscriber_ = participant_->create_subscriber(fdds::SUBSCRIBER_QOS_DEFAULT);
@@ -414,6 +445,8 @@ std::unique_ptr<ReaderBackend> FastParticipant::make_reader(const msg::TypeSuppo
   r->attach(dr);
   return r;
 }
+
+std::vector<DiscoveredEndpoint> FastParticipant::discovered_endpoints() const { return discovery_->endpoints(); }
 
 std::string FastParticipant::describe_remote(const fdds::InstanceHandle_t& h) const { return discovery_->describe(h); }
 

@@ -30,6 +30,7 @@ class FastParticipant final : public Participant {
                                              const QosProfile& qos) override;
   std::unique_ptr<ReaderBackend> make_reader(const msg::TypeSupport& type, const std::string& topic,
                                              const QosProfile& qos) override;
+  std::vector<DiscoveredEndpoint> discovered_endpoints() const override;
 
   // For the endpoint listeners.
   eprosima::fastdds::dds::Publisher* publisher() const { return publisher_; }

@@ -19,8 +19,10 @@ std::size_t cdr_max_size() {
 template <class T>
 std::size_t cdr_serialize(const void* sample, unsigned char* buf, std::size_t capacity) {
   // Fast CDR skips alignment padding without writing it: zero the buffer so padding is
-  // deterministic on the wire (and never leaks old memory).
-  std::memset(buf, 0, capacity);
+  // deterministic on the wire (and never leaks old memory). Only the bytes this sample
+  // uses: for a bounded sequence (LatencyProbe) capacity is 64 KiB, the sample often tiny.
+  const std::size_t used = T::getCdrSerializedSize(*static_cast<const T*>(sample)) + 4;
+  std::memset(buf, 0, used < capacity ? used : capacity);
   eprosima::fastcdr::FastBuffer fb(reinterpret_cast<char*>(buf), capacity);
   eprosima::fastcdr::Cdr ser(fb, eprosima::fastcdr::Cdr::DEFAULT_ENDIAN, eprosima::fastcdr::Cdr::DDS_CDR);
   try {

@@ -6,7 +6,11 @@
 // written by hand per message.
 #pragma once
 
+#include <nlohmann/json_fwd.hpp>
+
 #include <cstddef>
+#include <string_view>
+#include <vector>
 
 struct dds_topic_descriptor;  // Cyclone DDS, from the idlc output of the same IDL
 
@@ -15,6 +19,8 @@ class TopicDataType;
 }
 
 namespace plexus::msg {
+
+class StampHeader;
 
 struct TypeSupport {
   /// Scoped IDL name, identical for both vendors ("plexus::msg::Pose2D").
@@ -31,7 +37,25 @@ struct TypeSupport {
   /// Deserialises CDR (with encapsulation header, either endianness) into a T.
   /// False for data that is truncated or otherwise malformed.
   bool (*deserialize)(const unsigned char* buf, std::size_t length, void* sample);
+
+  // For tools that pick the type at run time (plexus topic/record/replay):
+  /// A new default-constructed sample (a T); free it with destroy().
+  void* (*create)();
+  void (*destroy)(void* sample);
+  /// The sample's fields as JSON (generated from the IDL member declarations).
+  nlohmann::ordered_json (*to_json)(const void* sample);
+  /// The sample's StampHeader (every plexus message starts with one), or nullptr for a
+  /// type without a `StampHeader header` member.
+  StampHeader* (*header)(void* sample);
+  /// True for a type with a sequence member (LatencyProbe): its CDR size varies.
+  bool variable_size;
 };
+
+/// The TypeSupport of a scoped IDL type name ("plexus::msg::Pose2D", case-sensitive, exact),
+/// or nullptr. Covers every topic type, fixed and variable size.
+const TypeSupport* find_type_support(std::string_view type_name);
+/// Every topic type's TypeSupport, in IDL file order.
+const std::vector<const TypeSupport*>& all_type_supports();
 
 /// Specialised for every message type by the generated messages.cpp.
 template <class T>

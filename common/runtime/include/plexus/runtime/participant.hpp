@@ -16,6 +16,7 @@
 
 #include "plexus/base/clock.hpp"
 #include "plexus/msg/messages.hpp"
+#include "plexus/runtime/discovery.hpp"
 #include "plexus/runtime/endpoint_backend.hpp"
 #include "plexus/runtime/events.hpp"
 #include "plexus/runtime/qos.hpp"
@@ -76,6 +77,10 @@ class Participant {
                                                      const QosProfile& qos) = 0;
   virtual std::unique_ptr<ReaderBackend> make_reader(const msg::TypeSupport& type, const std::string& topic,
                                                      const QosProfile& qos) = 0;
+
+  /// Every endpoint discovered so far on this domain, local and remote, with its type name
+  /// and QoS (see discovery.hpp). Discovery takes time: tools wait a period first.
+  virtual std::vector<DiscoveredEndpoint> discovered_endpoints() const = 0;
 
  protected:
   explicit Participant(ParticipantOptions options) : options_(std::move(options)) {}

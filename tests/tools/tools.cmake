@@ -1,0 +1,100 @@
+# Tests of the QoS/latency tools (issue 9): plexus topic, record, replay, latency. Functional
+# only (no timing thresholds), on both vendors. DDS domains 180-229 are this file's.
+add_executable(topic_peer ${CMAKE_CURRENT_LIST_DIR}/topic_peer.cpp)
+target_link_libraries(topic_peer PRIVATE plexus_runtime CLI11::CLI11)
+plexus_warnings(topic_peer)
+
+set(TOOLS_DIR ${CMAKE_CURRENT_LIST_DIR})
+set(PLEXUS_CLI $<TARGET_FILE:plexus>)
+set(TOPIC_PEER $<TARGET_FILE:topic_peer>)
+set(BIN_DIR $<TARGET_FILE_DIR:plexus>)
+set(TOOLS_DOMAIN 180)
+foreach(v fast cyclone)
+  set(D ${TOOLS_DOMAIN})
+  add_test(NAME tools.topic_list_${v}
+           COMMAND ${TOOLS_DIR}/with_peers.sh "tools/pose +plexus::msg::Pose2D +1 writer, 0 readers"
+                   "${TOPIC_PEER} pub --dds ${v} --domain ${D} --topic tools/pose --duration 20" --
+                   ${PLEXUS_CLI} topic list --dds ${v} --domain ${D} --wait 5)
+  math(EXPR D "${D} + 1")
+  add_test(NAME tools.topic_echo_csv_${v}
+           COMMAND ${TOOLS_DIR}/with_peers.sh "receive_time_ns,header.seq_num,header.data_time_ns,header.origin_time_ns,header.publish_time_ns,x,y,theta"
+                   "${TOPIC_PEER} pub --dds ${v} --domain ${D} --topic tools/pose --duration 20" --
+                   ${PLEXUS_CLI} topic echo tools/pose --dds ${v} --domain ${D} --count 3 --csv --wait 10)
+  math(EXPR D "${D} + 1")
+  add_test(NAME tools.topic_echo_json_${v}
+           COMMAND ${TOOLS_DIR}/with_peers.sh "\"theta\": 0.5"
+                   "${TOPIC_PEER} pub --dds ${v} --domain ${D} --topic tools/pose --duration 20" --
+                   ${PLEXUS_CLI} topic echo tools/pose --dds ${v} --domain ${D} --count 2 --wait 10)
+  math(EXPR D "${D} + 1")
+  add_test(NAME tools.topic_hz_${v}
+           COMMAND ${TOOLS_DIR}/with_peers.sh "\"samples\":[1-9][0-9]*,\"rate_hz\""
+                   "${TOPIC_PEER} pub --dds ${v} --domain ${D} --topic tools/pose --rate 100 --duration 20" --
+                   ${PLEXUS_CLI} topic hz tools/pose --dds ${v} --domain ${D} --duration 2 --json --wait 10)
+  math(EXPR D "${D} + 1")
+  # A best-effort writer and a reliable reader: info names RELIABILITY.
+  add_test(NAME tools.topic_info_incompatible_${v}
+           COMMAND ${TOOLS_DIR}/with_peers.sh "INCOMPATIBLE RELIABILITY \\(writer offers best_effort, reader requests reliable\\)"
+                   "${TOPIC_PEER} pub --dds ${v} --domain ${D} --topic tools/mismatch --profile sensor --duration 20"
+                   "${TOPIC_PEER} sub --dds ${v} --domain ${D} --topic tools/mismatch --profile sensor_reliable --duration 20" --
+                   ${PLEXUS_CLI} topic info tools/mismatch --dds ${v} --domain ${D} --wait 5)
+  math(EXPR D "${D} + 1")
+  add_test(NAME tools.topic_info_matched_${v}
+           COMMAND ${TOOLS_DIR}/with_peers.sh "topic_peer_pub -> topic_peer_sub: matched"
+                   "${TOPIC_PEER} pub --dds ${v} --domain ${D} --topic tools/ok --profile sensor_reliable --duration 20"
+                   "${TOPIC_PEER} sub --dds ${v} --domain ${D} --topic tools/ok --profile sensor --duration 20" --
+                   ${PLEXUS_CLI} topic info tools/ok --dds ${v} --domain ${D} --wait 5)
+  math(EXPR D "${D} + 1")
+  add_test(NAME tools.record_replay_${v}
+           COMMAND ${TOOLS_DIR}/record_replay.sh ${BIN_DIR} ${v} ${D} ${CMAKE_BINARY_DIR}/test-runs/tools/record_replay_${v})
+  math(EXPR D "${D} + 1")
+  add_test(NAME tools.latency_pingpong_${v}
+           COMMAND ${PLEXUS_CLI} latency pingpong --dds ${v} --count 200 --rate 200 --size 64 --domain ${D} --json)
+  set_tests_properties(tools.latency_pingpong_${v} PROPERTIES PASS_REGULAR_EXPRESSION "\"vendor\":{.*\"ratio\":{\"mean\"")
+  math(EXPR D "${D} + 2")
+  add_test(NAME tools.latency_pipeline_${v}
+           COMMAND ${TOOLS_DIR}/pipeline_demo.sh ${BIN_DIR} ${v} ${D} ${CMAKE_BINARY_DIR}/test-runs/tools/pipeline_${v})
+  set_tests_properties(tools.latency_pipeline_${v} PROPERTIES PASS_REGULAR_EXPRESSION "\"hops\":\\[{\"from\":\"demo/ping\",\"to\":\"demo/pong\"")
+  math(EXPR D "${D} + 1")
+  set_tests_properties(tools.topic_list_${v} tools.topic_echo_csv_${v} tools.topic_echo_json_${v} tools.topic_hz_${v}
+                       tools.topic_info_incompatible_${v} tools.topic_info_matched_${v} tools.record_replay_${v}
+                       tools.latency_pingpong_${v} tools.latency_pipeline_${v}
+                       PROPERTIES LABELS "tools;multiprocess" TIMEOUT 120)
+  set(TOOLS_DOMAIN ${D})
+endforeach()
+
+# LatencyProbe (the variable-size type) across vendors, both directions, 4 KiB payload.
+add_test(NAME tools.latency_probe_fast_to_cyclone
+         COMMAND ${PLEXUS_CLI} latency pingpong --dds fast --peer-dds cyclone --size 4096 --count 100 --rate 100 --domain 210 --no-baseline --json)
+add_test(NAME tools.latency_probe_cyclone_to_fast
+         COMMAND ${PLEXUS_CLI} latency pingpong --dds cyclone --peer-dds fast --size 4096 --count 100 --rate 100 --domain 212 --no-baseline --json)
+set_tests_properties(tools.latency_probe_fast_to_cyclone tools.latency_probe_cyclone_to_fast PROPERTIES
+                     LABELS "tools;multiprocess;interop" TIMEOUT 120 PASS_REGULAR_EXPRESSION "\"received\":100")
+
+# The periodic loop against cyclictest (short; priority refused -> warning, still runs).
+add_test(NAME tools.latency_loop
+         COMMAND ${PLEXUS_CLI} latency loop --rate 1000 --duration 1 --json --out ${CMAKE_BINARY_DIR}/test-runs/tools/loop)
+set_tests_properties(tools.latency_loop PROPERTIES LABELS "tools" TIMEOUT 60
+                     PASS_REGULAR_EXPRESSION "\"plexus\":{\"count\":1000.*\"cyclictest\":{")
+
+# Bad input: a one-line error naming the argument or file, exit 2.
+add_test(NAME tools.bad_topic_type COMMAND ${EXPECT} 2 "--type: unknown message type 'Nope'"
+         ${PLEXUS_CLI} topic echo tools/x --type Nope --domain 214 --wait 0)
+add_test(NAME tools.bad_vendor COMMAND ${EXPECT} 2 "--dds: unknown DDS vendor 'opensplice'"
+         ${PLEXUS_CLI} topic list --dds opensplice)
+add_test(NAME tools.missing_run_file COMMAND ${EXPECT} 2 "/nonexistent/run.sqlite: no such file"
+         ${PLEXUS_CLI} latency pipeline /nonexistent/run.sqlite)
+add_test(NAME tools.replay_missing_file COMMAND ${EXPECT} 2 "/nonexistent/run.sqlite: no such file"
+         ${PLEXUS_CLI} replay /nonexistent/run.sqlite)
+add_test(NAME tools.record_bad_file COMMAND ${EXPECT} 2 "/nonexistent/dir/x.sqlite: cannot create recording"
+         ${PLEXUS_CLI} record -o /nonexistent/dir/x.sqlite --domain 214)
+add_test(NAME tools.bad_loop_rate COMMAND ${EXPECT} 2 "--rate: must be in \\(0, 100000\\] Hz"
+         ${PLEXUS_CLI} latency loop --rate 0)
+add_test(NAME tools.bad_pingpong_size COMMAND ${EXPECT} 2 "--size: must be in 0..65536 bytes"
+         ${PLEXUS_CLI} latency pingpong --size 70000)
+add_test(NAME tools.unknown_profile COMMAND ${EXPECT} 2 "unknown QoS profile 'fastest'"
+         ${PLEXUS_CLI} latency pingpong --profile fastest)
+add_test(NAME tools.bad_peer_vendor COMMAND ${EXPECT} 2 "--peer-dds: unknown DDS vendor 'rti'"
+         ${PLEXUS_CLI} latency pingpong --peer-dds rti)
+set_tests_properties(tools.bad_topic_type tools.bad_vendor tools.missing_run_file tools.replay_missing_file
+                     tools.record_bad_file tools.bad_loop_rate tools.bad_pingpong_size tools.unknown_profile
+                     tools.bad_peer_vendor PROPERTIES LABELS "cli;tools")

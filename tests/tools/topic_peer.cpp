@@ -1,0 +1,87 @@
+// topic_peer: a plexus process with one Pose2D writer or reader on a topic, with a QoS
+// profile, for the `plexus topic/record/replay` tests.
+//
+//   topic_peer pub --dds fast --domain 180 --topic tools/pose --profile sensor --rate 50 --duration 20
+//   topic_peer sub --dds cyclone --domain 180 --topic tools/pose --profile sensor_reliable --duration 20
+//
+// pub publishes x = k, y = 2k, theta = 0.5 (k = 1, 2, ...) until --count or --duration.
+#include <CLI/CLI.hpp>
+
+#include <atomic>
+#include <csignal>
+#include <cstdio>
+#include <thread>
+
+#include "plexus/base/clock.hpp"
+#include "plexus/base/input_error.hpp"
+#include "plexus/base/logging.hpp"
+#include "plexus/runtime/participant.hpp"
+#include "plexus/runtime/periodic_loop.hpp"
+
+namespace {
+std::atomic<bool> g_stop{false};
+void on_signal(int) { g_stop = true; }
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace plexus;
+  CLI::App app{"topic_peer: one Pose2D writer or reader"};
+  std::string role, dds = "fast", topic = "tools/pose", profile = "sensor";
+  int domain = 180, count = 0;
+  double rate = 50, duration = 20;
+  bool wait_reader = false;
+  app.add_option("role", role)->required()->check(CLI::IsMember({"pub", "sub"}));
+  app.add_option("--dds", dds);
+  app.add_option("--domain", domain);
+  app.add_option("--topic", topic);
+  app.add_option("--profile", profile);
+  app.add_option("--rate", rate);
+  app.add_option("--count", count);
+  app.add_option("--duration", duration);
+  app.add_flag("--wait-reader", wait_reader, "pub: start publishing once a reader matched");
+  CLI11_PARSE(app, argc, argv);
+  std::signal(SIGINT, on_signal);
+  std::signal(SIGTERM, on_signal);
+  try {
+    init_logging("topic_peer", "", "error");
+    const auto qos = rt::QosProfiles::load(rt::default_qos_file()).get(profile);
+    rt::ParticipantOptions po;
+    po.vendor = rt::parse_vendor(dds);
+    po.domain_id = domain;
+    po.name = "topic_peer_" + role;
+    auto p = rt::Participant::create(po);
+    const int64_t end = monotonic_ns() + static_cast<int64_t>(duration * 1e9);
+    if (role == "sub") {
+      auto sub = p->subscriber<msg::Pose2D>(topic, qos);
+      msg::Pose2D m;
+      while (!g_stop && monotonic_ns() < end) {
+        if (sub.wait(50'000'000)) sub.take_latest(m);
+      }
+      return 0;
+    }
+    auto pub = p->publisher<msg::Pose2D>(topic, qos);
+    if (wait_reader) {
+      while (pub.matched_count() == 0 && !g_stop && monotonic_ns() < end)
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+      std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    }
+    rt::PeriodicLoop loop({.rate_hz = rate});
+    int k = 0;
+    msg::Pose2D m;
+    loop.run([&](const rt::PeriodicLoop::Tick& t) {
+      ++k;
+      m.header().origin_time_ns(0);
+      m.header().data_time_ns(t.deadline_ns);
+      m.x(k);
+      m.y(2.0 * k);
+      m.theta(0.5);
+      pub.publish(m);
+      return !g_stop && monotonic_ns() < end && (count == 0 || k < count);
+    });
+    std::this_thread::sleep_for(std::chrono::milliseconds(500));
+    return 0;
+  } catch (const InputError& e) {
+    std::fprintf(stderr, "topic_peer: error: %s\n", e.what());
+    return 2;
+  }
+}

@@ -1,0 +1,85 @@
+// Shared by pingpong_node (plexus) and raw_fast_pingpong (plain Fast DDS): options, the
+// preallocated round-trip buffer and the one JSON result line both print, so that
+// `plexus latency pingpong` compares like with like.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <ctime>
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace plexus::latency {
+
+struct PingPongOptions {
+  std::string role;
+  int domain = 180;
+  int size = 0;           ///< payload bytes after the header
+  double rate = 1000;     ///< pings per second; 0: next ping as soon as the pong arrives
+  int count = 2000;
+  int warmup = 100;
+  double timeout = 15;    ///< seconds to wait for the peer to match
+  double duration = 0;    ///< pong: seconds to run (0: until SIGTERM)
+  std::string samples;    ///< ping: write every round trip (us), one per line
+};
+
+inline void add_pingpong_options(CLI::App& app, PingPongOptions& o) {
+  app.add_option("role", o.role, "ping or pong")->required()->check(CLI::IsMember({"ping", "pong"}));
+  app.add_option("--domain", o.domain, "DDS domain id")->check(CLI::Range(0, 232));
+  app.add_option("--size", o.size, "payload bytes")->check(CLI::Range(0, 65536));
+  app.add_option("--rate", o.rate, "pings per second (0: back to back)")->check(CLI::Range(0.0, 100000.0));
+  app.add_option("--count", o.count, "measured round trips")->check(CLI::Range(1, 10'000'000));
+  app.add_option("--warmup", o.warmup, "unmeasured round trips first")->check(CLI::Range(0, 1'000'000));
+  app.add_option("--timeout", o.timeout, "seconds to wait for the peer");
+  app.add_option("--duration", o.duration, "pong: seconds to run (0: until SIGTERM)");
+  app.add_option("--samples", o.samples, "ping: file for every round trip in microseconds");
+}
+
+inline int64_t mono_ns() {
+  timespec ts;
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return static_cast<int64_t>(ts.tv_sec) * 1'000'000'000 + ts.tv_nsec;
+}
+
+inline void sleep_until_ns(int64_t t) {
+  timespec ts{static_cast<time_t>(t / 1'000'000'000), static_cast<long>(t % 1'000'000'000)};
+  clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &ts, nullptr);
+}
+
+/// Prints the result line and writes the samples file. rtt_ns: measured round trips.
+inline void print_result(const char* implementation, const PingPongOptions& o, std::vector<int64_t>& rtt_ns, int sent,
+                         double elapsed_s) {
+  if (!o.samples.empty()) {
+    std::ofstream f(o.samples);
+    for (int64_t v : rtt_ns) f << static_cast<double>(v) * 1e-3 << '\n';
+  }
+  std::sort(rtt_ns.begin(), rtt_ns.end());
+  auto pct = [&](double q) {
+    if (rtt_ns.empty()) return 0.0;
+    const auto k = static_cast<std::size_t>(std::ceil(q * static_cast<double>(rtt_ns.size())));
+    return static_cast<double>(rtt_ns[std::min(rtt_ns.size() - 1, k == 0 ? 0 : k - 1)]) * 1e-3;
+  };
+  double sum = 0;
+  for (int64_t v : rtt_ns) sum += static_cast<double>(v);
+  const double n = static_cast<double>(rtt_ns.size());
+  nlohmann::ordered_json j = {{"implementation", implementation},
+                              {"size", o.size},
+                              {"rate_hz", o.rate},
+                              {"sent", sent},
+                              {"received", rtt_ns.size()},
+                              {"rtt_mean_us", n > 0 ? sum / n * 1e-3 : 0.0},
+                              {"rtt_p50_us", pct(0.50)},
+                              {"rtt_p90_us", pct(0.90)},
+                              {"rtt_p99_us", pct(0.99)},
+                              {"rtt_max_us", rtt_ns.empty() ? 0.0 : static_cast<double>(rtt_ns.back()) * 1e-3},
+                              {"round_trips_per_s", elapsed_s > 0 ? n / elapsed_s : 0.0}};
+  std::printf("%s\n", j.dump().c_str());
+}
+
+}  // namespace plexus::latency

@@ -1,0 +1,177 @@
+// raw_fast_pingpong: the Fast DDS baseline of `plexus latency pingpong`, written against the
+// plain Fast DDS 2.9 API (no plexus code) with the fastddsgen type of the same IDL
+// (LatencyProbe) and the transport plexus uses: UDPv4 on 127.0.0.1 only, unicast discovery
+// on the well-known ports, no shared memory, no data sharing, XCDR1. Same options, same
+// measurement and the same JSON line as pingpong_node.
+#include <fastdds/dds/domain/DomainParticipant.hpp>
+#include <fastdds/dds/domain/DomainParticipantFactory.hpp>
+#include <fastdds/dds/publisher/DataWriter.hpp>
+#include <fastdds/dds/publisher/Publisher.hpp>
+#include <fastdds/dds/subscriber/DataReader.hpp>
+#include <fastdds/dds/subscriber/SampleInfo.hpp>
+#include <fastdds/dds/subscriber/Subscriber.hpp>
+#include <fastdds/dds/topic/Topic.hpp>
+#include <fastdds/rtps/transport/UDPv4TransportDescriptor.h>
+#include <fastrtps/utils/IPLocator.h>
+
+#include <atomic>
+#include <csignal>
+#include <thread>
+
+#include "latency_probePubSubTypes.h"
+#include "pingpong_common.hpp"
+
+using namespace eprosima::fastdds::dds;
+using eprosima::fastrtps::rtps::IPLocator;
+using eprosima::fastrtps::rtps::Locator_t;
+using plexus::latency::mono_ns;
+using RC = eprosima::fastrtps::types::ReturnCode_t;
+
+namespace {
+
+std::atomic<bool> g_stop{false};
+void on_signal(int) { g_stop = true; }
+
+template <class Q>
+void set_qos(Q& q, bool reliable, int depth) {
+  q.reliability().kind = reliable ? RELIABLE_RELIABILITY_QOS : BEST_EFFORT_RELIABILITY_QOS;
+  q.reliability().max_blocking_time = eprosima::fastrtps::Duration_t(0, 100'000'000);
+  q.durability().kind = VOLATILE_DURABILITY_QOS;
+  q.history().kind = KEEP_LAST_HISTORY_QOS;
+  q.history().depth = depth;
+  q.resource_limits().max_samples = depth;
+  q.resource_limits().max_samples_per_instance = depth;
+  q.data_sharing().off();
+}
+
+bool take_one(DataReader* r, plexus::msg::LatencyProbe& m) {
+  SampleInfo info;
+  while (r->take_next_sample(&m, &info) == RC::RETCODE_OK)
+    if (info.valid_data) return true;
+  return false;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"raw_fast_pingpong: plain Fast DDS ping-pong baseline"};
+  plexus::latency::PingPongOptions o;
+  bool best_effort = false;
+  int depth = 16;
+  plexus::latency::add_pingpong_options(app, o);
+  app.add_flag("--best-effort", best_effort, "best-effort instead of reliable");
+  app.add_option("--depth", depth, "keep_last depth")->check(CLI::Range(1, 100000));
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? 0 : 2;
+  }
+  std::signal(SIGINT, on_signal);
+  std::signal(SIGTERM, on_signal);
+  const bool ping = o.role == "ping";
+
+  DomainParticipantQos pq;
+  pq.name(ping ? "raw_fast_ping" : "raw_fast_pong");
+  pq.transport().use_builtin_transports = false;
+  auto udp = std::make_shared<eprosima::fastdds::rtps::UDPv4TransportDescriptor>();
+  udp->interfaceWhiteList.push_back("127.0.0.1");
+  pq.transport().user_transports.push_back(udp);
+  pq.wire_protocol().builtin.metatrafficMulticastLocatorList.clear();
+  pq.wire_protocol().builtin.metatrafficUnicastLocatorList.clear();
+  pq.wire_protocol().builtin.metatrafficUnicastLocatorList.push_back(Locator_t());
+  for (int pid = 0; pid < 32; ++pid) {
+    Locator_t loc;
+    IPLocator::setIPv4(loc, "127.0.0.1");
+    loc.port = static_cast<uint32_t>(7400 + 250 * o.domain + 10 + 2 * pid);
+    pq.wire_protocol().builtin.initialPeersList.push_back(loc);
+  }
+  DomainParticipant* dp = DomainParticipantFactory::get_instance()->create_participant(o.domain, pq);
+  if (!dp) {
+    std::fprintf(stderr, "raw_fast_pingpong: cannot create participant\n");
+    return 1;
+  }
+  TypeSupport type(new plexus::msg::LatencyProbePubSubType());
+  type.register_type(dp);
+  Topic* tping = dp->create_topic("latency/ping", type.get_type_name(), TOPIC_QOS_DEFAULT);
+  Topic* tpong = dp->create_topic("latency/pong", type.get_type_name(), TOPIC_QOS_DEFAULT);
+  Publisher* pub = dp->create_publisher(PUBLISHER_QOS_DEFAULT);
+  Subscriber* sub = dp->create_subscriber(SUBSCRIBER_QOS_DEFAULT);
+  DataWriterQos wq = pub->get_default_datawriter_qos();
+  set_qos(wq, !best_effort, depth);
+  wq.representation().m_value = {XCDR_DATA_REPRESENTATION};
+  DataReaderQos rq = sub->get_default_datareader_qos();
+  set_qos(rq, !best_effort, depth);
+  rq.type_consistency().representation.m_value = {XCDR_DATA_REPRESENTATION};
+  DataWriter* w = pub->create_datawriter(ping ? tping : tpong, wq);
+  DataReader* r = sub->create_datareader(ping ? tpong : tping, rq);
+  if (!w || !r) {
+    std::fprintf(stderr, "raw_fast_pingpong: cannot create endpoints\n");
+    return 1;
+  }
+  int rc = 0;
+  plexus::msg::LatencyProbe out, in;
+  in.payload().reserve(65536);
+  if (!ping) {
+    const int64_t end = o.duration > 0 ? mono_ns() + static_cast<int64_t>(o.duration * 1e9) : INT64_MAX;
+    while (!g_stop && mono_ns() < end) {
+      if (!r->wait_for_unread_message(eprosima::fastrtps::Duration_t(0, 50'000'000))) continue;
+      while (take_one(r, in)) w->write(&in);
+    }
+  } else {
+    PublicationMatchedStatus ps;
+    SubscriptionMatchedStatus ss;
+    const int64_t match_end = mono_ns() + static_cast<int64_t>(o.timeout * 1e9);
+    for (;;) {
+      w->get_publication_matched_status(ps);
+      r->get_subscription_matched_status(ss);
+      if ((ps.current_count > 0 && ss.current_count > 0) || g_stop) break;
+      if (mono_ns() > match_end) {
+        std::fprintf(stderr, "raw_fast_pingpong ping: no pong matched within %.0f s\n", o.timeout);
+        return 1;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    out.payload().assign(static_cast<std::size_t>(o.size), 0x5a);
+    std::vector<int64_t> rtt;
+    rtt.reserve(static_cast<std::size_t>(o.count));
+    const int total = o.warmup + o.count;
+    const int64_t period = o.rate > 0 ? static_cast<int64_t>(1e9 / o.rate) : 0;
+    int sent = 0;
+    int64_t next = mono_ns(), t_start = 0;
+    for (int k = 0; k < total && !g_stop; ++k) {
+      if (period > 0) {
+        plexus::latency::sleep_until_ns(next);
+        next += period;
+        const int64_t now = mono_ns();
+        while (next < now) next += period;
+      }
+      if (k == o.warmup) t_start = mono_ns();
+      out.header().data_time_ns(k);
+      const int64_t t0 = mono_ns();
+      w->write(&out);
+      if (k >= o.warmup) ++sent;
+      const int64_t give_up = t0 + 1'000'000'000;
+      bool got = false;
+      while (!got && !g_stop) {
+        const int64_t now = mono_ns();
+        if (now >= give_up) break;
+        if (r->get_unread_count() == 0 &&
+            !r->wait_for_unread_message(eprosima::fastrtps::Duration_t(static_cast<long double>(give_up - now) * 1e-9L)))
+          continue;
+        while (take_one(r, in)) {
+          if (in.header().data_time_ns() == k) {
+            got = true;
+            if (k >= o.warmup) rtt.push_back(mono_ns() - t0);
+          }
+        }
+      }
+    }
+    const double elapsed = static_cast<double>(mono_ns() - t_start) * 1e-9;
+    plexus::latency::print_result("raw Fast DDS", o, rtt, sent, elapsed);
+    rc = static_cast<int>(rtt.size()) == o.count ? 0 : 1;
+  }
+  dp->delete_contained_entities();
+  DomainParticipantFactory::get_instance()->delete_participant(dp);
+  return rc;
+}

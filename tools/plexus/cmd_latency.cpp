@@ -1,0 +1,521 @@
+// plexus latency pingpong | loop | pipeline: transport round trips against the vendors' own
+// tools, periodic-loop wake-up jitter against cyclictest, and per-hop latency of a recorded
+// (or live) system from the header times. Each writes PNG histograms with --out DIR.
+#include <sched.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <thread>
+
+#include "child_process.hpp"
+#include "command.hpp"
+#include "external_program.hpp"
+#include "latency_stats.hpp"
+#include "plexus/base/input_error.hpp"
+#include "plexus/runtime/periodic_loop.hpp"
+#include "plexus/runtime/qos.hpp"
+#include "plexus/runtime/vendor.hpp"
+#include "recording.hpp"
+#include "topic_discovery.hpp"
+
+namespace plexus::cli {
+namespace fs = std::filesystem;
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+Json pct_json(const Percentiles& p) {
+  return {{"count", p.count}, {"mean_us", p.mean}, {"p50_us", p.p50}, {"p90_us", p.p90}, {"p99_us", p.p99}, {"max_us", p.max}};
+}
+
+std::string temp_path(const std::string& stem) {
+  return (fs::temp_directory_path() / ("plexus_" + stem + "_" + std::to_string(getpid()))).string();
+}
+
+std::vector<double> read_numbers(const std::string& path) {
+  std::vector<double> v;
+  std::ifstream f(path);
+  for (double x; f >> x;) v.push_back(x);
+  return v;
+}
+
+void make_out_dir(const std::string& dir) {
+  if (dir.empty()) return;
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec || !fs::is_directory(dir)) throw InputError("--out: cannot create directory " + dir);
+}
+
+void print_compare(const char* what, const Percentiles& a, const Percentiles& b, const std::string& b_name, bool b_has_p90) {
+  std::printf("\n%s (us)      %12s %12s %8s\n", what, "plexus", b_name.c_str(), "ratio");
+  const std::pair<const char*, std::pair<double, double>> rows[] = {
+      {"mean", {a.mean, b.mean}}, {"p50", {a.p50, b.p50}}, {"p90", {a.p90, b_has_p90 ? b.p90 : -1}},
+      {"p99", {a.p99, b.p99}},    {"max", {a.max, b.max}}};
+  for (const auto& [name, v] : rows) {
+    if (v.second < 0)
+      std::printf("  %-16s %12.1f %12s %8s\n", name, v.first, "n/a", "n/a");
+    else
+      std::printf("  %-16s %12.1f %12.1f %8s\n", name, v.first, v.second, ratio_text(v.first, v.second).c_str());
+  }
+}
+
+// ---------------------------------------------------------------------------------------
+// pingpong
+
+struct PingOpts {
+  std::string dds = "fast", peer_dds, profile = "latency", qos_file, out;
+  int size = 0, count = 2000, domain = 180;
+  double rate = 1000;
+  bool json = false, no_baseline = false;
+};
+
+Json parse_result(const std::string& out, int rc, const std::string& who) {
+  std::istringstream in(out);
+  for (std::string line; std::getline(in, line);)
+    if (!line.empty() && line.front() == '{') return Json::parse(line);
+  throw std::runtime_error(who + " produced no result (exit " + std::to_string(rc) + ")");
+}
+
+Percentiles pct_of_result(const Json& r) {
+  Percentiles p;
+  p.count = r.value("received", 0);
+  p.mean = r.value("rtt_mean_us", 0.0);
+  p.p50 = r.value("rtt_p50_us", 0.0);
+  p.p90 = r.value("rtt_p90_us", 0.0);
+  p.p99 = r.value("rtt_p99_us", 0.0);
+  p.max = r.value("rtt_max_us", 0.0);
+  return p;
+}
+
+// ddsperf ping prints, per second: "... size N mean Xus min Xus 50% Xus 90% Xus 99% Xus max Xus cnt N"
+// (half round trips). Percentiles: count-weighted mean of the per-second values; max: max.
+Json parse_ddsperf(const std::string& out) {
+  static const std::regex line_re(
+      R"(size (\d+) mean ([0-9.]+)us min ([0-9.]+)us 50% ([0-9.]+)us 90% ([0-9.]+)us 99% ([0-9.]+)us max ([0-9.]+)us cnt (\d+))");
+  double n = 0, mean = 0, p50 = 0, p90 = 0, p99 = 0, mx = 0;
+  std::istringstream in(out);
+  for (std::string line; std::getline(in, line);) {
+    std::smatch m;
+    if (!std::regex_search(line, m, line_re)) continue;
+    const double c = std::stod(m[8]);
+    n += c;
+    mean += c * std::stod(m[2]);
+    p50 += c * std::stod(m[4]);
+    p90 += c * std::stod(m[5]);
+    p99 += c * std::stod(m[6]);
+    mx = std::max(mx, std::stod(m[7]));
+  }
+  if (n <= 0) throw std::runtime_error("ddsperf printed no latency lines");
+  // Half round trips -> round trips (x2), to compare like with like.
+  return {{"implementation", "ddsperf"}, {"received", static_cast<int>(n)}, {"rtt_mean_us", 2 * mean / n},
+          {"rtt_p50_us", 2 * p50 / n},   {"rtt_p90_us", 2 * p90 / n},       {"rtt_p99_us", 2 * p99 / n},
+          {"rtt_max_us", 2 * mx},        {"note", "ddsperf reports half round trips per second; shown x2, count-weighted over its 1 s intervals"}};
+}
+
+int run_pingpong(const PingOpts& o) {
+  const rt::Vendor vendor = rt::parse_vendor(o.dds, "--dds");
+  const std::string peer = o.peer_dds.empty() ? o.dds : o.peer_dds;
+  rt::parse_vendor(peer, "--peer-dds");
+  const std::string qos_file = o.qos_file.empty() ? rt::default_qos_file() : o.qos_file;
+  const auto qos = rt::QosProfiles::load(qos_file).get(o.profile);
+  if (o.size < 0 || o.size > 65536) throw InputError("--size: must be in 0..65536 bytes, got " + std::to_string(o.size));
+  if (!(o.rate >= 0 && o.rate <= 100000)) throw InputError("--rate: must be in 0..100000 Hz (0: back to back)");
+  if (o.count < 1 || o.count > 10'000'000) throw InputError("--count: must be in 1..10000000");
+  if (o.domain < 0 || o.domain > 231) throw InputError("--domain: must be in 0..231 (the baseline uses domain + 1)");
+  make_out_dir(o.out);
+  const std::string d = std::to_string(o.domain), d2 = std::to_string(o.domain + 1);
+  const double expected_s = o.rate > 0 ? (o.count + 100) / o.rate : o.count * 0.002;
+  const std::string pong_duration = std::to_string(static_cast<int>(expected_s + 40));
+  std::vector<std::string> common = {"--size", std::to_string(o.size), "--rate", std::to_string(o.rate), "--count",
+                                     std::to_string(o.count)};
+
+  // plexus: pingpong_node ping (--dds) against pingpong_node pong (--peer-dds).
+  const std::string samples = temp_path("pingpong_samples");
+  auto args = [&](const char* role, const std::string& vendor_name, const std::string& domain) {
+    std::vector<std::string> a = {role, "--dds", vendor_name, "--domain", domain, "--qos-file", qos_file, "--profile", o.profile};
+    a.insert(a.end(), common.begin(), common.end());
+    return a;
+  };
+  auto pong_args = args("pong", peer, d);
+  pong_args.insert(pong_args.end(), {"--duration", pong_duration});
+  const pid_t pong = spawn("pingpong_node", pong_args);
+  auto ping_args = args("ping", o.dds, d);
+  ping_args.insert(ping_args.end(), {"--samples", samples});
+  std::string out;
+  const int rc = run_capture("pingpong_node", ping_args, out);
+  stop(pong);
+  const Json plexus_r = parse_result(out, rc, "pingpong_node ping");
+  std::vector<double> plexus_samples = read_numbers(samples);
+  fs::remove(samples);
+
+  // The vendor's own baseline, same machine, same run.
+  Json vendor_r;
+  std::vector<double> vendor_samples;
+  std::string vendor_name;
+  if (!o.no_baseline) {
+    if (vendor == rt::Vendor::fast) {
+      vendor_name = "raw Fast DDS";
+      std::vector<std::string> base = {"--domain", d2, "--depth", std::to_string(qos.depth)};
+      base.insert(base.end(), common.begin(), common.end());
+      if (qos.reliability == rt::QosProfile::Reliability::best_effort) base.push_back("--best-effort");
+      std::vector<std::string> pa = {"pong", "--duration", pong_duration};
+      pa.insert(pa.end(), base.begin(), base.end());
+      const pid_t rpong = spawn("raw_fast_pingpong", pa);
+      std::vector<std::string> qa = {"ping", "--samples", samples};
+      qa.insert(qa.end(), base.begin(), base.end());
+      std::string rout;
+      const int rrc = run_capture("raw_fast_pingpong", qa, rout);
+      stop(rpong);
+      vendor_r = parse_result(rout, rrc, "raw_fast_pingpong ping");
+      vendor_samples = read_numbers(samples);
+      fs::remove(samples);
+    } else {
+      vendor_name = "ddsperf";
+      const std::string ddsperf = find_program("ddsperf");
+      if (ddsperf.empty()) throw std::runtime_error("ddsperf not found (install cyclonedds-tools)");
+      const std::string uri = "CYCLONEDDS_URI=" + std::string(
+          "<CycloneDDS><Domain Id=\"any\"><General><Interfaces><NetworkInterface address=\"127.0.0.1\"/></Interfaces>"
+          "<AllowMulticast>false</AllowMulticast></General><Discovery><ParticipantIndex>auto</ParticipantIndex>"
+          "<MaxAutoParticipantIndex>31</MaxAutoParticipantIndex><Peers><Peer address=\"127.0.0.1\"/></Peers></Discovery>"
+          "</Domain></CycloneDDS>");
+      std::vector<std::string> base = {"-i", d2};
+      if (qos.reliability == rt::QosProfile::Reliability::best_effort) base.push_back("-u");
+      const int dur = static_cast<int>(std::ceil(expected_s)) + 1;
+      std::vector<std::string> pa = base;
+      pa.insert(pa.end(), {"-D", std::to_string(dur + 12), "pong"});
+      const std::string pong_log = temp_path("ddsperf_pong");
+      const pid_t dpong = spawn_program(ddsperf, pa, {uri}, pong_log);
+      std::vector<std::string> qa = base;
+      qa.insert(qa.end(), {"-Qminmatch:1", "-Qinitwait:10", "-D", std::to_string(dur), "ping"});
+      if (o.rate > 0) qa.push_back(std::to_string(static_cast<long>(o.rate)) + "Hz");
+      qa.insert(qa.end(), {"size", std::to_string(o.size == 0 ? 0 : std::max(o.size, 12))});
+      std::string dout;
+      run_program(ddsperf, qa, dout, {uri}, true);
+      kill(dpong, SIGTERM);
+      wait_program(dpong);
+      fs::remove(pong_log);
+      vendor_r = parse_ddsperf(dout);
+    }
+  }
+
+  Percentiles a = pct_of_result(plexus_r), b = vendor_r.is_null() ? Percentiles{} : pct_of_result(vendor_r);
+  Json result = {{"dds", o.dds},     {"peer_dds", peer},  {"profile", o.profile},
+                 {"size", o.size},   {"rate_hz", o.rate}, {"count", o.count},
+                 {"plexus", plexus_r}};
+  if (!vendor_r.is_null()) {
+    result["vendor"] = vendor_r;
+    result["ratio"] = {{"mean", a.mean / b.mean}, {"p50", a.p50 / b.p50}, {"p90", a.p90 / b.p90},
+                       {"p99", a.p99 / b.p99},    {"max", a.max / b.max}};
+  }
+  if (!o.out.empty()) {
+    std::vector<Series> series = {{"plexus " + o.dds + "->" + peer, plexus_samples, false}};
+    if (!vendor_samples.empty()) series.push_back({vendor_name, vendor_samples, false});
+    const std::string png = o.out + "/pingpong_" + o.dds + "_" + std::to_string(o.size) + ".png";
+    write_histogram_png(png, "round trip, " + std::to_string(o.size) + " B payload, " + o.dds, series);
+    result["png"] = png;
+    std::ofstream(o.out + "/pingpong_" + o.dds + "_" + std::to_string(o.size) + ".json") << result.dump(2) << '\n';
+  }
+  if (o.json) {
+    std::printf("%s\n", result.dump().c_str());
+  } else {
+    std::printf("plexus latency pingpong: %s -> %s, profile '%s', payload %d B, %g Hz, %d round trips, loopback\n",
+                o.dds.c_str(), peer.c_str(), o.profile.c_str(), o.size, o.rate, o.count);
+    std::printf("plexus: received %d/%d, %.0f round trips/s\n", plexus_r.value("received", 0), o.count,
+                plexus_r.value("round_trips_per_s", 0.0));
+    if (!vendor_r.is_null()) {
+      print_compare("round trip", a, b, vendor_name, true);
+      if (vendor_name == "ddsperf") std::printf("(ddsperf reports half round trips per 1 s interval: shown x2, count-weighted)\n");
+    } else {
+      print_compare("round trip", a, Percentiles{}, "-", false);
+    }
+    if (result.contains("png")) std::printf("histogram: %s\n", result["png"].get<std::string>().c_str());
+  }
+  return plexus_r.value("received", 0) == o.count ? 0 : 1;
+}
+
+// ---------------------------------------------------------------------------------------
+// loop
+
+struct LoopOpts {
+  double rate = 1000, duration = 10;
+  int priority = 80, cpu = -1;
+  std::string out;
+  bool json = false, no_cyclictest = false;
+};
+
+int run_loop(const LoopOpts& o) {
+  if (!(o.rate > 0 && o.rate <= 100000)) throw InputError("--rate: must be in (0, 100000] Hz");
+  if (!(o.duration > 0 && o.duration <= 3600)) throw InputError("--duration: must be in (0, 3600] seconds");
+  if (o.priority < 0 || o.priority > 99) throw InputError("--priority: must be in 0..99 (0: no real-time priority)");
+  make_out_dir(o.out);
+  const auto n = static_cast<std::size_t>(o.rate * o.duration);
+  std::vector<double> lateness(n);  // preallocated: the loop only stores
+  std::string refused;
+  // The loop runs in its own thread so the real-time settings do not stick to this one.
+  std::thread th([&] {
+    rt::PeriodicLoop loop({.rate_hz = o.rate, .priority = o.priority, .cpu = o.cpu, .lock_memory = true});
+    refused = loop.refused();
+    loop.start();
+    for (std::size_t i = 0; i < n; ++i) {
+      const auto t = loop.wait_next();
+      lateness[i] = static_cast<double>(t.wake_ns - t.deadline_ns) * 1e-3;
+      loop.end_compute();
+    }
+  });
+  th.join();
+  Percentiles a = percentiles(lateness);
+  const bool prio_refused = refused.find("priority") != std::string::npos || refused.find("SCHED_FIFO") != std::string::npos;
+
+  Json result = {{"rate_hz", o.rate}, {"duration_s", o.duration}, {"priority", prio_refused ? 0 : o.priority},
+                 {"plexus", pct_json(a)}};
+  if (!refused.empty()) result["refused"] = refused;
+  Percentiles b;
+  std::vector<double> hist;
+  bool have_cyclictest = false;
+  if (!o.no_cyclictest) {
+    const std::string ct = find_program("cyclictest");
+    if (ct.empty()) {
+      std::fprintf(stderr, "plexus latency loop: warning: cyclictest not found (install rt-tests); plexus only\n");
+    } else {
+      const int prio = prio_refused ? 0 : o.priority;
+      const int interval_us = static_cast<int>(std::lround(1e6 / o.rate));
+      std::vector<std::string> args = {"-q", "-t1", "-p" + std::to_string(prio), "-i" + std::to_string(interval_us),
+                                       "-D" + std::to_string(static_cast<int>(std::ceil(o.duration))), "-m", "-h2000"};
+      if (o.cpu >= 0) args.push_back("-a" + std::to_string(o.cpu));
+      std::string out;
+      int rc = run_program(ct, args, out, {}, true);
+      if (rc != 0 && prio > 0) {
+        std::fprintf(stderr, "plexus latency loop: warning: cyclictest refused priority %d; running it without\n", prio);
+        out.clear();
+        args[2] = "-p0";
+        rc = run_program(ct, args, out, {}, true);
+      }
+      hist.assign(2001, 0.0);
+      std::istringstream in(out);
+      static const std::regex bucket(R"(^(\d+)\s+(\d+)\s*$)"), overflow(R"(# Histogram Overflows:\s*(\d+))"),
+          maxl(R"(# Max Latencies:\s*(\d+))");
+      double ct_max = 0, overflows = 0;
+      for (std::string line; std::getline(in, line);) {
+        std::smatch m;
+        if (std::regex_match(line, m, bucket)) {
+          const auto k = static_cast<std::size_t>(std::stoul(m[1]));
+          if (k < hist.size()) hist[k] += std::stod(m[2]);
+        } else if (std::regex_search(line, m, overflow)) {
+          overflows = std::stod(m[1]);
+        } else if (std::regex_search(line, m, maxl)) {
+          ct_max = std::stod(m[1]);
+        }
+      }
+      hist.back() += overflows;
+      b = histogram_percentiles(hist);
+      if (ct_max > 0) b.max = ct_max;
+      have_cyclictest = rc == 0 && b.count > 0;
+      if (!have_cyclictest)
+        std::fprintf(stderr, "plexus latency loop: warning: cyclictest gave no histogram (exit %d)\n", rc);
+      else
+        result["cyclictest"] = pct_json(b);
+    }
+  }
+  if (have_cyclictest)
+    result["ratio"] = {{"mean", a.mean / b.mean}, {"p50", a.p50 / std::max(b.p50, 1.0)}, {"p99", a.p99 / std::max(b.p99, 1.0)},
+                       {"max", a.max / b.max}};
+  if (!o.out.empty()) {
+    std::vector<Series> series = {{"plexus PeriodicLoop", lateness, false}};
+    if (have_cyclictest) series.push_back({"cyclictest", hist, true});
+    const std::string png = o.out + "/loop_" + std::to_string(static_cast<int>(o.rate)) + "hz.png";
+    write_histogram_png(png, "wake-up lateness at " + std::to_string(static_cast<int>(o.rate)) + " Hz", series);
+    result["png"] = png;
+  }
+  if (o.json) {
+    std::printf("%s\n", result.dump().c_str());
+    return 0;
+  }
+  std::printf("plexus latency loop: %g Hz for %g s, SCHED_FIFO priority %d%s\n", o.rate, o.duration,
+              prio_refused ? 0 : o.priority, refused.empty() ? "" : (" (refused: " + refused + ")").c_str());
+  if (have_cyclictest) {
+    print_compare("wake-up lateness", a, b, "cyclictest", true);
+    std::printf("(cyclictest percentiles from its 1 us histogram)\n");
+  } else {
+    print_compare("wake-up lateness", a, Percentiles{}, "-", false);
+  }
+  if (result.contains("png")) std::printf("histogram: %s\n", result["png"].get<std::string>().c_str());
+  return 0;
+}
+
+// ---------------------------------------------------------------------------------------
+// pipeline
+
+struct PipeOpts {
+  std::string run, topics, out, end_topic;
+  bool live = false, json = false;
+  DdsOptions dds;
+  double duration = 5;
+};
+
+int run_pipeline(const PipeOpts& o) {
+  std::string file = o.run;
+  bool temp = false;
+  if (o.live) {
+    rt::parse_vendor(o.dds.dds);
+    if (!(o.duration > 0)) throw InputError("--duration: must be > 0 seconds");
+    file = temp_path("pipeline") + ".sqlite";
+    temp = true;
+    std::vector<std::string> args = {"record", "-o", file, "--dds", o.dds.dds, "--domain", std::to_string(o.dds.domain),
+                                     "--duration", std::to_string(o.duration)};
+    if (!o.topics.empty()) args.insert(args.end(), {"--topics", o.topics});
+    std::string out;
+    const int rc = run_capture("plexus", args, out);
+    if (rc != 0) throw std::runtime_error("live recording failed (plexus record exit " + std::to_string(rc) + ")");
+  } else if (o.run.empty()) {
+    throw InputError("RUN: a recording file (plexus record) is required, or --live");
+  }
+  make_out_dir(o.out);
+  RecordingReader rec(file);
+  struct T {
+    std::string name;
+    std::vector<double> to_publish, transport, to_receive;
+    std::map<int64_t, int64_t> publish_by_origin;
+  };
+  std::map<int64_t, T> topics;
+  const auto wanted = split_list(o.topics);
+  for (const auto& t : rec.topics())
+    if (o.live || wanted.empty() || std::find(wanted.begin(), wanted.end(), t.name) != wanted.end()) topics[t.id].name = t.name;
+  for (const auto& w : wanted)
+    if (!o.live && std::none_of(topics.begin(), topics.end(), [&](const auto& kv) { return kv.second.name == w; }))
+      throw InputError("--topics: topic '" + w + "' is not in " + file);
+  rec.for_each([&](const RecordedMessage& m) {
+    auto it = topics.find(m.topic_id);
+    if (it == topics.end() || m.origin_time_ns == 0 || m.publish_time_ns == 0) return true;
+    auto& t = it->second;
+    t.to_publish.push_back(static_cast<double>(m.publish_time_ns - m.origin_time_ns) * 1e-3);
+    t.transport.push_back(static_cast<double>(m.receive_time_ns - m.publish_time_ns) * 1e-3);
+    t.to_receive.push_back(static_cast<double>(m.receive_time_ns - m.origin_time_ns) * 1e-3);
+    t.publish_by_origin[m.origin_time_ns] = m.publish_time_ns;
+    return true;
+  });
+  if (temp) fs::remove(file);
+  // The chain: topics ordered by how long after the origin they are published.
+  std::vector<T*> chain;
+  for (auto& [id, t] : topics)
+    if (!t.to_publish.empty()) chain.push_back(&t);
+  if (chain.empty()) throw std::runtime_error(file + ": no samples with header times");
+  std::map<const T*, double> median;
+  for (auto* t : chain) {
+    auto c = t->to_publish;
+    median[t] = percentiles(c).p50;
+  }
+  std::stable_sort(chain.begin(), chain.end(), [&](const T* a, const T* b) { return median[a] < median[b]; });
+  if (!o.end_topic.empty()) {
+    auto it = std::find_if(chain.begin(), chain.end(), [&](const T* t) { return t->name == o.end_topic; });
+    if (it == chain.end()) throw InputError("--end: topic '" + o.end_topic + "' has no samples with header times");
+    chain.erase(it + 1, chain.end());
+  }
+  Json result = {{"run", o.live ? "live" : o.run}, {"topics", Json::array()}, {"hops", Json::array()}};
+  std::vector<Series> series;
+  if (!o.json)
+    std::printf("%-32s %8s | %-26s | %-26s | %-26s\n%-32s %8s | %8s %8s %8s | %8s %8s %8s | %8s %8s %8s\n", "topic (chain order)",
+                "samples", "origin -> publish (us)", "publish -> receive (us)", "origin -> receive (us)", "", "", "p50", "p99",
+                "max", "p50", "p99", "max", "p50", "p99", "max");
+  for (auto* t : chain) {
+    auto a = percentiles(t->to_publish), b = percentiles(t->transport), c = percentiles(t->to_receive);
+    result["topics"].push_back({{"topic", t->name}, {"origin_to_publish", pct_json(a)}, {"publish_to_receive", pct_json(b)},
+                                {"origin_to_receive", pct_json(c)}});
+    if (!o.json)
+      std::printf("%-32s %8zu | %8.1f %8.1f %8.1f | %8.1f %8.1f %8.1f | %8.1f %8.1f %8.1f\n", t->name.c_str(), a.count, a.p50,
+                  a.p99, a.max, b.p50, b.p99, b.max, c.p50, c.p99, c.max);
+  }
+  // Hops: publish of topic k+1 minus publish of topic k, for samples of the same chain (same origin time).
+  for (std::size_t k = 0; k + 1 < chain.size(); ++k) {
+    std::vector<double> d;
+    for (const auto& [origin, pub] : chain[k + 1]->publish_by_origin) {
+      auto it = chain[k]->publish_by_origin.find(origin);
+      if (it != chain[k]->publish_by_origin.end()) d.push_back(static_cast<double>(pub - it->second) * 1e-3);
+    }
+    if (d.empty()) continue;
+    series.push_back({chain[k]->name + " -> " + chain[k + 1]->name, d, false});
+    auto p = percentiles(d);
+    result["hops"].push_back({{"from", chain[k]->name}, {"to", chain[k + 1]->name}, {"latency", pct_json(p)}});
+    if (!o.json)
+      std::printf("hop %s -> %s: p50 %.1f us  p90 %.1f us  p99 %.1f us  max %.1f us  (%zu chains)\n", chain[k]->name.c_str(),
+                  chain[k + 1]->name.c_str(), p.p50, p.p90, p.p99, p.max, p.count);
+  }
+  auto e2e_values = chain.back()->to_receive;
+  series.push_back({"end to end (origin -> " + chain.back()->name + " received)", e2e_values, false});
+  auto e2e = percentiles(e2e_values);
+  result["end_to_end"] = {{"topic", chain.back()->name}, {"latency", pct_json(e2e)}};
+  if (!o.out.empty()) {
+    const std::string png = o.out + "/pipeline.png";
+    write_histogram_png(png, "pipeline latency", series);
+    result["png"] = png;
+  }
+  if (o.json) {
+    std::printf("%s\n", result.dump().c_str());
+  } else {
+    std::printf("end to end (origin -> %s received): p50 %.1f us  p90 %.1f us  p99 %.1f us  max %.1f us\n",
+                chain.back()->name.c_str(), e2e.p50, e2e.p90, e2e.p99, e2e.max);
+    if (result.contains("png")) std::printf("histogram: %s\n", result["png"].get<std::string>().c_str());
+  }
+  return 0;
+}
+
+}  // namespace
+
+Command add_latency_command(CLI::App& root) {
+  Command c;
+  c.app = root.add_subcommand("latency", "Latency measurements: pingpong (vs the vendor's tool), loop (vs cyclictest), pipeline");
+  c.app->require_subcommand(1);
+
+  auto po = std::make_shared<PingOpts>();
+  auto* ping = c.app->add_subcommand("pingpong", "Round-trip latency through plexus and through the vendor's own baseline");
+  ping->add_option("--dds", po->dds, "vendor of the ping side (and of the baseline)")->capture_default_str();
+  ping->add_option("--peer-dds", po->peer_dds, "vendor of the pong side (default: --dds)");
+  ping->add_option("--profile", po->profile, "QoS profile")->capture_default_str();
+  ping->add_option("--qos-file", po->qos_file, "QoS profiles file (default: deploy/qos.yaml)");
+  ping->add_option("--size", po->size, "payload bytes (0..65536)")->capture_default_str();
+  ping->add_option("--rate", po->rate, "pings per second (0: back to back)")->capture_default_str();
+  ping->add_option("--count", po->count, "measured round trips")->capture_default_str();
+  ping->add_option("--domain", po->domain, "DDS domain (the baseline uses domain + 1)")->capture_default_str();
+  ping->add_option("--out", po->out, "directory for the PNG histogram and JSON");
+  ping->add_flag("--no-baseline", po->no_baseline, "skip the vendor baseline");
+  ping->add_flag("--json", po->json, "one JSON object");
+
+  auto lo = std::make_shared<LoopOpts>();
+  auto* loop = c.app->add_subcommand("loop", "Wake-up lateness of a plexus periodic loop, and of cyclictest at the same settings");
+  loop->add_option("--rate", lo->rate, "loop rate, Hz")->capture_default_str();
+  loop->add_option("--duration", lo->duration, "seconds")->capture_default_str();
+  loop->add_option("--priority", lo->priority, "SCHED_FIFO priority (0: none)")->capture_default_str();
+  loop->add_option("--cpu", lo->cpu, "pin to this CPU (-1: no affinity)")->capture_default_str();
+  loop->add_option("--out", lo->out, "directory for the PNG histogram");
+  loop->add_flag("--no-cyclictest", lo->no_cyclictest, "skip the cyclictest baseline");
+  loop->add_flag("--json", lo->json, "one JSON object");
+
+  auto pp = std::make_shared<PipeOpts>();
+  auto* pipe = c.app->add_subcommand("pipeline", "Per-hop and end-to-end latency from header times (recording or live)");
+  pipe->add_option("run", pp->run, "recording file (plexus record)");
+  pipe->add_flag("--live", pp->live, "record the live system for --duration first");
+  pipe->add_option("--topics", pp->topics, "comma-separated topics (default: all)");
+  pipe->add_option("--end", pp->end_topic, "the chain's last topic (default: the latest-published one)");
+  pipe->add_option("--duration", pp->duration, "--live: seconds to record")->capture_default_str();
+  add_dds_options(pipe, pp->dds);
+  pipe->add_option("--out", pp->out, "directory for the PNG histogram");
+  pipe->add_flag("--json", pp->json, "one JSON object");
+
+  c.run = [po, lo, pp, ping, loop, pipe] {
+    if (ping->parsed()) return run_pingpong(*po);
+    if (loop->parsed()) return run_loop(*lo);
+    if (pipe->parsed()) return run_pipeline(*pp);
+    return 2;
+  };
+  return c;
+}
+
+}  // namespace plexus::cli

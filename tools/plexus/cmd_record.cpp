@@ -1,0 +1,163 @@
+// plexus record -o FILE [--topics a,b]: records topics to a SQLite file (see recording.hpp),
+// with the receive time and the header times of every sample and its CDR bytes.
+//
+// One reader thread per topic waits on its reader and takes each sample as it arrives (so
+// the receive time is the arrival, not a polling tick); the main thread writes batches in
+// one transaction every 100 ms.
+#include <cstdio>
+#include <map>
+#include <mutex>
+#include <thread>
+
+#include "command.hpp"
+#include "plexus/base/clock.hpp"
+#include "plexus/base/input_error.hpp"
+#include "plexus/msg/header.h"
+#include "plexus/msg/messages.hpp"
+#include "recording.hpp"
+#include "topic_discovery.hpp"
+
+namespace plexus::cli {
+namespace {
+
+struct RecordOpts {
+  DdsOptions dds;
+  std::string out, topics, qos_file, profile;
+  double wait = 1.5, duration = 0;
+  int count = 0;
+};
+
+struct TopicReader {
+  std::string name;
+  const msg::TypeSupport* ts = nullptr;
+  int64_t id = 0;
+  std::unique_ptr<rt::ReaderBackend> reader;
+};
+
+int run_record(const RecordOpts& o) {
+  rt::parse_vendor(o.dds.dds);
+  if (o.out.empty()) throw InputError("-o/--output: a recording file is required");
+  if (!(o.duration >= 0)) throw InputError("--duration: must be >= 0 seconds");
+  if (o.count < 0) throw InputError("--count: must be >= 0");
+  if (!(o.wait >= 0 && o.wait <= 600)) throw InputError("--wait: must be in 0..600 seconds");
+  if (!o.profile.empty()) rt::QosProfiles::load(o.qos_file.empty() ? rt::default_qos_file() : o.qos_file).get(o.profile);
+  RecordingWriter file(o.out);  // file errors first: exit 2 before any DDS work
+  install_stop_handler();
+  auto p = make_participant(o.dds, "plexus_record");
+
+  // Which topics: the given ones (waiting for their writers), or every topic with a writer.
+  std::vector<std::string> wanted = split_list(o.topics);
+  std::map<std::string, std::vector<rt::DiscoveredEndpoint>> writers;
+  const int64_t end_wait = monotonic_ns() + static_cast<int64_t>(o.wait * 1e9);
+  for (;;) {
+    writers.clear();
+    for (const auto& e : p->discovered_endpoints())
+      if (!e.local && e.is_writer) writers[e.topic].push_back(e);
+    bool all = !wanted.empty();
+    for (const auto& t : wanted) all = all && writers.count(t);
+    if (all || g_stop || monotonic_ns() >= end_wait) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  if (wanted.empty())
+    for (const auto& [t, w] : writers) wanted.push_back(t);
+  if (wanted.empty()) throw std::runtime_error("no topic with a writer discovered on domain " + std::to_string(o.dds.domain) +
+                                               " in " + std::to_string(o.wait).substr(0, 4) + " s");
+  std::vector<TopicReader> readers;
+  for (const auto& t : wanted) {
+    auto it = writers.find(t);
+    if (it == writers.end()) throw std::runtime_error("--topics: no writer on topic '" + t + "' was discovered");
+    const msg::TypeSupport* ts = msg::find_type_support(it->second.front().type_name);
+    if (!ts) {
+      std::fprintf(stderr, "plexus record: skipping '%s': type '%s' unknown to this build\n", t.c_str(),
+                   it->second.front().type_name.c_str());
+      continue;
+    }
+    std::vector<rt::EndpointQos> qos;
+    for (const auto& w : it->second) qos.push_back(w.qos);
+    TopicReader r;
+    r.name = t;
+    r.ts = ts;
+    r.id = file.add_topic(t, ts->type_name, qos_to_json(it->second.front().qos).dump());
+    r.reader = p->make_reader(*ts, t, subscriber_qos(o.qos_file, o.profile, qos, 1000));
+    readers.push_back(std::move(r));
+  }
+
+  std::mutex mu;
+  std::vector<RecordedMessage> pending, batch;
+  std::atomic<uint64_t> total{0};
+  std::atomic<bool> done{false};
+  std::vector<std::thread> threads;
+  for (auto& r : readers) {
+    threads.emplace_back([&, rp = &r] {
+      void* sample = rp->ts->create();
+      std::vector<unsigned char> buf(rp->ts->max_cdr_size);
+      rt::SampleMeta meta;
+      while (!done && !g_stop) {
+        if (!rp->reader->wait(50'000'000)) continue;
+        while (rp->reader->take(sample, &meta)) {
+          RecordedMessage m;
+          m.topic_id = rp->id;
+          m.receive_time_ns = meta.receive_time_ns;
+          if (rp->ts->header) {
+            const msg::StampHeader& h = *rp->ts->header(sample);
+            m.seq_num = static_cast<int64_t>(h.seq_num());
+            m.data_time_ns = h.data_time_ns();
+            m.origin_time_ns = h.origin_time_ns();
+            m.publish_time_ns = h.publish_time_ns();
+          }
+          const std::size_t n = rp->ts->serialize(sample, buf.data(), buf.size());
+          m.cdr.assign(buf.begin(), buf.begin() + static_cast<std::ptrdiff_t>(n));
+          std::lock_guard lk(mu);
+          pending.push_back(std::move(m));
+          if (o.count > 0 && ++total >= static_cast<uint64_t>(o.count)) done = true;
+        }
+      }
+      rp->ts->destroy(sample);
+    });
+  }
+  std::fprintf(stderr, "plexus record: recording %zu topic(s) to %s\n", readers.size(), o.out.c_str());
+  const int64_t end = o.duration > 0 ? monotonic_ns() + static_cast<int64_t>(o.duration * 1e9) : INT64_MAX;
+  uint64_t written = 0;
+  auto flush = [&] {
+    {
+      std::lock_guard lk(mu);
+      batch.swap(pending);
+    }
+    if (o.count > 0 && written + batch.size() > static_cast<uint64_t>(o.count))
+      batch.resize(static_cast<std::size_t>(static_cast<uint64_t>(o.count) - written));
+    file.insert(batch);
+    written += batch.size();
+    batch.clear();
+  };
+  while (!done && !g_stop && monotonic_ns() < end) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    flush();
+  }
+  done = true;
+  for (auto& t : threads) t.join();
+  flush();
+  readers.clear();
+  std::printf("recorded %llu samples from %zu topic(s) to %s\n", static_cast<unsigned long long>(written), wanted.size(),
+              o.out.c_str());
+  return 0;
+}
+
+}  // namespace
+
+Command add_record_command(CLI::App& root) {
+  auto o = std::make_shared<RecordOpts>();
+  Command c;
+  c.app = root.add_subcommand("record", "Record topics to a SQLite file (CDR + receive and header times)");
+  add_dds_options(c.app, o->dds);
+  c.app->add_option("-o,--output", o->out, "recording file to create (replaced if it exists)")->required();
+  c.app->add_option("--topics", o->topics, "comma-separated topics (default: every topic with a writer)");
+  c.app->add_option("--duration", o->duration, "stop after S seconds (0: until Ctrl-C or --count)");
+  c.app->add_option("--count", o->count, "stop after N samples in total (0: no limit)");
+  c.app->add_option("--wait", o->wait, "seconds to wait for the topics' writers to be discovered")->capture_default_str();
+  c.app->add_option("--qos", o->profile, "subscribe with this QoS profile (default: one matching every writer)");
+  c.app->add_option("--qos-file", o->qos_file, "QoS profiles file (default: deploy/qos.yaml)");
+  c.run = [o] { return run_record(*o); };
+  return c;
+}
+
+}  // namespace plexus::cli

@@ -1,0 +1,216 @@
+// plexus replay FILE: publishes a recording (plexus record) again, at the recorded speed
+// (--rate-scale), at a fixed rate, as fast as possible, or one step per clock tick
+// (--lockstep). Replayed data stands in for the simulator: same topics, same types.
+//
+// Header times: by default seq_num and data_time_ns are kept and origin/publish times are
+// shifted by (replay start - recording start), so hop latencies downstream stay
+// meaningful; --verbatim publishes the recorded samples byte for byte.
+#include <time.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <map>
+#include <thread>
+
+#include "command.hpp"
+#include "plexus/base/clock.hpp"
+#include "plexus/base/input_error.hpp"
+#include "plexus/msg/messages.hpp"
+#include "recording.hpp"
+#include "topic_discovery.hpp"
+
+namespace plexus::cli {
+namespace {
+
+struct ReplayOpts {
+  DdsOptions dds;
+  std::string file, topics, qos_file, profile, clock_topic = "lockstep/clock";
+  double rate_scale = 1.0, rate = 0, wait = 2.0, linger = 1.0;
+  bool fast = false, lockstep = false, verbatim = false, summary = false, json = false;
+};
+
+void sleep_until(int64_t t) {
+  timespec ts{static_cast<time_t>(t / 1'000'000'000), static_cast<long>(t % 1'000'000'000)};
+  while (clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &ts, nullptr) == EINTR && !g_stop) {
+  }
+}
+
+int run_summary(const RecordingReader& rec, bool json) {
+  struct Acc {
+    uint64_t count = 0, digest = 1469598103934665603ull;
+    int64_t first = 0, last = 0;
+  };
+  std::map<int64_t, Acc> acc;
+  rec.for_each([&](const RecordedMessage& m) {
+    auto& a = acc[m.topic_id];
+    if (a.count++ == 0) a.first = m.receive_time_ns;
+    a.last = m.receive_time_ns;
+    for (unsigned char b : m.cdr) a.digest = (a.digest ^ b) * 1099511628211ull;  // FNV-1a over the CDR bytes
+    return true;
+  });
+  nlohmann::ordered_json j = nlohmann::ordered_json::array();
+  for (const auto& t : rec.topics()) {
+    const auto& a = acc[t.id];
+    char digest[17];
+    std::snprintf(digest, sizeof digest, "%016llx", static_cast<unsigned long long>(a.digest));
+    if (json)
+      j.push_back({{"topic", t.name}, {"type", t.type}, {"count", a.count}, {"digest", digest},
+                   {"span_s", static_cast<double>(a.last - a.first) * 1e-9}});
+    else
+      std::printf("%-40s %-36s %8llu samples  %.3f s  digest %s\n", t.name.c_str(), t.type.c_str(),
+                  static_cast<unsigned long long>(a.count), static_cast<double>(a.last - a.first) * 1e-9, digest);
+  }
+  if (json) std::printf("%s\n", j.dump().c_str());
+  return 0;
+}
+
+int run_replay(const ReplayOpts& o) {
+  rt::parse_vendor(o.dds.dds);
+  const int modes = (o.fast ? 1 : 0) + (o.lockstep ? 1 : 0) + (o.rate > 0 ? 1 : 0);
+  if (modes > 1) throw InputError("--fast, --rate and --lockstep: choose one");
+  if (!(o.rate_scale > 0 && o.rate_scale <= 1000)) throw InputError("--rate-scale: must be in (0, 1000]");
+  if (!(o.rate >= 0 && o.rate <= 1e6)) throw InputError("--rate: must be in (0, 1e6] Hz");
+  if (!o.profile.empty()) rt::QosProfiles::load(o.qos_file.empty() ? rt::default_qos_file() : o.qos_file).get(o.profile);
+  RecordingReader rec(o.file);
+  if (o.summary) return run_summary(rec, o.json);
+  install_stop_handler();
+
+  const auto wanted = split_list(o.topics);
+  for (const auto& w : wanted) {
+    bool found = false;
+    for (const auto& t : rec.topics()) found = found || t.name == w;
+    if (!found) throw InputError("--topics: topic '" + w + "' is not in " + o.file);
+  }
+  auto p = make_participant(o.dds, "plexus_replay");
+  struct Out {
+    const msg::TypeSupport* ts = nullptr;
+    std::unique_ptr<rt::WriterBackend> writer;
+    void* sample = nullptr;
+  };
+  std::map<int64_t, Out> outs;
+  for (const auto& t : rec.topics()) {
+    if (!wanted.empty() && std::find(wanted.begin(), wanted.end(), t.name) == wanted.end()) continue;
+    const msg::TypeSupport* ts = msg::find_type_support(t.type);
+    if (!ts) throw InputError(o.file + ": topic '" + t.name + "' has type '" + t.type + "', unknown to this build");
+    rt::QosProfile q;
+    if (!o.profile.empty()) {
+      q = rt::QosProfiles::load(o.qos_file.empty() ? rt::default_qos_file() : o.qos_file).get(o.profile);
+    } else {
+      nlohmann::json qj = nlohmann::json::object();
+      try {
+        if (!t.qos_json.empty()) qj = nlohmann::json::parse(t.qos_json);
+      } catch (const nlohmann::json::exception&) {
+      }
+      q = rt::writer_qos_like(qos_from_json(qj), 64);
+      if (t.qos_json.empty()) q.reliability = rt::QosProfile::Reliability::reliable;
+    }
+    Out out;
+    out.ts = ts;
+    out.writer = p->make_writer(*ts, t.name, q);
+    out.sample = ts->create();
+    outs[t.id] = std::move(out);
+  }
+  std::vector<RecordedMessage> msgs;
+  rec.for_each([&](const RecordedMessage& m) {
+    if (outs.count(m.topic_id)) msgs.push_back(m);
+    return true;
+  });
+  if (msgs.empty()) throw std::runtime_error(o.file + ": no samples to replay");
+
+  // Wait (bounded) for subscribers, so the first samples are not published to nobody.
+  const int64_t wait_end = monotonic_ns() + static_cast<int64_t>(o.wait * 1e9);
+  for (;;) {
+    bool all = true;
+    for (const auto& [id, out] : outs) all = all && out.writer->matched_count() > 0;
+    if (all || g_stop || monotonic_ns() >= wait_end) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  std::this_thread::sleep_for(std::chrono::milliseconds(100));  // let matching settle both ways
+
+  std::unique_ptr<rt::ReaderBackend> clock;
+  void* tick = nullptr;
+  const auto& clock_ts = msg::type_support<msg::ClockStep>();
+  if (o.lockstep) {
+    rt::QosProfile cq;
+    cq.reliability = rt::QosProfile::Reliability::reliable;
+    cq.depth = 64;
+    clock = p->make_reader(clock_ts, o.clock_topic, cq);
+    tick = clock_ts.create();
+  }
+
+  const int64_t start_mono = monotonic_ns();
+  const int64_t shift = wall_time_ns() - msgs.front().receive_time_ns;
+  const int64_t t0 = msgs.front().receive_time_ns;
+  uint64_t published = 0, failed = 0;
+  std::size_t i = 0;
+  while (i < msgs.size() && !g_stop) {
+    // The group published now: one sample, or (lockstep) every sample sharing a data time.
+    std::size_t group_end = i + 1;
+    if (o.lockstep) {
+      while (group_end < msgs.size() && msgs[group_end].data_time_ns == msgs[i].data_time_ns) ++group_end;
+      bool got = false;
+      while (!got && !g_stop) {
+        if (clock->wait(50'000'000)) got = clock->take(tick, nullptr);
+      }
+      if (!got) break;
+    } else if (o.rate > 0) {
+      sleep_until(start_mono + static_cast<int64_t>(static_cast<double>(i) * 1e9 / o.rate));
+    } else if (!o.fast) {
+      sleep_until(start_mono + static_cast<int64_t>(static_cast<double>(msgs[i].receive_time_ns - t0) / o.rate_scale));
+    }
+    for (; i < group_end; ++i) {
+      const auto& m = msgs[i];
+      Out& out = outs[m.topic_id];
+      if (!out.ts->deserialize(m.cdr.data(), m.cdr.size(), out.sample)) {
+        ++failed;
+        continue;
+      }
+      if (!o.verbatim && out.ts->header) {
+        msg::StampHeader& h = *out.ts->header(out.sample);
+        if (h.origin_time_ns() != 0) h.origin_time_ns(h.origin_time_ns() + shift);
+        h.publish_time_ns(wall_time_ns());
+      }
+      out.writer->write(out.sample) ? ++published : ++failed;
+    }
+  }
+  std::this_thread::sleep_for(std::chrono::milliseconds(static_cast<int64_t>(o.linger * 1000)));
+  if (tick) clock_ts.destroy(tick);
+  clock.reset();
+  for (auto& [id, out] : outs) {
+    out.writer.reset();
+    out.ts->destroy(out.sample);
+  }
+  std::printf("replayed %llu of %zu samples from %s in %.3f s%s\n", static_cast<unsigned long long>(published), msgs.size(),
+              o.file.c_str(), static_cast<double>(monotonic_ns() - start_mono) * 1e-9,
+              failed ? (" (" + std::to_string(failed) + " failed)").c_str() : "");
+  return failed == 0 && published == msgs.size() ? 0 : 1;
+}
+
+}  // namespace
+
+Command add_replay_command(CLI::App& root) {
+  auto o = std::make_shared<ReplayOpts>();
+  Command c;
+  c.app = root.add_subcommand("replay", "Publish a recording again (recorded speed, fixed rate, fast, or lockstep)");
+  add_dds_options(c.app, o->dds);
+  c.app->add_option("file", o->file, "recording written by plexus record")->required();
+  c.app->add_option("--topics", o->topics, "comma-separated topics (default: all recorded)");
+  c.app->add_option("--rate-scale", o->rate_scale, "speed relative to the recording (1: recorded speed)")->capture_default_str();
+  c.app->add_option("--rate", o->rate, "publish one sample every 1/HZ seconds instead");
+  c.app->add_flag("--fast", o->fast, "as fast as possible");
+  c.app->add_flag("--lockstep", o->lockstep,
+                  "one recorded step (the samples sharing a header data time) per ClockStep on --clock-topic");
+  c.app->add_option("--clock-topic", o->clock_topic, "clock topic for --lockstep")->capture_default_str();
+  c.app->add_flag("--verbatim", o->verbatim, "keep the recorded header times (byte-identical samples)");
+  c.app->add_option("--wait", o->wait, "seconds to wait for subscribers before starting")->capture_default_str();
+  c.app->add_option("--linger", o->linger, "seconds to keep the writers after the last sample")->capture_default_str();
+  c.app->add_option("--qos", o->profile, "publish with this QoS profile (default: the recorded writers' QoS)");
+  c.app->add_option("--qos-file", o->qos_file, "QoS profiles file (default: deploy/qos.yaml)");
+  c.app->add_flag("--summary", o->summary, "print the recording's topics, counts and CDR digests; publish nothing");
+  c.app->add_flag("--json", o->json, "--summary as JSON");
+  c.run = [o] { return run_replay(*o); };
+  return c;
+}
+
+}  // namespace plexus::cli

@@ -1,0 +1,27 @@
+// Running system programs (ddsperf, cyclictest, gnuplot) from plexus subcommands.
+#pragma once
+
+#include <sys/types.h>
+
+#include <string>
+#include <vector>
+
+namespace plexus::cli {
+
+/// Path of `name` on $PATH, or "" if it is not installed.
+std::string find_program(const std::string& name);
+
+/// Starts `path args...` with extra environment entries ("KEY=VALUE"), stdout and stderr
+/// to `log_file` (or inherited if empty). Returns the pid; throws std::runtime_error.
+pid_t spawn_program(const std::string& path, const std::vector<std::string>& args,
+                    const std::vector<std::string>& env = {}, const std::string& log_file = "");
+
+/// Runs `path args...` to completion with stdout (and stderr, if merge_stderr) captured.
+/// Returns the exit code (128+signal if killed).
+int run_program(const std::string& path, const std::vector<std::string>& args, std::string& out,
+                const std::vector<std::string>& env = {}, bool merge_stderr = false);
+
+/// Waits for pid; returns its exit code (128+signal if killed).
+int wait_program(pid_t pid);
+
+}  // namespace plexus::cli

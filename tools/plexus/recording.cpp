@@ -1,0 +1,156 @@
+#include "recording.hpp"
+
+#include <sqlite3.h>
+
+#include <filesystem>
+#include <stdexcept>
+
+#include "plexus/base/input_error.hpp"
+
+namespace plexus::cli {
+namespace {
+
+void exec(sqlite3* db, const char* sql, const std::string& path) {
+  char* err = nullptr;
+  if (sqlite3_exec(db, sql, nullptr, nullptr, &err) != SQLITE_OK) {
+    const std::string msg = err ? err : "unknown error";
+    sqlite3_free(err);
+    throw std::runtime_error(path + ": " + msg);
+  }
+}
+
+}  // namespace
+
+RecordingWriter::RecordingWriter(const std::string& path) : path_(path) {
+  std::error_code ec;
+  std::filesystem::remove(path, ec);
+  if (sqlite3_open_v2(path.c_str(), &db_, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE, nullptr) != SQLITE_OK) {
+    const std::string msg = db_ ? sqlite3_errmsg(db_) : "out of memory";
+    sqlite3_close(db_);
+    db_ = nullptr;
+    throw InputError(path + ": cannot create recording (" + msg + ")");
+  }
+  try {
+    exec(db_,
+         "PRAGMA synchronous=NORMAL;"
+         "CREATE TABLE meta(key TEXT PRIMARY KEY, value TEXT);"
+         "INSERT INTO meta VALUES('format', 'plexus-recording-1');"
+         "CREATE TABLE topics(id INTEGER PRIMARY KEY, name TEXT NOT NULL UNIQUE, type TEXT NOT NULL, qos TEXT);"
+         "CREATE TABLE messages(id INTEGER PRIMARY KEY, topic_id INTEGER NOT NULL REFERENCES topics(id),"
+         " receive_time_ns INTEGER NOT NULL, seq_num INTEGER, data_time_ns INTEGER, origin_time_ns INTEGER,"
+         " publish_time_ns INTEGER, cdr BLOB NOT NULL);",
+         path);
+  } catch (const std::runtime_error& e) {
+    sqlite3_close(db_);
+    db_ = nullptr;
+    throw InputError(path + ": cannot create recording (" + std::string(e.what()).substr(path.size() + 2) + ")");
+  }
+  sqlite3_prepare_v2(db_,
+                     "INSERT INTO messages(topic_id, receive_time_ns, seq_num, data_time_ns, origin_time_ns,"
+                     " publish_time_ns, cdr) VALUES(?,?,?,?,?,?,?)",
+                     -1, &insert_, nullptr);
+}
+
+RecordingWriter::~RecordingWriter() {
+  if (insert_) sqlite3_finalize(insert_);
+  if (db_) {
+    sqlite3_exec(db_, "CREATE INDEX IF NOT EXISTS messages_time ON messages(receive_time_ns)", nullptr, nullptr, nullptr);
+    sqlite3_close(db_);
+  }
+}
+
+int64_t RecordingWriter::add_topic(const std::string& name, const std::string& type, const std::string& qos_json) {
+  sqlite3_stmt* st = nullptr;
+  sqlite3_prepare_v2(db_, "INSERT INTO topics(name, type, qos) VALUES(?,?,?)", -1, &st, nullptr);
+  sqlite3_bind_text(st, 1, name.c_str(), -1, SQLITE_TRANSIENT);
+  sqlite3_bind_text(st, 2, type.c_str(), -1, SQLITE_TRANSIENT);
+  sqlite3_bind_text(st, 3, qos_json.c_str(), -1, SQLITE_TRANSIENT);
+  const int rc = sqlite3_step(st);
+  sqlite3_finalize(st);
+  if (rc != SQLITE_DONE) throw std::runtime_error(path_ + ": " + sqlite3_errmsg(db_));
+  return sqlite3_last_insert_rowid(db_);
+}
+
+void RecordingWriter::insert(const std::vector<RecordedMessage>& batch) {
+  if (batch.empty()) return;
+  exec(db_, "BEGIN", path_);
+  for (const auto& m : batch) {
+    sqlite3_bind_int64(insert_, 1, m.topic_id);
+    sqlite3_bind_int64(insert_, 2, m.receive_time_ns);
+    sqlite3_bind_int64(insert_, 3, m.seq_num);
+    sqlite3_bind_int64(insert_, 4, m.data_time_ns);
+    sqlite3_bind_int64(insert_, 5, m.origin_time_ns);
+    sqlite3_bind_int64(insert_, 6, m.publish_time_ns);
+    sqlite3_bind_blob(insert_, 7, m.cdr.data(), static_cast<int>(m.cdr.size()), SQLITE_STATIC);
+    if (sqlite3_step(insert_) != SQLITE_DONE) {
+      const std::string msg = sqlite3_errmsg(db_);
+      sqlite3_reset(insert_);
+      sqlite3_exec(db_, "ROLLBACK", nullptr, nullptr, nullptr);
+      throw std::runtime_error(path_ + ": " + msg);
+    }
+    sqlite3_reset(insert_);
+  }
+  exec(db_, "COMMIT", path_);
+}
+
+RecordingReader::RecordingReader(const std::string& path) : path_(path) {
+  if (!std::filesystem::is_regular_file(path)) throw InputError(path + ": no such file");
+  if (sqlite3_open_v2(path.c_str(), &db_, SQLITE_OPEN_READONLY, nullptr) != SQLITE_OK) {
+    sqlite3_close(db_);
+    db_ = nullptr;
+    throw InputError(path + ": cannot open recording");
+  }
+  sqlite3_stmt* st = nullptr;
+  if (sqlite3_prepare_v2(db_, "SELECT id, name, type, IFNULL(qos, '') FROM topics ORDER BY id", -1, &st, nullptr) !=
+      SQLITE_OK) {
+    sqlite3_close(db_);
+    db_ = nullptr;
+    throw InputError(path + ": not a plexus recording (no topics table)");
+  }
+  while (sqlite3_step(st) == SQLITE_ROW) {
+    RecordedTopic t;
+    t.id = sqlite3_column_int64(st, 0);
+    t.name = reinterpret_cast<const char*>(sqlite3_column_text(st, 1));
+    t.type = reinterpret_cast<const char*>(sqlite3_column_text(st, 2));
+    t.qos_json = reinterpret_cast<const char*>(sqlite3_column_text(st, 3));
+    topics_.push_back(std::move(t));
+  }
+  sqlite3_finalize(st);
+}
+
+RecordingReader::~RecordingReader() {
+  if (db_) sqlite3_close(db_);
+}
+
+int64_t RecordingReader::message_count() const {
+  sqlite3_stmt* st = nullptr;
+  int64_t n = 0;
+  if (sqlite3_prepare_v2(db_, "SELECT COUNT(*) FROM messages", -1, &st, nullptr) == SQLITE_OK && sqlite3_step(st) == SQLITE_ROW)
+    n = sqlite3_column_int64(st, 0);
+  sqlite3_finalize(st);
+  return n;
+}
+
+void RecordingReader::for_each(const std::function<bool(const RecordedMessage&)>& fn) const {
+  sqlite3_stmt* st = nullptr;
+  if (sqlite3_prepare_v2(db_,
+                         "SELECT topic_id, receive_time_ns, seq_num, data_time_ns, origin_time_ns, publish_time_ns, cdr"
+                         " FROM messages ORDER BY receive_time_ns, id",
+                         -1, &st, nullptr) != SQLITE_OK)
+    throw InputError(path_ + ": not a plexus recording (no messages table)");
+  RecordedMessage m;
+  while (sqlite3_step(st) == SQLITE_ROW) {
+    m.topic_id = sqlite3_column_int64(st, 0);
+    m.receive_time_ns = sqlite3_column_int64(st, 1);
+    m.seq_num = sqlite3_column_int64(st, 2);
+    m.data_time_ns = sqlite3_column_int64(st, 3);
+    m.origin_time_ns = sqlite3_column_int64(st, 4);
+    m.publish_time_ns = sqlite3_column_int64(st, 5);
+    const auto* blob = static_cast<const unsigned char*>(sqlite3_column_blob(st, 6));
+    m.cdr.assign(blob, blob + sqlite3_column_bytes(st, 6));
+    if (!fn(m)) break;
+  }
+  sqlite3_finalize(st);
+}
+
+}  // namespace plexus::cli

@@ -1,0 +1,50 @@
+// Shared by `plexus topic`, `record`, `replay`: DDS options, waiting for discovery,
+// resolving a topic's type at run time, QoS as JSON, Ctrl-C.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <atomic>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "plexus/runtime/discovery.hpp"
+#include "plexus/runtime/participant.hpp"
+
+namespace plexus::cli {
+
+struct DdsOptions {
+  std::string dds = "fast";
+  int domain = 0;
+};
+void add_dds_options(CLI::App* app, DdsOptions& o);
+std::unique_ptr<rt::Participant> make_participant(const DdsOptions& o, const std::string& name);
+
+/// Set by SIGINT/SIGTERM once install_stop_handler() ran.
+extern std::atomic<bool> g_stop;
+void install_stop_handler();
+
+/// Remote endpoints (not this participant's), after waiting `wait_s` for discovery.
+std::vector<rt::DiscoveredEndpoint> remote_endpoints(const rt::Participant& p, double wait_s);
+
+/// The type of `topic`: `type_option` if given (InputError if unknown), else the type its
+/// writers announce, waiting up to `wait_s` for one to be discovered. Fills `writers` with
+/// the QoS of the writers seen. Throws InputError for an unknown --type, runtime_error if
+/// no writer shows up or the announced type is not one plexus knows.
+const msg::TypeSupport& resolve_topic_type(const rt::Participant& p, const std::string& topic, const std::string& type_option,
+                                           double wait_s, std::vector<rt::EndpointQos>* writers);
+
+/// The QoS profile for a subscriber: `profile` from the QoS file if given, else one that
+/// matches the discovered writers (see rt::reader_qos_matching).
+rt::QosProfile subscriber_qos(const std::string& qos_file, const std::string& profile,
+                              const std::vector<rt::EndpointQos>& writers, int32_t depth);
+
+nlohmann::ordered_json qos_to_json(const rt::EndpointQos& q);
+rt::EndpointQos qos_from_json(const nlohmann::json& j);
+
+/// Comma-separated list "a,b" -> {"a", "b"} (empty items dropped).
+std::vector<std::string> split_list(const std::string& s);
+
+}  // namespace plexus::cli
