@@ -73,17 +73,16 @@ bool AttitudeFilter::step(double torque, double acc_tilt, double gyro) {
     case AttitudeFilterKind::kUkfAugmented:
       // The augmented form draws its points at predict time; with no predict yet (first
       // sample) it draws them with zero process noise around the prior.
+    {
+      const Eigen::Matrix3d Qk = predict ? Q_ : Eigen::Matrix3d::Zero();
+      auto f = [&](const State& x, const Eigen::Vector3d& w) -> State { return predict ? f_aug(x, w) : State(x + w); };
       if (paper) {
-        const Eigen::Matrix3d Qk = predict ? Q_ : Eigen::Matrix3d::Zero();
-        auto f = [&](const State& x, const Eigen::Vector3d& w) -> State { return predict ? f_aug(x, w) : State(x + w); };
         if (!aug1_.predict(f, Qk, V1(Ra))) return false;
         return aug1_.update<1>(z1, [&](const State& x, const V1& v) -> V1 { return h1(x) + v; });
-      } else {
-        const Eigen::Matrix3d Qk = predict ? Q_ : Eigen::Matrix3d::Zero();
-        auto f = [&](const State& x, const Eigen::Vector3d& w) -> State { return predict ? f_aug(x, w) : State(x + w); };
-        if (!aug2_.predict(f, Qk, V2(Ra, Rg).asDiagonal().toDenseMatrix())) return false;
-        return aug2_.update<2>(z2, [&](const State& x, const V2& v) -> V2 { return h2(x) + v; });
       }
+      if (!aug2_.predict(f, Qk, V2(Ra, Rg).asDiagonal().toDenseMatrix())) return false;
+      return aug2_.update<2>(z2, [&](const State& x, const V2& v) -> V2 { return h2(x) + v; });
+    }
     case AttitudeFilterKind::kUkfAdditive:
       if (predict && !add_.predict(f_add, Q_)) return false;
       return paper ? add_.update<1>(z1, h1, V1(Ra)) : add_.update<2>(z2, h2, V2(Ra, Rg).asDiagonal().toDenseMatrix());

@@ -12,6 +12,7 @@
 namespace plexus::algorithms {
 namespace {
 
+using testing::error_of;
 using testing::LinearKalman;
 using testing::random_matrix;
 using testing::random_spd;
@@ -132,15 +133,6 @@ TEST(Ekf, RejectsNonFiniteInputsAndKeepsEstimate) {
   EXPECT_EQ(ekf.covariance(), Mat2::Identity());
 }
 
-template <class F>
-std::string error_of(F&& f) {
-  try {
-    f();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "";
-}
 
 TEST(Ekf, EveryValidationError) {
   EkfOptions o;

@@ -1,6 +1,9 @@
-// Test helper: the linear Kalman filter, written out plainly, as the reference that the
+// Test helpers: error_of(), and the linear Kalman filter, written out plainly, as the reference that the
 // EKF and both UKF forms must equal on a linear-Gaussian problem.
 #pragma once
+
+#include <stdexcept>
+#include <string>
 
 #include <Eigen/Core>
 #include <Eigen/LU>
@@ -41,6 +44,17 @@ template <int N>
 Eigen::Matrix<double, N, N> random_spd(Rng& rng, double scale = 1.0) {
   const Eigen::Matrix<double, N, N> A = random_matrix<N, N>(rng, scale);
   return A * A.transpose() + 0.05 * scale * scale * Eigen::Matrix<double, N, N>::Identity();
+}
+
+/// The std::invalid_argument message thrown by f(), "" if none.
+template <class F>
+std::string error_of(F&& f) {
+  try {
+    f();
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "";
 }
 
 }  // namespace plexus::algorithms::testing
