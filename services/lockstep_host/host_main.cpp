@@ -48,6 +48,7 @@ int main(int argc, char** argv) {
   CLI::App app{kAbout};
   std::string scenario_file, dds = "fast", qos_file, profile = "lockstep", log_level = "warn", selection, mode;
   int priority = 0, cpu = -1;
+  std::string interface_address = "127.0.0.1", peers = "127.0.0.1";
   std::vector<std::string> sets;
   int domain = 0;
   double timeout = 10.0;
@@ -67,6 +68,8 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"lockstep", "realtime"}));
   app.add_option("--priority", priority, "Realtime: SCHED_FIFO priority (0: normal scheduling)");
   app.add_option("--cpu", cpu, "Realtime: pin the loop to this CPU");
+  app.add_option("--interface", interface_address, "Address of the one interface DDS uses (default 127.0.0.1)");
+  app.add_option("--peers", peers, "Comma-separated unicast discovery peers (default 127.0.0.1)");
   app.add_option("--log-level", log_level, "trace, debug, info, warn, error");
   try {
     app.parse(argc, argv);
@@ -105,6 +108,9 @@ int main(int argc, char** argv) {
     po.vendor = rt::parse_vendor(dds);
     po.domain_id = domain;
     po.name = kName + std::string(selection.empty() ? "" : " " + selection);
+    po.network.interface_address = interface_address;
+    const auto peer_set = split(peers);
+    po.network.peers.assign(peer_set.begin(), peer_set.end());
     const auto profiles = rt::QosProfiles::load(qos_file.empty() ? rt::default_qos_file() : qos_file);
     auto participant = rt::Participant::create(po);
     const bool realtime = mode.empty() ? sc.clock == scenario::ClockMode::realtime : mode == "realtime";

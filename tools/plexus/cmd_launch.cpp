@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <fstream>
 #include <map>
+#include <set>
 #include <thread>
 
 #include <nlohmann/json.hpp>
@@ -37,7 +38,7 @@ struct LaunchOptions {
   std::string scenario;
   std::vector<std::string> sets;
   std::vector<std::string> vendors;  // PROCESS=VENDOR
-  std::string dds, out, qos_file;
+  std::string dds, out, qos_file, host;
   int domain = -1;
   double timeout = 10.0;
   bool json = false, quiet = false;
@@ -155,16 +156,33 @@ RealtimeResult run_realtime(scenario::Scenario& sc, rt::Participant& participant
   return res;
 }
 
-std::vector<Process> plan(const scenario::Scenario& sc) {
+/// The processes of a scenario: one plant_simulator per host for the robots on that host,
+/// one component_host per service. With `host` set, only those assigned to it (components
+/// without a host run on the first host).
+std::vector<Process> plan(const scenario::Scenario& sc, const std::string& host) {
+  const std::string first = sc.hosts.empty() ? "" : sc.hosts.front();
+  auto here = [&](const std::string& h) { return host.empty() || (h.empty() ? first : h) == host; };
   std::vector<Process> procs;
-  bool any_physical = false;
+  std::map<std::string, std::string> robots_by_host;  // host -> "r1,r2"
   for (const auto& c : sc.components) {
-    if (c.kind == scenario::ComponentKind::plant || c.kind == scenario::ComponentKind::sensor)
-      any_physical = true;
-    else
+    if (!here(c.host)) continue;
+    if (c.kind == scenario::ComponentKind::plant) {
+      const std::string robot = c.component->name().substr(0, c.component->name().find('/'));
+      auto& list = robots_by_host[c.host];
+      list += (list.empty() ? "" : ",") + robot;
+    } else if (c.kind != scenario::ComponentKind::sensor) {
       procs.push_back({c.component->name(), "component_host", {"--components", c.component->name()}, "", 0});
+    }
   }
-  if (any_physical) procs.insert(procs.begin(), Process{"plant_simulator", "plant_simulator", {}, "", 0});
+  std::set<std::string> robot_hosts;  // over the whole scenario, so names agree on every host
+  for (const auto& c : sc.components)
+    if (c.kind == scenario::ComponentKind::plant) robot_hosts.insert(c.host);
+  std::vector<Process> sims;
+  for (const auto& [h, robots] : robots_by_host) {
+    const std::string name = robot_hosts.size() == 1 ? "plant_simulator" : "plant_simulator " + robots;
+    sims.push_back({name, "plant_simulator", {"--robots", robots}, "", 0});
+  }
+  procs.insert(procs.begin(), sims.begin(), sims.end());
   return procs;
 }
 
@@ -179,7 +197,25 @@ int run_launch(const LaunchOptions& o) {
   const auto profiles = rt::QosProfiles::load(qos_file);
   const auto& qos = profiles.get("lockstep");
 
-  std::vector<Process> procs = plan(sc);
+  if (!o.host.empty() && std::find(sc.hosts.begin(), sc.hosts.end(), o.host) == sc.hosts.end())
+    throw InputError("--host " + o.host + ": no such host in " + o.scenario);
+  std::vector<Process> procs = plan(sc, o.host);
+  // Network: loopback, or this host's address with every host of the scenario as a peer.
+  rt::NetworkOptions net;
+  if (!o.host.empty() && !sc.host_address.at(o.host).empty()) {
+    net.interface_address = sc.host_address.at(o.host);
+    net.peers.clear();
+    for (const auto& h : sc.hosts) {
+      if (sc.host_address.at(h).empty())
+        throw InputError(o.scenario + ": hosts." + h + ".address: needed when hosts have addresses");
+      net.peers.push_back(sc.host_address.at(h));
+    }
+  }
+  std::string peers;
+  for (const auto& p : net.peers) peers += (peers.empty() ? "" : ",") + p;
+  // The clock (and the run folder) lives on the first host.
+  const bool runs_clock = o.host.empty() || o.host == sc.hosts.front();
+  const std::vector<Process> everywhere = plan(sc, "");  // what the clock waits for, on every host
   std::map<std::string, std::string> vendor_of;
   for (const auto& v : o.vendors) {
     const auto eq = v.find('=');
@@ -187,10 +223,8 @@ int run_launch(const LaunchOptions& o) {
     rt::parse_vendor(v.substr(eq + 1), "--vendor " + v);
     vendor_of[v.substr(0, eq)] = v.substr(eq + 1);
   }
-  for (auto& p : procs) {
-    p.vendor = vendor_of.count(p.name) ? vendor_of[p.name] : vendor;
-    vendor_of.erase(p.name);
-  }
+  for (auto& p : procs) p.vendor = vendor_of.count(p.name) ? vendor_of[p.name] : vendor;
+  for (const auto& p : plan(sc, "")) vendor_of.erase(p.name);  // names of processes on any host are fine
   if (!vendor_of.empty())
     throw InputError("--vendor " + vendor_of.begin()->first + ": no such process (processes: plant_simulator or a service name)");
 
@@ -203,13 +237,15 @@ int run_launch(const LaunchOptions& o) {
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
   std::vector<std::string> common{o.scenario, "--domain", std::to_string(domain), "--qos-file", qos_file,
-                                  "--timeout", std::to_string(o.timeout)};
+                                  "--timeout", std::to_string(o.timeout), "--interface", net.interface_address,
+                                  "--peers", peers};
   for (const auto& s : o.sets) common.insert(common.end(), {"--set", s});
 
   rt::ParticipantOptions po;
   po.vendor = rt::parse_vendor(vendor);
   po.domain_id = domain;
-  po.name = "plexus launch";
+  po.name = "plexus launch" + (o.host.empty() ? std::string() : " " + o.host);
+  po.network = net;
   auto participant = rt::Participant::create(po);
 
   const bool realtime = sc.clock == scenario::ClockMode::realtime;
@@ -251,10 +287,24 @@ int run_launch(const LaunchOptions& o) {
 
   scenario::RunLog log;
   double wall = 0;
+  if (!runs_clock) {
+    // Another host runs the clock: serve until our processes end with the run.
+    auto running = [&] {
+      for (const auto& p : procs)
+        if (p.pid > 0) return true;
+      return false;
+    };
+    while (running() && !g_stop) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    stop_all();
+    if (!died.empty()) return failure(died);
+    if (!o.quiet) std::fprintf(stderr, "plexus launch --host %s: %zu processes done\n", o.host.c_str(), procs.size());
+    return 0;
+  }
   if (realtime) {
     RealtimeResult r;
     try {
-      r = run_realtime(sc, *participant, profiles, procs, 30.0);
+      std::vector<Process> all = everywhere;
+      r = run_realtime(sc, *participant, profiles, all, 30.0);
     } catch (const distributed::LockstepError& e) {
       return failure(e.what());
     }
@@ -287,7 +337,7 @@ int run_launch(const LaunchOptions& o) {
   }
   try {
     distributed::LockstepClock clock(sc, *participant, qos, {.timeout_s = o.timeout});
-    clock.wait_ready(static_cast<int>(procs.size()), 30.0, g_stop);
+    clock.wait_ready(static_cast<int>(everywhere.size()), 30.0, g_stop);
     scenario::ProgressBar bar(!o.quiet);
     const int64_t start = monotonic_ns();
     log = clock.run(g_stop, [&](int64_t k, int64_t n) { bar.update(k, n); });
@@ -325,6 +375,7 @@ Command add_launch_command(CLI::App& root) {
   Command c;
   c.app = root.add_subcommand("launch", "Run a scenario distributed over DDS (lockstep), one process per service");
   c.app->add_option("scenario", o->scenario, "Scenario file (YAML)")->required();
+  c.app->add_option("--host", o->host, "Start only the processes assigned to this host of the scenario");
   c.app->add_option("--dds", o->dds, "DDS vendor of every process (default: the scenario's, else fast)");
   c.app->add_option("--vendor", o->vendors, "Vendor of one process: PROCESS=fast|cyclone (repeatable)");
   c.app->add_option("--domain", o->domain, "DDS domain id (default: the scenario's)")->check(CLI::Range(0, 232));

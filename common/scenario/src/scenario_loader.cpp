@@ -164,7 +164,7 @@ struct Loader {
       const YamlMap hs = top.map("hosts");
       for (const auto& h : hs.keys()) {
         const YamlMap host = hs.map(name_key(hs, h, "host"));
-        host.optional<std::string>("address", "");
+        sc.host_address[h] = host.optional<std::string>("address", "");
         host.reject_unknown();
         hosts.insert(h);
         sc.hosts.push_back(h);
@@ -180,13 +180,17 @@ struct Loader {
       const YamlMap robot = robots.map(name_key(robots, r, "robot"));
       robot_names.insert(r);
       const std::string rpath = "robots." + r;
+      const std::string robot_host = robot.optional<std::string>("host", "");
+      if (robot.has("host") && !hosts.count(robot_host)) robot.fail("host", "no host '" + robot_host + "' in hosts");
       const YamlMap plant = robot.map("plant");
       all.push_back(build(plant, rpath + ".plant", "plant", r, sc.resolved["robots"][r]["plant"], false));
+      all.back().host = robot_host;
       if (robot.has("sensors")) {
         const YamlMap sensors = robot.map("sensors");
         for (const auto& s : sensors.keys()) {
           const YamlMap sensor = sensors.map(name_key(sensors, s, "sensor"));
           all.push_back(build(sensor, rpath + ".sensors." + s, s, r, sc.resolved["robots"][r]["sensors"][s], false));
+          all.back().host = robot_host;  // a robot's sensors run with its plant
         }
       }
       robot.reject_unknown();

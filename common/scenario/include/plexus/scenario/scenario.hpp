@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -51,7 +52,8 @@ struct Scenario {
   double input_deadline_periods = 3.0;
   std::string dds_vendor;  ///< "fast" | "cyclone" | "" (launch default)
   int dds_domain = 0;
-  std::vector<std::string> hosts;
+  std::vector<std::string> hosts;                   ///< in document order; the first runs the clock
+  std::map<std::string, std::string> host_address;  ///< host -> address ("" if not given)
   /// In execution order: by stage (ComponentKind), then in document order.
   std::vector<ScenarioComponent> components;
   std::vector<SignalSpec> signals;  ///< every signal, in component order
