@@ -48,7 +48,7 @@ struct FlexibleJointEkfParams {
   double q = 4.0;      ///< Q = q I, > 0
   double r = 0.1;      ///< R = r I, > 0
   double p0 = 1.0;     ///< P(0) = p0 I, > 0
-  int substeps = 2;    ///< RK4 sub-steps per update, >= 1
+  int substeps = 1;    ///< RK4 sub-steps per update, >= 1 (1 at the scenarios' 5 kHz)
   double step = 1e-3;  ///< s, the update period (for the q'' differentiator), > 0
   double accel_filter_hz = 50.0;  ///< cutoff of the q'' differentiator, > 0
   double fd_step = 1e-6;          ///< rad, rad/s: central-difference step of A and B, > 0
