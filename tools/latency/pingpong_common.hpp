@@ -82,4 +82,46 @@ inline void print_result(const char* implementation, const PingPongOptions& o, s
   std::printf("%s\n", j.dump().c_str());
 }
 
+/// The ping loop of both programs, so they measure the same way: ping k is sent by
+/// send(k) at --rate on absolute deadlines (back to back at rate 0), then take(index) is
+/// called whenever wait(timeout_ns) says data may be there, until the pong of ping k
+/// arrives (1 s at most). Round trips go into a buffer reserved before the loop. Prints
+/// the result line; returns 0 if every measured ping came back.
+template <class Send, class Wait, class Take>
+int run_ping(const char* implementation, const PingPongOptions& o, Send&& send, Wait&& wait, Take&& take) {
+  std::vector<int64_t> rtt;
+  rtt.reserve(static_cast<std::size_t>(o.count));
+  const int total = o.warmup + o.count;
+  const int64_t period = o.rate > 0 ? static_cast<int64_t>(1e9 / o.rate) : 0;
+  int sent = 0;
+  int64_t next = mono_ns(), t_start = 0;
+  for (int k = 0; k < total; ++k) {
+    if (period > 0) {
+      sleep_until_ns(next);
+      next += period;
+      const int64_t now = mono_ns();
+      while (next < now) next += period;  // overrun: skip periods, keep the phase
+    }
+    if (k == o.warmup) t_start = mono_ns();
+    const int64_t t0 = mono_ns();
+    if (!send(k)) break;
+    if (k >= o.warmup) ++sent;
+    const int64_t give_up = t0 + 1'000'000'000;
+    bool got = false;
+    for (int64_t now = mono_ns(); !got && now < give_up; now = mono_ns()) {
+      if (!wait(give_up - now)) continue;
+      int64_t index = -1;
+      while (take(index)) {  // older pongs (of timed-out pings) are dropped
+        if (index == k) {
+          got = true;
+          if (k >= o.warmup) rtt.push_back(mono_ns() - t0);
+        }
+      }
+    }
+  }
+  const double elapsed = static_cast<double>(mono_ns() - t_start) * 1e-9;
+  print_result(implementation, o, rtt, sent, elapsed);
+  return static_cast<int>(rtt.size()) == o.count ? 0 : 1;
+}
+
 }  // namespace plexus::latency

@@ -52,43 +52,21 @@ int run_ping(rt::Participant& p, const rt::QosProfile& qos, const latency::PingP
   msg::LatencyProbe out, in;
   out.payload().assign(static_cast<std::size_t>(o.size), 0x5a);
   in.payload().reserve(65536);
-  std::vector<int64_t> rtt;
-  rtt.reserve(static_cast<std::size_t>(o.count));
-  const int total = o.warmup + o.count;
-  const int64_t period = o.rate > 0 ? static_cast<int64_t>(1e9 / o.rate) : 0;
-  int sent = 0;
-  int64_t next = mono_ns(), t_start = 0;
-  for (int k = 0; k < total && !g_stop; ++k) {
-    if (period > 0) {
-      latency::sleep_until_ns(next);
-      next += period;
-      const int64_t now = mono_ns();
-      while (next < now) next += period;  // overrun: skip periods, keep the phase
-    }
-    if (k == o.warmup) t_start = mono_ns();
-    out.header().origin_time_ns(0);
-    out.header().data_time_ns(k);
-    const int64_t t0 = mono_ns();
-    pub.publish(out);
-    if (k >= o.warmup) ++sent;
-    // Wait for this pong (older ones from timed-out pings are dropped).
-    const int64_t give_up = t0 + 1'000'000'000;
-    bool got = false;
-    while (!got && !g_stop) {
-      const int64_t now = mono_ns();
-      if (now >= give_up) break;
-      if (!sub.wait(give_up - now)) continue;
-      while (sub.take(in)) {
-        if (in.header().data_time_ns() == k) {
-          got = true;
-          if (k >= o.warmup) rtt.push_back(mono_ns() - t0);
-        }
-      }
-    }
-  }
-  const double elapsed = static_cast<double>(mono_ns() - t_start) * 1e-9;
-  latency::print_result("plexus", o, rtt, sent, elapsed);
-  return static_cast<int>(rtt.size()) == o.count ? 0 : 1;
+  return latency::run_ping(
+      "plexus", o,
+      [&](int k) {
+        if (g_stop) return false;
+        out.header().origin_time_ns(0);
+        out.header().data_time_ns(k);
+        pub.publish(out);
+        return true;
+      },
+      [&](int64_t timeout_ns) { return sub.wait(timeout_ns); },
+      [&](int64_t& index) {
+        if (!sub.take(in)) return false;
+        index = in.header().data_time_ns();
+        return true;
+      });
 }
 
 }  // namespace

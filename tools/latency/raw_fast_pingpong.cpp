@@ -133,43 +133,22 @@ int main(int argc, char** argv) {
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(300));
     out.payload().assign(static_cast<std::size_t>(o.size), 0x5a);
-    std::vector<int64_t> rtt;
-    rtt.reserve(static_cast<std::size_t>(o.count));
-    const int total = o.warmup + o.count;
-    const int64_t period = o.rate > 0 ? static_cast<int64_t>(1e9 / o.rate) : 0;
-    int sent = 0;
-    int64_t next = mono_ns(), t_start = 0;
-    for (int k = 0; k < total && !g_stop; ++k) {
-      if (period > 0) {
-        plexus::latency::sleep_until_ns(next);
-        next += period;
-        const int64_t now = mono_ns();
-        while (next < now) next += period;
-      }
-      if (k == o.warmup) t_start = mono_ns();
-      out.header().data_time_ns(k);
-      const int64_t t0 = mono_ns();
-      w->write(&out);
-      if (k >= o.warmup) ++sent;
-      const int64_t give_up = t0 + 1'000'000'000;
-      bool got = false;
-      while (!got && !g_stop) {
-        const int64_t now = mono_ns();
-        if (now >= give_up) break;
-        if (r->get_unread_count() == 0 &&
-            !r->wait_for_unread_message(eprosima::fastrtps::Duration_t(static_cast<long double>(give_up - now) * 1e-9L)))
-          continue;
-        while (take_one(r, in)) {
-          if (in.header().data_time_ns() == k) {
-            got = true;
-            if (k >= o.warmup) rtt.push_back(mono_ns() - t0);
-          }
-        }
-      }
-    }
-    const double elapsed = static_cast<double>(mono_ns() - t_start) * 1e-9;
-    plexus::latency::print_result("raw Fast DDS", o, rtt, sent, elapsed);
-    rc = static_cast<int>(rtt.size()) == o.count ? 0 : 1;
+    rc = plexus::latency::run_ping(
+        "raw Fast DDS", o,
+        [&](int k) {
+          if (g_stop) return false;
+          out.header().data_time_ns(k);
+          return w->write(&out);
+        },
+        [&](int64_t timeout_ns) {
+          return r->get_unread_count() > 0 ||
+                 r->wait_for_unread_message(eprosima::fastrtps::Duration_t(static_cast<long double>(timeout_ns) * 1e-9L));
+        },
+        [&](int64_t& index) {
+          if (!take_one(r, in)) return false;
+          index = in.header().data_time_ns();
+          return true;
+        });
   }
   dp->delete_contained_entities();
   DomainParticipantFactory::get_instance()->delete_participant(dp);
