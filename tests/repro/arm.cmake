@@ -19,4 +19,12 @@ add_test(NAME cli.arm_negative_gain
 add_test(NAME cli.arm_bad_link_mass
          COMMAND ${EXPECT} 2 "arm_vdc_ekf.yaml:[0-9]+: robots.arm.plant: arm_model: links\\[1\\].mass must be finite and > 0 \\(got 0\\)"
                  $<TARGET_FILE:plexus> sim ${ARM_SCENARIO} --quiet --set robots.arm.plant.mass=[10,0])
-set_tests_properties(cli.arm_gain_list_size cli.arm_negative_gain cli.arm_bad_link_mass PROPERTIES LABELS "cli")
+add_test(NAME cli.arm_bad_jacobian
+         COMMAND ${EXPECT} 2 "services.observer.jacobian: must be full or paper"
+                 $<TARGET_FILE:plexus> sim ${ARM_SCENARIO} --quiet --set services.observer.jacobian=exact)
+add_test(NAME cli.arm_too_many_joints
+         COMMAND ${EXPECT} 2 "robots.arm.plant.dof: must be in 1..4"
+                 $<TARGET_FILE:plexus> sim ${PROJECT_SOURCE_DIR}/deploy/scenarios/arm_vdc_ekf_3dof.yaml --quiet
+                 --set robots.arm.plant.dof=6)
+set_tests_properties(cli.arm_gain_list_size cli.arm_negative_gain cli.arm_bad_link_mass cli.arm_bad_jacobian
+                     cli.arm_too_many_joints PROPERTIES LABELS "cli")

@@ -62,6 +62,14 @@ TEST(ArmValidation, ModelErrors) {
   }
   EXPECT_EQ(invalid_argument_message<FlexibleJointArmPlant>(FlexibleJointArmParams{ArmModel::paper_2dof(), 0.0}),
             "flexible_joint_arm: max_substep must be finite and > 0 (got 0)");
+  FlexibleJointArmPlant plant({});
+  const Eigen::VectorXd three = Eigen::VectorXd::Zero(3), two = Eigen::VectorXd::Zero(2);
+  try {
+    plant.reset({three, two, two, two});
+    ADD_FAILURE() << "reset accepted a wrong size";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "flexible_joint_arm: state size must be the number of joints 2 (got 3)");
+  }
 }
 
 TEST(ArmValidation, VdcErrors) {
