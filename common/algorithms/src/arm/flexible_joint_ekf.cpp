@@ -74,19 +74,18 @@ void FlexibleJointEkf::jacobian(const Vector& x, const Vector& /*u*/, Matrix& f)
   if (params_.jacobian == EkfJacobian::kFull) {
     // A = dq''/dq, B = dq''/dq' by central differences of the forward dynamics.
     const double h = params_.fd_step;
+    auto column = [&](bool velocity, int c, Matrix& out) {
+      qp_ = velocity ? qd_ : q_;
+      for (const double sign : {1.0, -1.0}) {
+        qp_(c) += sign * h;
+        dyn_.forward_dynamics(velocity ? q_ : qp_, velocity ? qp_ : qd_, tau_, sign > 0 ? qdd_plus_ : qdd_minus_);
+        qp_(c) -= sign * h;
+      }
+      out.col(c) = (qdd_plus_ - qdd_minus_) / (2.0 * h);
+    };
     for (int c = 0; c < n; ++c) {
-      qp_ = q_;
-      qp_(c) += h;
-      dyn_.forward_dynamics(qp_, qd_, tau_, qdd_plus_);
-      qp_(c) -= 2.0 * h;
-      dyn_.forward_dynamics(qp_, qd_, tau_, qdd_minus_);
-      a_.col(c) = (qdd_plus_ - qdd_minus_) / (2.0 * h);
-      qp_ = qd_;
-      qp_(c) += h;
-      dyn_.forward_dynamics(q_, qp_, tau_, qdd_plus_);
-      qp_(c) -= 2.0 * h;
-      dyn_.forward_dynamics(q_, qp_, tau_, qdd_minus_);
-      b_.col(c) = (qdd_plus_ - qdd_minus_) / (2.0 * h);
+      column(false, c, a_);
+      column(true, c, b_);
     }
   }
   for (int i = 0; i < n; ++i) {
