@@ -355,7 +355,7 @@ int run_loop(const LoopOpts& o) {
 // pipeline
 
 struct PipeOpts {
-  std::string run, topics, out, end_topic;
+  std::string run, topics, out, end_topic, join = "auto";
   bool live = false, json = false;
   DdsOptions dds;
   double duration = 5;
@@ -383,8 +383,10 @@ int run_pipeline(const PipeOpts& o) {
   struct T {
     std::string name;
     std::vector<double> to_publish, transport, to_receive;
-    std::map<int64_t, int64_t> publish_by_origin;
+    std::map<int64_t, int64_t> publish_by_origin, publish_by_data, receive_by_data;
   };
+  if (o.join != "auto" && o.join != "origin" && o.join != "data_time")
+    throw InputError("--join: must be auto, origin or data_time, got '" + o.join + "'");
   std::map<int64_t, T> topics;
   const auto wanted = split_list(o.topics);
   for (const auto& t : rec.topics())
@@ -400,6 +402,8 @@ int run_pipeline(const PipeOpts& o) {
     t.transport.push_back(static_cast<double>(m.receive_time_ns - m.publish_time_ns) * 1e-3);
     t.to_receive.push_back(static_cast<double>(m.receive_time_ns - m.origin_time_ns) * 1e-3);
     t.publish_by_origin[m.origin_time_ns] = m.publish_time_ns;
+    t.publish_by_data[m.data_time_ns] = m.publish_time_ns;
+    t.receive_by_data[m.data_time_ns] = m.receive_time_ns;
     return true;
   });
   if (temp) fs::remove(file);
@@ -408,9 +412,31 @@ int run_pipeline(const PipeOpts& o) {
   for (auto& [id, t] : topics)
     if (!t.to_publish.empty()) chain.push_back(&t);
   if (chain.empty()) throw std::runtime_error(file + ": no samples with header times");
+  // Join the samples of one chain by their shared origin time (services carry it through),
+  // or by their header data time (lockstep: one step), whichever links more samples.
+  auto links = [&](bool by_origin) {
+    std::size_t n = 0;
+    for (std::size_t i = 0; i + 1 < chain.size(); ++i)
+      for (const auto& [key, pub] : (by_origin ? chain[i + 1]->publish_by_origin : chain[i + 1]->publish_by_data))
+        n += (by_origin ? chain[i]->publish_by_origin : chain[i]->publish_by_data).count(key) && key != 0;
+    return n;
+  };
+  const bool by_origin = o.join == "origin" || (o.join == "auto" && links(true) >= links(false));
   std::map<const T*, double> median;
+  std::map<int64_t, int64_t> first_publish;  // data time -> earliest publish over the topics
+  if (!by_origin)
+    for (auto* t : chain)
+      for (const auto& [key, pub] : t->publish_by_data) {
+        auto [it, fresh] = first_publish.emplace(key, pub);
+        if (!fresh) it->second = std::min(it->second, pub);
+      }
   for (auto* t : chain) {
-    auto c = t->to_publish;
+    std::vector<double> c;
+    if (by_origin) {
+      c = t->to_publish;
+    } else {
+      for (const auto& [key, pub] : t->publish_by_data) c.push_back(static_cast<double>(pub - first_publish[key]));
+    }
     median[t] = percentiles(c).p50;
   }
   std::stable_sort(chain.begin(), chain.end(), [&](const T* a, const T* b) { return median[a] < median[b]; });
@@ -419,7 +445,8 @@ int run_pipeline(const PipeOpts& o) {
     if (it == chain.end()) throw InputError("--end: topic '" + o.end_topic + "' has no samples with header times");
     chain.erase(it + 1, chain.end());
   }
-  Json result = {{"run", o.live ? "live" : o.run}, {"topics", Json::array()}, {"hops", Json::array()}};
+  Json result = {{"run", o.live ? "live" : o.run}, {"join", by_origin ? "origin_time" : "data_time"},
+                 {"topics", Json::array()}, {"hops", Json::array()}};
   std::vector<Series> series;
   if (!o.json)
     std::printf("%-32s %8s | %-26s | %-26s | %-26s\n%-32s %8s | %8s %8s %8s | %8s %8s %8s | %8s %8s %8s\n", "topic (chain order)",
@@ -436,9 +463,11 @@ int run_pipeline(const PipeOpts& o) {
   // Hops: publish of topic k+1 minus publish of topic k, for samples of the same chain (same origin time).
   for (std::size_t k = 0; k + 1 < chain.size(); ++k) {
     std::vector<double> d;
-    for (const auto& [origin, pub] : chain[k + 1]->publish_by_origin) {
-      auto it = chain[k]->publish_by_origin.find(origin);
-      if (it != chain[k]->publish_by_origin.end()) d.push_back(static_cast<double>(pub - it->second) * 1e-3);
+    const auto& next = by_origin ? chain[k + 1]->publish_by_origin : chain[k + 1]->publish_by_data;
+    const auto& prev = by_origin ? chain[k]->publish_by_origin : chain[k]->publish_by_data;
+    for (const auto& [key, pub] : next) {
+      auto it = prev.find(key);
+      if (it != prev.end()) d.push_back(static_cast<double>(pub - it->second) * 1e-3);
     }
     if (d.empty()) continue;
     series.push_back({chain[k]->name + " -> " + chain[k + 1]->name, d, false});
@@ -448,8 +477,18 @@ int run_pipeline(const PipeOpts& o) {
       std::printf("hop %s -> %s: p50 %.1f us  p90 %.1f us  p99 %.1f us  max %.1f us  (%zu chains)\n", chain[k]->name.c_str(),
                   chain[k + 1]->name.c_str(), p.p50, p.p90, p.p99, p.max, p.count);
   }
-  auto e2e_values = chain.back()->to_receive;
-  series.push_back({"end to end (origin -> " + chain.back()->name + " received)", e2e_values, false});
+  // End to end: origin -> receipt of the last topic (origin join), or first publish of the
+  // step -> receipt of the last topic (data-time join).
+  std::vector<double> e2e_values;
+  if (by_origin) {
+    e2e_values = chain.back()->to_receive;
+  } else {
+    for (const auto& [key, recv] : chain.back()->receive_by_data)
+      if (auto it = first_publish.find(key); it != first_publish.end())
+        e2e_values.push_back(static_cast<double>(recv - it->second) * 1e-3);
+  }
+  const std::string e2e_name = std::string(by_origin ? "origin" : "first publish of the step") + " -> " + chain.back()->name + " received";
+  series.push_back({"end to end (" + e2e_name + ")", e2e_values, false});
   auto e2e = percentiles(e2e_values);
   result["end_to_end"] = {{"topic", chain.back()->name}, {"latency", pct_json(e2e)}};
   if (!o.out.empty()) {
@@ -460,8 +499,8 @@ int run_pipeline(const PipeOpts& o) {
   if (o.json) {
     std::printf("%s\n", result.dump().c_str());
   } else {
-    std::printf("end to end (origin -> %s received): p50 %.1f us  p90 %.1f us  p99 %.1f us  max %.1f us\n",
-                chain.back()->name.c_str(), e2e.p50, e2e.p90, e2e.p99, e2e.max);
+    std::printf("end to end (%s): p50 %.1f us  p90 %.1f us  p99 %.1f us  max %.1f us  (chains joined by %s)\n",
+                e2e_name.c_str(), e2e.p50, e2e.p90, e2e.p99, e2e.max, by_origin ? "origin time" : "data time");
     if (result.contains("png")) std::printf("histogram: %s\n", result["png"].get<std::string>().c_str());
   }
   return 0;
@@ -504,6 +543,7 @@ Command add_latency_command(CLI::App& root) {
   pipe->add_flag("--live", pp->live, "record the live system for --duration first");
   pipe->add_option("--topics", pp->topics, "comma-separated topics (default: all)");
   pipe->add_option("--end", pp->end_topic, "the chain's last topic (default: the latest-published one)");
+  pipe->add_option("--join", pp->join, "link a chain's samples by origin_time, data_time, or auto")->capture_default_str();
   pipe->add_option("--duration", pp->duration, "--live: seconds to record")->capture_default_str();
   add_dds_options(pipe, pp->dds);
   pipe->add_option("--out", pp->out, "directory for the PNG histogram");
