@@ -2,6 +2,8 @@
 // not allocate. This binary's global operator new counts; the count is checked around them.
 #include <gtest/gtest.h>
 
+#include "../support/count_allocations.hpp"
+
 #include <atomic>
 #include <cstdlib>
 #include <new>
@@ -11,17 +13,6 @@
 #include "plexus/algorithms/arm/flexible_joint_plant.hpp"
 #include "plexus/algorithms/arm/vdc_controller.hpp"
 
-namespace {
-std::atomic<long> g_allocations{0};
-}  // namespace
-
-void* operator new(std::size_t n) {
-  ++g_allocations;
-  if (void* p = std::malloc(n ? n : 1)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 namespace plexus::algorithms {
 namespace {
@@ -40,7 +31,7 @@ TEST(ArmNoAllocation, HotPathsDoNotAllocate) {
   ref.sample(0.0, r);
   Eigen::VectorXd u = Eigen::VectorXd::Zero(2), y = Eigen::VectorXd::Zero(4);
   double sink = 0.0;
-  const long before = g_allocations.load();
+  const long before = plexus::test::allocations();
   for (int k = 1; k < 200; ++k) {
     plant.step(u, 2e-4);
     const FlexibleJointArmState& s = plant.state();
@@ -50,7 +41,7 @@ TEST(ArmNoAllocation, HotPathsDoNotAllocate) {
     u = vdc.step(r, ekf.feedback());
     sink += ctpd.step(r, ekf.feedback()).sum();
   }
-  const long after = g_allocations.load();
+  const long after = plexus::test::allocations();
   EXPECT_EQ(after - before, 0);
   EXPECT_TRUE(std::isfinite(sink + u.sum()));
 }

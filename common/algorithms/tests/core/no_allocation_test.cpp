@@ -2,6 +2,8 @@
 // a counting one and checks the count around predict/update of all three filters.
 #include <gtest/gtest.h>
 
+#include "../support/count_allocations.hpp"
+
 #include <atomic>
 #include <cmath>
 #include <cstdlib>
@@ -10,17 +12,6 @@
 #include "plexus/algorithms/core/ekf.hpp"
 #include "plexus/algorithms/core/ukf.hpp"
 
-namespace {
-std::atomic<long> g_allocations{0};
-}  // namespace
-
-void* operator new(std::size_t n) {
-  ++g_allocations;
-  if (void* p = std::malloc(n ? n : 1)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 namespace plexus::algorithms {
 namespace {
@@ -41,7 +32,7 @@ TEST(NoAllocation, FilterStepsDoNotAllocate) {
   auto f = [](const Vec3& x) -> Vec3 { return {x(0) + 0.01 * x(1), x(1) + 0.01 * std::sin(x(0)), x(2)}; };
   auto h = [](const Vec3& x) { return V1(x(0) + x(2)); };
 
-  const long before = g_allocations.load();
+  const long before = plexus::test::allocations();
   for (int k = 0; k < 100; ++k) {
     const V1 z(0.1 + 0.001 * k);
     ekf.predict(
@@ -62,7 +53,7 @@ TEST(NoAllocation, FilterStepsDoNotAllocate) {
     aug.predict([&](const Vec3& x, const Vec3& w) -> Vec3 { return f(x) + w; }, Q, R);
     aug.update<1>(z, [&](const Vec3& x, const V1& v) { return V1(h(x) + v); });
   }
-  const long after = g_allocations.load();
+  const long after = plexus::test::allocations();
   EXPECT_EQ(after - before, 0);
   EXPECT_TRUE(ekf.state().allFinite() && add.state().allFinite() && aug.state().allFinite());
 }

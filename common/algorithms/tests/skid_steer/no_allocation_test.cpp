@@ -3,6 +3,8 @@
 // allocate. This binary replaces the global operator new with a counting one.
 #include <gtest/gtest.h>
 
+#include "../support/count_allocations.hpp"
+
 #include <atomic>
 #include <cstdlib>
 #include <new>
@@ -17,17 +19,6 @@
 #include "plexus/algorithms/skid_steer/terrain_change_detector.hpp"
 #include "plexus/algorithms/skid_steer/terrain_features.hpp"
 
-namespace {
-std::atomic<long> g_allocations{0};
-}  // namespace
-
-void* operator new(std::size_t n) {
-  ++g_allocations;
-  if (void* p = std::malloc(n ? n : 1)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 namespace plexus::algorithms {
 namespace {
@@ -57,7 +48,7 @@ TEST(NoAllocation, HotPathsDoNotAllocate) {
   ekf.reset(plant.state().pose);
   odo.reset(plant.state().pose);
 
-  const long before = g_allocations.load();
+  const long before = plexus::test::allocations();
   double sink = 0;
   for (int k = 0; k < 300; ++k) {
     const double t = 0.01 * k;
@@ -74,7 +65,7 @@ TEST(NoAllocation, HotPathsDoNotAllocate) {
       sink += r.confidence;
     }
   }
-  const long after = g_allocations.load();
+  const long after = plexus::test::allocations();
   EXPECT_EQ(after - before, 0);
   EXPECT_TRUE(std::isfinite(sink + odo.pose().x));
 }

@@ -3,6 +3,8 @@
 // operator new with a counting one and checks the count around those calls only.
 #include <gtest/gtest.h>
 
+#include "../support/count_allocations.hpp"
+
 #include <atomic>
 #include <cstdlib>
 #include <new>
@@ -15,17 +17,6 @@
 #include "plexus/algorithms/unicycle/tracking_controller.hpp"
 #include "plexus/algorithms/unicycle/velocity_heading_observer.hpp"
 
-namespace {
-std::atomic<long> g_allocations{0};
-}  // namespace
-
-void* operator new(std::size_t n) {
-  ++g_allocations;
-  if (void* p = std::malloc(n ? n : 1)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 namespace plexus::algorithms {
 namespace {
@@ -50,7 +41,7 @@ TEST(NoAllocation, HotPathsDoNotAllocate) {
   velocity.reset({0.0, 0.0}, {0.0, -6.0});
   UnicycleState s{0.0, -6.0, 0.0};
 
-  const long before = g_allocations.load();
+  const long before = plexus::test::allocations();
   double sink = 0;
   for (int k = 0; k < 100; ++k) {
     const ReferenceSample r = ref.sample(0.01 * k);
@@ -63,7 +54,7 @@ TEST(NoAllocation, HotPathsDoNotAllocate) {
     s = unicycle_step(s, a.input, 0.01);
     sink += a.input.omega + b.input.omega;
   }
-  const long after = g_allocations.load();
+  const long after = plexus::test::allocations();
   EXPECT_EQ(after - before, 0);
   EXPECT_TRUE(std::isfinite(sink));
 }
