@@ -18,6 +18,7 @@
 
 #include "child_process.hpp"
 #include "command.hpp"
+#include "run_result.hpp"
 #include "plexus/base/clock.hpp"
 #include "plexus/base/input_error.hpp"
 #include "plexus/base/logging.hpp"
@@ -310,30 +311,20 @@ int run_launch(const LaunchOptions& o) {
     }
     stop_all();
     if (!died.empty()) return failure(died);
-    const scenario::Evaluation ev = scenario::evaluate(sc, r.log);
-    const auto dir = o.out.empty() ? scenario::default_run_folder(sc.name) : std::filesystem::path(o.out);
-    scenario::write_run_folder(dir, sc, r.log, ev, r.wall);
-    nlohmann::ordered_json j = ev.to_json();
-    j["services"] = r.services;
-    j["command_latency"] = r.latency;
-    {
-      std::ofstream f(dir / "realtime.json");
-      f << j.dump(2) << "\n";
-    }
-    if (o.json) {
-      std::cout << j.dump() << std::endl;
-    } else {
-      std::printf("scenario %s: realtime over %zu processes (%s), %.3g s\n", sc.name.c_str(), procs.size(),
-                  vendor.c_str(), r.wall);
-      for (const auto& [name, m] : ev.metrics)
-        std::printf("  %-24s %s\n", name.c_str(), scenario::format_number(m.value).c_str());
-      for (const auto& [name, l] : r.latency.items())
-        std::printf("  latency sensor -> %-12s p50 %.0f us, p99 %.0f us (%d samples)\n", name.c_str(),
+    RunSummary summary;
+    char headline[256];
+    std::snprintf(headline, sizeof headline, "scenario %s: realtime over %zu processes (%s), %.3g s", sc.name.c_str(),
+                  everywhere.size(), vendor.c_str(), r.wall);
+    summary.headline = headline;
+    summary.extra["services"] = r.services;
+    summary.extra["command_latency"] = r.latency;
+    for (const auto& [name, l] : r.latency.items()) {
+      char line[256];
+      std::snprintf(line, sizeof line, "latency sensor -> %s: p50 %.0f us, p99 %.0f us (%d samples)", name.c_str(),
                     l["p50_us"].get<double>(), l["p99_us"].get<double>(), l["samples"].get<int>());
+      summary.lines.push_back(line);
     }
-    if (!o.quiet) std::fprintf(stderr, "run folder: %s\n", dir.string().c_str());
-    for (const auto& f : ev.failures) std::fprintf(stderr, "%s\n", f.c_str());
-    return ev.failures.empty() ? 0 : 1;
+    return finish_run(sc, r.log, r.wall, o.out, o.json, o.quiet, summary);
   }
   try {
     distributed::LockstepClock clock(sc, *participant, qos, {.timeout_s = o.timeout});
@@ -348,24 +339,14 @@ int run_launch(const LaunchOptions& o) {
   }
   stop_all();
 
-  const scenario::Evaluation ev = scenario::evaluate(sc, log);
-  const auto dir = o.out.empty() ? scenario::default_run_folder(sc.name) : std::filesystem::path(o.out);
-  scenario::write_run_folder(dir, sc, log, ev, wall);
   const double steps_per_s = wall > 0 ? static_cast<double>(sc.steps + 1) / wall : 0.0;
-  if (o.json) {
-    auto j = ev.to_json();
-    j["steps_per_s"] = steps_per_s;
-    std::cout << j.dump() << std::endl;
-  } else {
-    std::printf("scenario %s: %lld steps in lockstep over %zu processes (%s), %.3g s, %.0f steps/s\n", sc.name.c_str(),
-                static_cast<long long>(sc.steps), procs.size(), vendor.c_str(), wall, steps_per_s);
-    for (const auto& [name, r] : ev.metrics)
-      std::printf("  %-24s %s\n", name.c_str(), scenario::format_number(r.value).c_str());
-    std::printf("  %-24s %s\n", "digest", ev.digest.c_str());
-  }
-  if (!o.quiet) std::fprintf(stderr, "run folder: %s\n", dir.string().c_str());
-  for (const auto& f : ev.failures) std::fprintf(stderr, "%s\n", f.c_str());
-  return ev.failures.empty() ? 0 : 1;
+  RunSummary summary;
+  char headline[256];
+  std::snprintf(headline, sizeof headline, "scenario %s: %lld steps in lockstep over %zu processes (%s), %.3g s, %.0f steps/s",
+                sc.name.c_str(), static_cast<long long>(sc.steps), everywhere.size(), vendor.c_str(), wall, steps_per_s);
+  summary.headline = headline;
+  summary.extra["steps_per_s"] = steps_per_s;
+  return finish_run(sc, log, wall, o.out, o.json, o.quiet, summary);
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "command.hpp"
+#include "run_result.hpp"
 #include "plexus/base/clock.hpp"
 #include "plexus/base/input_error.hpp"
 #include "plexus/scenario/evaluation.hpp"
@@ -54,22 +55,10 @@ int run_sim(const SimOptions& o) {
   const double wall = static_cast<double>(monotonic_ns() - start) * 1e-9;
   bar.finish();
 
-  const scenario::Evaluation ev = scenario::evaluate(sc, log);
-  const auto dir = o.out.empty() ? scenario::default_run_folder(sc.name) : std::filesystem::path(o.out);
-  scenario::write_run_folder(dir, sc, log, ev, wall);
-
-  if (o.json) {
-    std::cout << ev.to_json().dump() << std::endl;
-  } else {
-    std::printf("scenario %s: %lld steps, %.3g s simulated in %.3g s\n", sc.name.c_str(),
+  char headline[256];
+  std::snprintf(headline, sizeof headline, "scenario %s: %lld steps, %.3g s simulated in %.3g s", sc.name.c_str(),
                 static_cast<long long>(sc.steps), sc.duration, wall);
-    for (const auto& [name, r] : ev.metrics)
-      std::printf("  %-24s %s\n", name.c_str(), scenario::format_number(r.value).c_str());
-    std::printf("  %-24s %s\n", "digest", ev.digest.c_str());
-  }
-  if (!o.quiet) std::fprintf(stderr, "run folder: %s\n", dir.string().c_str());
-  for (const auto& f : ev.failures) std::fprintf(stderr, "%s\n", f.c_str());
-  return ev.failures.empty() ? 0 : 1;
+  return finish_run(sc, log, wall, o.out, o.json, o.quiet, {headline, nlohmann::ordered_json::object(), {}});
 }
 
 }  // namespace

@@ -1,0 +1,35 @@
+#include "run_result.hpp"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+#include "plexus/scenario/evaluation.hpp"
+#include "plexus/scenario/run_folder.hpp"
+
+namespace plexus::cli {
+
+int finish_run(const scenario::Scenario& sc, const scenario::RunLog& log, double wall_seconds, const std::string& out,
+               bool json, bool quiet, const RunSummary& summary) {
+  const scenario::Evaluation ev = scenario::evaluate(sc, log);
+  const auto dir = out.empty() ? scenario::default_run_folder(sc.name) : std::filesystem::path(out);
+  scenario::write_run_folder(dir, sc, log, ev, wall_seconds);
+  if (!summary.extra.empty()) std::ofstream(dir / "launch.json") << summary.extra.dump(2) << "\n";
+  if (json) {
+    nlohmann::ordered_json j = ev.to_json();
+    for (const auto& [key, value] : summary.extra.items()) j[key] = value;
+    std::cout << j.dump() << std::endl;
+  } else {
+    std::printf("%s\n", summary.headline.c_str());
+    for (const auto& [name, r] : ev.metrics)
+      std::printf("  %-24s %s\n", name.c_str(), scenario::format_number(r.value).c_str());
+    std::printf("  %-24s %s\n", "digest", ev.digest.c_str());
+    for (const auto& line : summary.lines) std::printf("  %s\n", line.c_str());
+  }
+  if (!quiet) std::fprintf(stderr, "run folder: %s\n", dir.string().c_str());
+  for (const auto& f : ev.failures) std::fprintf(stderr, "%s\n", f.c_str());
+  return ev.failures.empty() ? 0 : 1;
+}
+
+}  // namespace plexus::cli

@@ -1,0 +1,28 @@
+// The end of a run, the same for `plexus sim` and both modes of `plexus launch`:
+// evaluate the metrics, write the run folder, print the result.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "plexus/scenario/scenario.hpp"
+#include "plexus/scenario/signal_log.hpp"
+
+namespace plexus::cli {
+
+/// What a command adds to the common output.
+struct RunSummary {
+  std::string headline;                                         ///< first line of the text output
+  nlohmann::ordered_json extra = nlohmann::ordered_json::object();  ///< merged into --json; also <run folder>/launch.json
+  std::vector<std::string> lines;                               ///< text lines after the metrics
+};
+
+/// Evaluates the run, writes the run folder (`out`, or runs/<scenario>-<time>), prints the
+/// metrics and digest (text, or one JSON object with `--json`), the run folder line unless
+/// quiet, and every failed expectation. Returns 0 if every expectation holds, else 1.
+int finish_run(const scenario::Scenario& sc, const scenario::RunLog& log, double wall_seconds, const std::string& out,
+               bool json, bool quiet, const RunSummary& summary);
+
+}  // namespace plexus::cli
