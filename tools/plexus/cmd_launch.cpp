@@ -4,6 +4,8 @@
 // plant_simulator process, each service in its own component_host process, and the
 // lockstep clock in this process. Writes the same run folder and metrics as `plexus sim`
 // (so the digests can be compared) and reports steps_per_s. Children never outlive it.
+#include <signal.h>
+
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
@@ -39,6 +41,7 @@ struct LaunchOptions {
   std::string scenario;
   std::vector<std::string> sets;
   std::vector<std::string> vendors;  // PROCESS=VENDOR
+  std::vector<std::string> kills;    // PROCESS@SECONDS (fault injection, realtime)
   std::string dds, out, qos_file, host;
   int domain = -1;
   double timeout = 10.0;
@@ -52,6 +55,9 @@ struct Process {
   std::vector<std::string> select;
   std::string vendor;
   pid_t pid = 0;
+  std::string restart = "never";  ///< realtime: never | on_failure | always (scenario `restart`)
+  std::vector<std::string> args;  ///< as started, to restart it the same way
+  int restarts = 0;
 
   /// The service name the process reports in its heartbeats and DDS participant.
   std::string service() const { return select.empty() ? program : program + " " + select.back(); }
@@ -70,11 +76,18 @@ struct RealtimeResult {
   scenario::RunLog log;
   nlohmann::ordered_json services = nlohmann::ordered_json::object();
   nlohmann::ordered_json latency = nlohmann::ordered_json::object();
+  nlohmann::ordered_json fault = nlohmann::ordered_json::object();
   double wall = 0;
 };
 
+/// Fault injection state shared with the launcher's watcher thread.
+struct FaultClock {
+  std::atomic<int64_t> run_start_ns{0};  ///< monotonic time of the start signal (0: not started)
+  std::atomic<int64_t> killed_ns{0};     ///< monotonic time of the injected kill (0: none yet)
+};
+
 RealtimeResult run_realtime(scenario::Scenario& sc, rt::Participant& participant, const rt::QosProfiles& profiles,
-                            std::vector<Process>& procs, double start_timeout_s) {
+                            std::vector<Process>& procs, double start_timeout_s, FaultClock& fault) {
   RealtimeResult res;
   scenario::StepExecutor wiring(sc, std::vector<bool>(sc.components.size(), false));
   const auto& signals = wiring.signals();
@@ -117,8 +130,11 @@ RealtimeResult run_realtime(scenario::Scenario& sc, rt::Participant& participant
   }
   msg::ClockStep start;
   start.step_index(0);
+  start.sim_time_ns(wall_time_ns());  // realtime: the run's start, so a restarted host joins at the current tick
   go.publish(start);
   const int64_t t0 = monotonic_ns();
+  fault.run_start_ns = t0;
+  double safe_after_s = -1;  // first all-zero command after an injected kill
   const int64_t end = t0 + static_cast<int64_t>((sc.duration + 2.0) * 1e9);
   msg::Signal m;
   scenario::SignalSample sample;
@@ -133,6 +149,10 @@ RealtimeResult run_realtime(scenario::Scenario& sc, rt::Participant& participant
         std::copy_n(m.field_values().begin(), m.count(), sample.values.begin());
         res.log.record(s, sample);
         latency[s].push_back(now - m.header().origin_time_ns());
+        const int64_t killed = fault.killed_ns.load();
+        if (killed && safe_after_s < 0 && std::find(commands.begin(), commands.end(), s) != commands.end() &&
+            std::all_of(sample.values.begin(), sample.values.begin() + m.count(), [](double v) { return v == 0.0; }))
+          safe_after_s = static_cast<double>(monotonic_ns() - killed) * 1e-9;
       }
     }
     drain_beats();
@@ -148,6 +168,10 @@ RealtimeResult run_realtime(scenario::Scenario& sc, rt::Participant& participant
                                         {"stale_input_reads", hb.rejected_inputs()}, {"jitter_p50_us", hb.jitter_p50_us()},
                                         {"jitter_p99_us", hb.jitter_p99_us()},     {"jitter_max_us", hb.jitter_max_us()},
                                         {"compute_p50_us", hb.compute_p50_us()},   {"compute_p99_us", hb.compute_p99_us()}};
+  }
+  if (fault.killed_ns.load()) {
+    res.fault["safe_command_after_s"] = safe_after_s >= 0 ? nlohmann::ordered_json(safe_after_s) : nlohmann::ordered_json();
+    res.fault["input_deadline_periods"] = sc.input_deadline_periods;
   }
   for (std::size_t s : commands)
     res.latency[signals[s].name] = {{"samples", latency[s].size()},
@@ -172,7 +196,12 @@ std::vector<Process> plan(const scenario::Scenario& sc, const std::string& host)
       auto& list = robots_by_host[c.host];
       list += (list.empty() ? "" : ",") + robot;
     } else if (c.kind != scenario::ComponentKind::sensor) {
-      procs.push_back({c.component->name(), "component_host", {"--components", c.component->name()}, "", 0});
+      Process p;
+      p.name = c.component->name();
+      p.program = "component_host";
+      p.select = {"--components", c.component->name()};
+      p.restart = c.restart;
+      procs.push_back(p);
     }
   }
   std::set<std::string> robot_hosts;  // over the whole scenario, so names agree on every host
@@ -181,7 +210,11 @@ std::vector<Process> plan(const scenario::Scenario& sc, const std::string& host)
   std::vector<Process> sims;
   for (const auto& [h, robots] : robots_by_host) {
     const std::string name = robot_hosts.size() == 1 ? "plant_simulator" : "plant_simulator " + robots;
-    sims.push_back({name, "plant_simulator", {"--robots", robots}, "", 0});
+    Process p;  // plants hold the physical state: never restarted
+    p.name = name;
+    p.program = "plant_simulator";
+    p.select = {"--robots", robots};
+    sims.push_back(p);
   }
   procs.insert(procs.begin(), sims.begin(), sims.end());
   return procs;
@@ -250,10 +283,29 @@ int run_launch(const LaunchOptions& o) {
   auto participant = rt::Participant::create(po);
 
   const bool realtime = sc.clock == scenario::ClockMode::realtime;
+  // Fault injection: --kill PROCESS@SECONDS sends SIGKILL to a process that long after the start.
+  std::map<std::string, double> kill_at;
+  for (const auto& k : o.kills) {
+    const auto at = k.rfind('@');
+    double when = -1;
+    try {
+      when = at == std::string::npos ? -1 : std::stod(k.substr(at + 1));
+    } catch (const std::exception&) {
+    }
+    if (when < 0) throw InputError("--kill " + k + ": expected PROCESS@SECONDS");
+    const std::string name = k.substr(0, at);
+    if (std::none_of(procs.begin(), procs.end(), [&](const Process& p) { return p.name == name; }))
+      throw InputError("--kill " + k + ": no process '" + name + "' on this host");
+    if (!realtime) throw InputError("--kill " + k + ": fault injection needs clock.mode realtime");
+    kill_at[name] = when;
+  }
+  FaultClock fault;
+  std::atomic<bool> run_active{true};
   for (auto& p : procs) {
     std::vector<std::string> args = common;
     args.insert(args.end(), p.select.begin(), p.select.end());
     args.insert(args.end(), {"--dds", p.vendor, "--mode", realtime ? "realtime" : "lockstep"});
+    p.args = args;
     p.pid = spawn(p.program, args);
   }
   // A child that dies ends the run at once, with its name and exit code.
@@ -261,11 +313,25 @@ int run_launch(const LaunchOptions& o) {
   std::atomic<bool> watching{true};
   std::thread watcher([&] {
     while (watching) {
+      const int64_t started = fault.run_start_ns.load();
       for (auto& p : procs) {
+        auto k = kill_at.find(p.name);
+        if (started && k != kill_at.end() && p.pid > 0 && monotonic_ns() - started >= static_cast<int64_t>(k->second * 1e9)) {
+          ::kill(p.pid, SIGKILL);
+          fault.killed_ns = monotonic_ns();
+          spdlog::warn("fault injection: killed {} at {:.2f} s", p.service(), k->second);
+          kill_at.erase(k);
+        }
         int status = 0;
         if (p.pid > 0 && exited(p.pid, status)) {
           p.pid = 0;
-          if (status != 0 && died.empty()) {
+          const bool restart = realtime && run_active &&
+                               (p.restart == "always" || (status != 0 && p.restart == "on_failure"));
+          if (restart) {
+            p.pid = spawn(p.program, p.args);
+            ++p.restarts;
+            spdlog::warn("{} exited with code {}: restarted ({} restarts)", p.service(), status, p.restarts);
+          } else if (status != 0 && died.empty()) {
             died = p.service() + " exited with code " + std::to_string(status);
             g_stop = true;
           }
@@ -305,7 +371,8 @@ int run_launch(const LaunchOptions& o) {
     RealtimeResult r;
     try {
       std::vector<Process> all = everywhere;
-      r = run_realtime(sc, *participant, profiles, all, 30.0);
+      r = run_realtime(sc, *participant, profiles, all, 30.0, fault);
+      run_active = false;
     } catch (const distributed::LockstepError& e) {
       return failure(e.what());
     }
@@ -318,6 +385,11 @@ int run_launch(const LaunchOptions& o) {
     summary.headline = headline;
     summary.extra["services"] = r.services;
     summary.extra["command_latency"] = r.latency;
+    nlohmann::ordered_json restarts = nlohmann::ordered_json::object();
+    for (const auto& p : procs)
+      if (p.restarts) restarts[p.service()] = p.restarts;
+    summary.extra["restarts"] = restarts;
+    if (!r.fault.empty()) summary.extra["fault"] = r.fault;
     for (const auto& [name, l] : r.latency.items()) {
       char line[256];
       std::snprintf(line, sizeof line, "latency sensor -> %s: p50 %.0f us, p99 %.0f us (%d samples)", name.c_str(),
@@ -358,6 +430,7 @@ Command add_launch_command(CLI::App& root) {
   c.app->add_option("scenario", o->scenario, "Scenario file (YAML)")->required();
   c.app->add_option("--host", o->host, "Start only the processes assigned to this host of the scenario");
   c.app->add_option("--dds", o->dds, "DDS vendor of every process (default: the scenario's, else fast)");
+  c.app->add_option("--kill", o->kills, "Fault injection (realtime): SIGKILL PROCESS at SECONDS, as PROCESS@SECONDS");
   c.app->add_option("--vendor", o->vendors, "Vendor of one process: PROCESS=fast|cyclone (repeatable)");
   c.app->add_option("--domain", o->domain, "DDS domain id (default: the scenario's)")->check(CLI::Range(0, 232));
   c.app->add_option("--set", o->sets, "Override a scenario value: dotted.key=value (repeatable)");

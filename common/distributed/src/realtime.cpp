@@ -132,6 +132,10 @@ RealtimeReport RealtimeHost::run(const std::atomic<bool>& stop) {
     m.start.wait(50'000'000);
   }
 
+  // The start signal carries the run's start (wall clock): a host restarted mid-run joins
+  // at the current tick instead of replaying the run from 0.
+  const int64_t step_ns_start = static_cast<int64_t>(m.sc.step * 1e9);
+  const int64_t k0 = go.sim_time_ns() > 0 ? std::max<int64_t>(0, (wall_time_ns() - go.sim_time_ns()) / step_ns_start) : 0;
   rt::LoopOptions lo = m.opt.loop;
   lo.rate_hz = 1.0 / m.sc.step;
   rt::PeriodicLoop loop(lo);
@@ -161,9 +165,10 @@ RealtimeReport RealtimeHost::run(const std::atomic<bool>& stop) {
     m.out[signal].publish(m.out_msg);
   };
   const int64_t ticks = m.sc.steps + 1;
+  if (k0 >= ticks) return m.report;  // joined after the end of the run
   const int64_t hb_every = std::max<int64_t>(1, static_cast<int64_t>(1.0 / m.sc.step));
   loop.run([&](const rt::PeriodicLoop::Tick& t) {
-    const auto k = static_cast<int64_t>(t.index);
+    const auto k = static_cast<int64_t>(t.index) + k0;
     m.exec.step(k, read, publish, gate);
     if (k % hb_every == 0) m.publish_heartbeat(m.report.holds ? msg::SERVICE_DEGRADED : msg::SERVICE_RUNNING, loop.stats());
     m.report.ticks = k + 1;

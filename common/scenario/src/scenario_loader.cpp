@@ -99,6 +99,9 @@ struct Loader {
         section.fail("host", "no host '" + out.host + "' in hosts");
       out.qos = section.optional<std::string>("qos", "");
       if (section.has("qos") && out.qos.empty()) section.fail("qos", "must name a QoS profile");
+      out.restart = section.optional<std::string>("restart", out.restart);
+      if (out.restart != "never" && out.restart != "on_failure" && out.restart != "always")
+        section.fail("restart", "expected never, on_failure or always, got '" + out.restart + "'");
     }
     cfg.section = &section;
     out.kind = cfg.kind;

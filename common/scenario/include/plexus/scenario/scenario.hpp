@@ -30,6 +30,9 @@ struct ScenarioComponent {
   std::string where;  ///< "file:line: yaml.path", for errors about this component
   std::string host;   ///< host it runs on under `plexus launch` (empty: any)
   std::string qos;    ///< QoS profile name for its outputs (empty: the default)
+  /// `plexus launch`, realtime mode: restart the service's process when it dies
+  /// ("on_failure", the default), whenever it exits ("always"), or not ("never").
+  std::string restart = "on_failure";
 };
 
 struct ScenarioMetric {

@@ -1,0 +1,24 @@
+# Realtime fault test: kill a service mid-run with `plexus launch --kill`, then check from the
+# run's launch.json that the controller applied its safe (all-zero) command, that the launcher
+# restarted the service, and that tracking resumed (the scenario's expectations, passed in
+# EXPECT as --set arguments). How fast the safe command came is reported, not asserted here:
+# timing goals live in measured reports, not in tests on a shared machine.
+# Arguments: PLEXUS, SCENARIO, OUT, DOMAIN, KILL (PROCESS@SECONDS), SERVICE, EXPECT ("|"-separated).
+string(REPLACE "|" ";" expect "${EXPECT}")
+execute_process(COMMAND ${PLEXUS} launch ${SCENARIO} --quiet --domain ${DOMAIN} --out ${OUT} --kill ${KILL}
+                        --set clock.mode=realtime ${expect}
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+message(STATUS "${out}${err}")
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "launch exited ${rc}: tracking did not resume within the expectations")
+endif()
+file(READ ${OUT}/launch.json j)
+string(JSON safe GET "${j}" fault safe_command_after_s)
+string(JSON restarts GET "${j}" restarts "component_host ${SERVICE}")
+message(STATUS "safe command ${safe} s after the kill; ${restarts} restart(s)")
+if(safe STREQUAL "null" OR safe STREQUAL "")
+  message(FATAL_ERROR "no safe (all-zero) command was observed after the kill")
+endif()
+if(NOT restarts GREATER_EQUAL 1)
+  message(FATAL_ERROR "the launcher did not restart ${SERVICE}")
+endif()
