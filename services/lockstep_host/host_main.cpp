@@ -17,6 +17,7 @@
 #include "plexus/base/logging.hpp"
 #include "plexus/distributed/lockstep.hpp"
 #include "plexus/distributed/realtime.hpp"
+#include "plexus/distributed/service_catalog.hpp"
 #include "plexus/scenario/overrides.hpp"
 
 namespace {
@@ -24,13 +25,14 @@ namespace {
 std::atomic<bool> g_stop{false};
 void on_signal(int) { g_stop = true; }
 
+constexpr const char* kName = PLEXUS_SERVICE_NAME;
 #ifdef PLEXUS_PLANT_SIMULATOR
-constexpr const char* kName = "plant_simulator";
 constexpr const char* kAbout =
-    "plant_simulator: the plants and sensors of a scenario's robots, stepped in lockstep over DDS";
+    "plant_simulator: the plants and sensors of a scenario's robots, over DDS (lockstep or realtime)";
 #else
-constexpr const char* kName = "component_host";
-constexpr const char* kAbout = "component_host: named components of a scenario, stepped in lockstep over DDS";
+constexpr const char* kAbout =
+    "plexus service: hosts the named components of a scenario over DDS (lockstep or realtime); "
+    "see common/distributed/include/plexus/distributed/service_catalog.hpp for which types each service hosts";
 #endif
 
 std::set<std::string> split(const std::string& csv) {
@@ -98,6 +100,9 @@ int main(int argc, char** argv) {
 #else
       hosted[i] = wanted.count(c.component->name()) != 0;
       if (hosted[i]) found.insert(c.component->name());
+      if (hosted[i] && std::string(kName) != "component_host" && distributed::executable_for(c.type) != kName)
+        throw InputError(std::string("--components: '") + c.component->name() + "' is a " + c.type + ", which " + kName +
+                         " does not host (it runs in " + distributed::executable_for(c.type) + ")");
 #endif
     }
     for (const auto& w : wanted)

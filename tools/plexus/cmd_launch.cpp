@@ -1,7 +1,8 @@
 // plexus launch SCENARIO [--dds fast|cyclone] [--vendor PROCESS=VENDOR ...] [--set k=v ...] [--json]
 //
 // Runs a scenario distributed over DDS in lockstep: the robots' plants and sensors in a
-// plant_simulator process, each service in its own component_host process, and the
+// plant_simulator process, each service in its own process (the service executable of its
+// type: localisation_observer, motion_controller, ..., see service_catalog.hpp), and the
 // lockstep clock in this process. Writes the same run folder and metrics as `plexus sim`
 // (so the digests can be compared) and reports steps_per_s. Children never outlive it.
 #include <signal.h>
@@ -26,6 +27,7 @@
 #include "plexus/base/logging.hpp"
 #include "plexus/distributed/lockstep.hpp"
 #include "plexus/distributed/realtime.hpp"
+#include "plexus/distributed/service_catalog.hpp"
 #include "plexus/scenario/step_executor.hpp"
 #include "plexus/scenario/evaluation.hpp"
 #include "plexus/scenario/progress_bar.hpp"
@@ -182,7 +184,7 @@ RealtimeResult run_realtime(scenario::Scenario& sc, rt::Participant& participant
 }
 
 /// The processes of a scenario: one plant_simulator per host for the robots on that host,
-/// one component_host per service. With `host` set, only those assigned to it (components
+/// one process per service, in the executable of its type. With `host` set, only those assigned to it (components
 /// without a host run on the first host).
 std::vector<Process> plan(const scenario::Scenario& sc, const std::string& host) {
   const std::string first = sc.hosts.empty() ? "" : sc.hosts.front();
@@ -198,7 +200,7 @@ std::vector<Process> plan(const scenario::Scenario& sc, const std::string& host)
     } else if (c.kind != scenario::ComponentKind::sensor) {
       Process p;
       p.name = c.component->name();
-      p.program = "component_host";
+      p.program = distributed::executable_for(c.type);
       p.select = {"--components", c.component->name()};
       p.restart = c.restart;
       procs.push_back(p);

@@ -104,6 +104,7 @@ struct Loader {
         section.fail("restart", "expected never, on_failure or always, got '" + out.restart + "'");
     }
     cfg.section = &section;
+    out.type = cfg.type;
     out.kind = cfg.kind;
     out.period_steps = cfg.period_steps;
     out.where = section.where() + ": " + path;

@@ -25,6 +25,7 @@ enum class ClockMode { lockstep, realtime };
 /// A component of the scenario, built and validated.
 struct ScenarioComponent {
   std::unique_ptr<Component> component;
+  std::string type;  ///< registered type name
   ComponentKind kind{};
   int64_t period_steps = 1;
   std::string where;  ///< "file:line: yaml.path", for errors about this component
