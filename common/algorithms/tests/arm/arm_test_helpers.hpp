@@ -6,7 +6,7 @@
 
 #include "plexus/algorithms/arm/arm_model.hpp"
 #include "plexus/algorithms/core/random.hpp"
-#include "../unicycle/validation_message.hpp"  // invalid_argument_message<T>(args...)
+#include "../support/validation_message.hpp"  // invalid_argument_message<T>(args...)
 
 namespace plexus::algorithms::testing {
 

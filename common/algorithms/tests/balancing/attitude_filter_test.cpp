@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <cstdlib>
 
-#include "../unicycle/validation_message.hpp"
+#include "../support/validation_message.hpp"
 #include "closed_loop.hpp"
 
 namespace plexus::algorithms {

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "../unicycle/validation_message.hpp"
+#include "../support/validation_message.hpp"
 #include "plexus/algorithms/balancing/imu_sensor.hpp"
 
 namespace plexus::algorithms {

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "../unicycle/validation_message.hpp"
+#include "../support/validation_message.hpp"
 
 namespace plexus::algorithms {
 namespace {

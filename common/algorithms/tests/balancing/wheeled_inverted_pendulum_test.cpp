@@ -6,7 +6,7 @@
 #include <limits>
 #include <string>
 
-#include "../unicycle/validation_message.hpp"
+#include "../support/validation_message.hpp"
 
 namespace plexus::algorithms {
 namespace {

@@ -10,7 +10,7 @@
 #include "plexus/algorithms/skid_steer/driving_pattern.hpp"
 #include "plexus/algorithms/skid_steer/skid_steer_plant.hpp"
 #include "plexus/algorithms/skid_steer/skid_steer_sensors.hpp"
-#include "validation_message.hpp"
+#include "../support/validation_message.hpp"
 
 namespace plexus::algorithms {
 namespace {

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <vector>
 
-#include "validation_message.hpp"
+#include "../support/validation_message.hpp"
 
 namespace plexus::algorithms {
 namespace {

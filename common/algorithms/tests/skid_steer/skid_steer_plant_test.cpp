@@ -11,7 +11,7 @@
 #include "plexus/algorithms/skid_steer/icr_odometry.hpp"
 #include "plexus/algorithms/skid_steer/terrain_change_detector.hpp"
 #include "plexus/algorithms/skid_steer/terrain_features.hpp"
-#include "validation_message.hpp"
+#include "../support/validation_message.hpp"
 
 namespace plexus::algorithms {
 namespace {

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "plexus/algorithms/core/random.hpp"
-#include "validation_message.hpp"
+#include "../support/validation_message.hpp"
 
 namespace plexus::algorithms {
 namespace {

@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "validation_message.hpp"
+#include "../support/validation_message.hpp"
 
 #include <cmath>
 #include <stdexcept>
