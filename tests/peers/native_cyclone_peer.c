@@ -70,6 +70,9 @@ int main(int argc, char** argv) {
   dds_qos_t* q = dds_create_qos();
   dds_qset_reliability(q, DDS_RELIABILITY_RELIABLE, DDS_SECS(1));
   dds_qset_history(q, DDS_HISTORY_KEEP_LAST, count);
+  /* transient-local, as plexus_test_peer: a reader matching just after the writer wrote
+     still gets every sample */
+  dds_qset_durability(q, DDS_DURABILITY_TRANSIENT_LOCAL);
   const dds_data_representation_id_t xcdr1 = DDS_DATA_REPRESENTATION_XCDR1;
   dds_qset_data_representation(q, 1, &xcdr1);
   const dds_time_t deadline = dds_time() + DDS_SECS(40);

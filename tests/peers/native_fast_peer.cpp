@@ -69,6 +69,7 @@ int main(int argc, char** argv) {
     wq.reliability().kind = RELIABLE_RELIABILITY_QOS;
     wq.history().kind = KEEP_LAST_HISTORY_QOS;
     wq.history().depth = count;
+    wq.durability().kind = TRANSIENT_LOCAL_DURABILITY_QOS;  // as plexus_test_peer
     wq.data_sharing().off();
     DataWriter* wpose = p->create_datawriter(tpose, wq);
     DataWriter* wjoint = p->create_datawriter(tjoint, wq);
@@ -101,6 +102,7 @@ int main(int argc, char** argv) {
     rq.reliability().kind = RELIABLE_RELIABILITY_QOS;
     rq.history().kind = KEEP_LAST_HISTORY_QOS;
     rq.history().depth = count;
+    rq.durability().kind = TRANSIENT_LOCAL_DURABILITY_QOS;
     rq.data_sharing().off();
     DataReader* rpose = s->create_datareader(tpose, rq);
     DataReader* rjoint = s->create_datareader(tjoint, rq);

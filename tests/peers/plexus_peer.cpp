@@ -108,6 +108,11 @@ int main(int argc, char** argv) {
     qos.reliability = rt::QosProfile::Reliability::reliable;
     qos.history = rt::QosProfile::History::keep_last;
     qos.depth = count;
+    // Transient-local: a reader that matches a moment after the writer (the writer sees the
+    // match first, then writes before the reader side has discovered it) still gets every
+    // sample. With volatile durability those samples are legitimately lost, and the test
+    // would flake on a busy machine.
+    qos.durability = rt::QosProfile::Durability::transient_local;
 
     std::vector<Endpoints> eps;
     std::apply([&](auto... t) { (add<decltype(t)>(eps, types, prefix, values == "simple"), ...); }, msg::AllTopicTypes{});

@@ -124,6 +124,9 @@ int64_t LockstepHost::run(const std::atomic<bool>& stop) {
   int64_t last_tick = monotonic_ns();
   while (!stop.load(std::memory_order_relaxed)) {
     if (!m.clock.take(tick)) {
+      // Every step done and the clock's writer gone: the run ended even if the end-of-run
+      // mark never reached us (the clock waits for its acknowledgement, but bounded).
+      if (expected > m.sc.steps && m.clock.matched_count() == 0) break;
       // The clock waits for our outputs, so silence here means the clock is gone; the
       // launcher's timeout covers a slow run, this one a dead launcher.
       if (monotonic_ns() - last_tick > 3 * timeout)
@@ -235,6 +238,10 @@ scenario::RunLog LockstepClock::run(const std::atomic<bool>& stop, const scenari
   }
   tick.step_index(kEndOfRun);
   m.clock.publish(tick);
+  // Deleting the writer drops an unacknowledged sample: without this wait a host could miss
+  // the end of the run and wait for a step that never comes.
+  if (!m.clock.wait_for_acks(timeout))
+    spdlog::warn("lockstep: not every host acknowledged the end of the run within {} s", m.opt.timeout_s);
   return log;
 }
 

@@ -93,6 +93,7 @@ class CycloneWriter final : public WriterBackend {
   }
   void assert_liveliness() override { dds_assert_liveliness(writer_); }
   int matched_count() const override { return matched_; }
+  bool wait_for_acks(int64_t timeout_ns) override { return dds_wait_for_acks(writer_, timeout_ns) == DDS_RETCODE_OK; }
 
   static void on_matched(dds_entity_t w, const dds_publication_matched_status_t s, void* arg) {
     auto* self = static_cast<CycloneWriter*>(arg);

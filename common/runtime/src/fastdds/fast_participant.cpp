@@ -99,6 +99,11 @@ class FastWriter final : public WriterBackend, public fdds::DataWriterListener {
   bool write(const void* sample) override { return writer_->write(const_cast<void*>(sample)); }
   void assert_liveliness() override { writer_->assert_liveliness(); }
   int matched_count() const override { return matched_; }
+  bool wait_for_acks(int64_t timeout_ns) override {
+    const eprosima::fastrtps::Duration_t max_wait(static_cast<int32_t>(timeout_ns / 1'000'000'000),
+                                    static_cast<uint32_t>(timeout_ns % 1'000'000'000));
+    return writer_->wait_for_acknowledgments(max_wait) == eprosima::fastrtps::types::ReturnCode_t::RETCODE_OK;
+  }
 
   void on_publication_matched(fdds::DataWriter*, const fdds::PublicationMatchedStatus& s) override {
     matched_ = s.current_count;

@@ -18,6 +18,11 @@ class WriterBackend {
   virtual void assert_liveliness() = 0;
   /// Number of matched remote readers.
   virtual int matched_count() const = 0;
+  /// Blocks until every matched reliable reader acknowledged every sample written, or
+  /// `timeout_ns` passes. True if all were acknowledged. Call it before deleting a writer
+  /// whose last sample must arrive (an end-of-run mark): deleting the writer drops samples
+  /// still unacknowledged.
+  virtual bool wait_for_acks(int64_t timeout_ns) = 0;
 };
 
 /// Per-sample metadata a reader gets besides the data.

@@ -110,6 +110,8 @@ class Publisher {
   }
   void assert_liveliness() { w_->assert_liveliness(); }
   int matched_count() const { return w_->matched_count(); }
+  /// See WriterBackend::wait_for_acks.
+  bool wait_for_acks(int64_t timeout_ns) { return w_->wait_for_acks(timeout_ns); }
   uint64_t published() const { return seq_; }
   explicit operator bool() const { return static_cast<bool>(w_); }
 
