@@ -6,6 +6,7 @@
 #include <thread>
 
 #include "plexus/base/clock.hpp"
+#include "input_guard.hpp"
 #include "signal_codec.hpp"
 
 namespace plexus::distributed {
@@ -21,7 +22,8 @@ std::string step_text(int64_t k) { return "step " + std::to_string(k); }
 /// The latest samples received of one remote signal, by step.
 class RemoteSignal {
  public:
-  RemoteSignal(const SignalSpec& spec, rt::Subscriber<msg::Signal> sub) : spec_(&spec), sub_(std::move(sub)) {}
+  RemoteSignal(const SignalSpec& spec, rt::Subscriber<msg::Signal> sub, detail::InputGuard& guard)
+      : spec_(&spec), sub_(std::move(sub)), guard_(&guard) {}
 
   /// Copies the sample produced at step `due` into `out`, waiting for it up to `timeout_ns`.
   void get(int64_t due, int64_t timeout_ns, SignalSample& out) {
@@ -46,11 +48,7 @@ class RemoteSignal {
   void drain() {
     while (sub_.take(msg_)) {
       SignalSample s;
-      if (!detail::from_message(msg_, spec_->fields.size(), s)) {
-        ++malformed_;
-        continue;
-      }
-      ring_[slot(s.step)].sample = s;
+      if (guard_->accept(msg_, *spec_, s)) ring_[slot(s.step)].sample = s;
     }
   }
 
@@ -67,9 +65,9 @@ class RemoteSignal {
   static constexpr std::size_t kRing = 32;
   const SignalSpec* spec_;
   rt::Subscriber<msg::Signal> sub_;
+  detail::InputGuard* guard_;
   msg::Signal msg_;
   std::array<Entry, kRing> ring_{};
-  uint64_t malformed_ = 0;
 };
 
 }  // namespace
@@ -82,6 +80,7 @@ struct LockstepHost::Impl {
   scenario::Scenario& sc;
   scenario::StepExecutor exec;
   LockstepOptions opt;
+  detail::InputGuard guard{"lockstep host"};
   rt::Subscriber<msg::ClockStep> clock;
   std::vector<std::unique_ptr<RemoteSignal>> remote;  // indexed by signal (null if not remote)
   std::vector<rt::Publisher<msg::Signal>> out;        // indexed by signal (empty if not local)
@@ -95,7 +94,8 @@ struct LockstepHost::Impl {
     remote.resize(signals.size());
     out.resize(signals.size());
     for (std::size_t i : exec.remote_inputs())
-      remote[i] = std::make_unique<RemoteSignal>(signals[i], p.subscriber<msg::Signal>(signal_topic(signals[i].name), qos));
+      remote[i] = std::make_unique<RemoteSignal>(signals[i], p.subscriber<msg::Signal>(signal_topic(signals[i].name), qos),
+                                                 guard);
     for (std::size_t i : exec.local_outputs()) out[i] = p.publisher<msg::Signal>(signal_topic(signals[i].name), qos);
   }
 };
@@ -156,6 +156,7 @@ struct LockstepClock::Impl {
   LockstepOptions opt;
   rt::Publisher<msg::ClockStep> clock;
   std::vector<rt::Subscriber<msg::Signal>> subs;
+  detail::InputGuard guard{"lockstep clock"};
   msg::Signal in;
 
   Impl(scenario::Scenario& s, rt::Participant& p, const rt::QosProfile& qos, LockstepOptions o)
@@ -221,7 +222,10 @@ scenario::RunLog LockstepClock::run(const std::atomic<bool>& stop, const scenari
       const int64_t deadline = monotonic_ns() + timeout;
       for (;;) {
         if (m.subs[s].take(m.in)) {
-          if (!detail::from_message(m.in, signals[s].fields.size(), sample) || sample.step != k)
+          if (!m.guard.accept(m.in, signals[s], sample))
+            throw LockstepError("lockstep: refused the sample of '" + signals[s].name + "' from '" +
+                                signals[s].producer + "' for " + step_text(k) + " (reason logged above)");
+          if (sample.step != k)
             throw LockstepError("lockstep: '" + signals[s].name + "' sent step " + std::to_string(m.in.step_index()) +
                                 " while the clock is at " + step_text(k));
           log.record(s, sample);

@@ -10,6 +10,7 @@
 #include "plexus/base/input_error.hpp"
 #include "plexus/distributed/lockstep.hpp"
 #include "plexus/scenario/step_executor.hpp"
+#include "input_guard.hpp"
 #include "signal_codec.hpp"
 
 namespace plexus::distributed {
@@ -44,6 +45,7 @@ struct RealtimeHost::Impl {
   scenario::Scenario& sc;
   scenario::StepExecutor exec;
   RealtimeOptions opt;
+  detail::InputGuard guard{opt.service};
   std::vector<std::unique_ptr<RemoteLatest>> remote;  // by signal
   std::vector<rt::Publisher<msg::Signal>> out;        // by signal
   std::vector<int64_t> local_origin;                  // by signal: origin of the latest local sample
@@ -81,10 +83,9 @@ struct RealtimeHost::Impl {
 
   void drain(std::size_t signal) {
     RemoteLatest& r = *remote[signal];
-    const std::size_t width = exec.signals()[signal].fields.size();
     while (r.sub.take(in_msg)) {
       SignalSample s;
-      if (!detail::from_message(in_msg, width, s)) continue;  // malformed: counted by the reader
+      if (!guard.accept(in_msg, exec.signals()[signal], s)) continue;  // refused: counted and logged
       if (s.step < r.sample.step) continue;                    // older than what we have
       r.sample = s;
       r.received_ns = monotonic_ns();
@@ -96,7 +97,7 @@ struct RealtimeHost::Impl {
     hb.state(state);
     hb.loop_count(ls.iterations);
     hb.overruns(ls.overruns);
-    hb.rejected_inputs(report.stale_inputs);
+    hb.rejected_inputs(guard.rejected());
     hb.jitter_p50_us(ls.jitter_p50_us);
     hb.jitter_p99_us(ls.jitter_p99_us);
     hb.jitter_max_us(ls.jitter_max_us);
@@ -175,6 +176,7 @@ RealtimeReport RealtimeHost::run(const std::atomic<bool>& stop) {
     return k + 1 < ticks && !stop.load(std::memory_order_relaxed);
   });
   m.report.loop = loop.stats();
+  m.report.rejected_inputs = m.guard.rejected();
   m.publish_heartbeat(msg::SERVICE_DRAINING, m.report.loop);
   return m.report;
 }

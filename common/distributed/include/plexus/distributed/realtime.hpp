@@ -43,6 +43,7 @@ struct RealtimeReport {
   int64_t ticks = 0;
   uint64_t holds = 0;            ///< controller steps replaced by the safe output
   uint64_t stale_inputs = 0;     ///< input reads that found a stale sample
+  uint64_t rejected_inputs = 0;  ///< received samples refused at the edge (non-finite, malformed)
   rt::LoopStats loop;
 };
 
