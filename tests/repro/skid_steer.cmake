@@ -40,16 +40,19 @@ skid_repro(icr_terrain_switch_ekf icr_terrain_switch_ekf)
 skid_repro(icr_terrain_switch_ekf.second_switch_200s icr_terrain_switch_ekf
            --set "robots.r1.plant.schedule=[[0, concrete], [50, tile], [200, grass]]")
 
-# ---- section 4.2, classifier + reset. Known miss: the paper's "within 3 s" is not met
-# (measured 5.5 s: the reset comes 2 windows = 2 s after the switch, and the estimates then
-# need ~3.5 s to stay within 0.02 m). This test passes only while that is the ONE failing
-# expectation (classifier_accuracy >= 0.95 holds); it fails if the miss is fixed, so the
-# docs and this test get updated.
+# ---- section 4.2, classifier + reset. Two known misses, kept at the paper's values (the
+# scenario's comment and docs/algorithms/skid_steer.md give the measurements and reasons):
+# reconvergence_time_s (measured 5.5 s vs <= 3: 2 s to confirm the new terrain in two 1 s
+# windows, then 3.5 s until the estimates stay within 0.02 m) and odometry_ratio_akf_ekf
+# (measured 7.2 vs < 1: on this slalom the heading error made before the reset is frozen,
+# while the plain EKF's swings back). This test passes only while exactly these two
+# expectations fail (classifier accuracy and the ratio to no-slip hold); it fails if either
+# miss is fixed or another expectation breaks, so the docs and this test get updated.
 add_test(NAME repro.icr_terrain_switch_akf
          COMMAND ${CMAKE_COMMAND}
                  "-DCOMMAND=$<TARGET_FILE:plexus>|sim|${SKID_SCENARIOS}/icr_terrain_switch_akf.yaml|--quiet|--out|${SKID_RUNS}/icr_terrain_switch_akf"
                  -DEXPECT_RC=1
-                 "-DEXPECT_STDERR=^expectation failed: reconvergence_time_s = [0-9.]+, bound <= 3\n$"
+                 "-DEXPECT_STDERR=^expectation failed: reconvergence_time_s = [0-9.]+, bound <= 3\nexpectation failed: odometry_ratio_akf_ekf = [0-9.]+, bound < 1\n$"
                  -P ${PROJECT_SOURCE_DIR}/common/scenario/tests/cli/expect_cli.cmake)
 set_tests_properties(repro.icr_terrain_switch_akf PROPERTIES LABELS "repro")
 # Variants: the classifier stays >= 95 % accurate, the reset fires exactly once per switch,
@@ -64,6 +67,16 @@ skid_repro(icr_terrain_switch_akf.noisy_sensors icr_terrain_switch_akf --set rob
            --set robots.r1.sensors.wheels.noise_std=0.01 --set "${AKF_CHECK}")
 skid_repro(icr_terrain_switch_akf.k1_unscaled icr_terrain_switch_akf --set services.classifier.k=1
            --set services.classifier.scaling=none --set "${AKF_CHECK}")
+# Circles (1 s^-1 commanded turn rate): the turn rate no longer averages out, so the plain
+# EKF's biased ICRs accumulate heading error and the paper's Fig. 7 ordering holds (measured
+# AKF 0.52 m, EKF 2.8 m, no-slip 2.5 m); re-convergence 8.8 s (less excitation than the slalom).
+skid_repro(icr_terrain_switch_akf.circle icr_terrain_switch_akf --set services.driver.pattern=circle
+           --set services.driver.turn_rate=0.5
+           --set "expectations={classifier_accuracy: '>= 0.95', reconvergence_time_s: '< 10', odometry_ratio_akf_ekf: '< 1', odometry_ratio_akf_noslip: '< 0.5'}")
+# Overlapping classifier windows (hop 0.25 s; the paper does not give the hop): the change is
+# confirmed after 1.0 s (B) and 0.5 s (C) instead of 2.0 s, re-convergence 5.05 s (measured).
+skid_repro(icr_terrain_switch_akf.hop_0_25 icr_terrain_switch_akf --set services.classifier.hop_s=0.25
+           --set "${AKF_CHECK}")
 skid_repro(icr_terrain_switch_akf.k7_shrink_minmax icr_terrain_switch_akf --set services.classifier.k=7
            --set services.classifier.tie_rule=shrink_k --set services.classifier.scaling=min_max --set "${AKF_CHECK}")
 

@@ -18,10 +18,15 @@
 //     window_s (1.0): over the classifier's decisions in the window (a new `windows`
 //     count), the fraction whose class equals the true terrain, counting only decisions
 //     whose whole window (t - window_s, t] lay on one terrain. Series: 1 correct / 0 wrong.
+//   odometry_error_ratio  signal, other, reference (fields x, y): the position error of
+//     `signal` against `reference` at the end of the window divided by that of `other`
+//     (< 1 when `signal` is the better dead reckoning; paper 001 section 4.2 compares the
+//     odometry of the AKF with the EKF's and the no-slip model's, Fig. 7). Series: the ratio.
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "plexus/scenario/metric.hpp"
@@ -232,6 +237,42 @@ const MetricRegistration kAccuracy{
           r.series.emplace_back(ti, ok ? 1.0 : 0.0);
         }
         if (counted > 0) r.value = static_cast<double>(correct) / static_cast<double>(counted);
+        return r;
+      };
+    }};
+
+/// |(x, y) of `signal` - (x, y) of `reference` (held)| at each sample of `signal` in the window.
+std::vector<std::pair<double, double>> position_errors(const RunLog& log, const Columns& sig, const Columns& ref,
+                                                       double from, double to) {
+  const SignalTrace& a = *log.find(sig.signal);
+  Held reference{log.find(ref.signal)};
+  std::vector<std::pair<double, double>> out;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const double t = log.time(a.steps[i]);
+    const long r = reference.row(a.steps[i]);
+    if (r < 0 || !in_window(t, from, to, log.base_step)) continue;
+    const auto row = static_cast<std::size_t>(r);
+    out.emplace_back(t, std::hypot(a.at(i, sig.index[0]) - reference.trace->at(row, ref.index[0]),
+                                   a.at(i, sig.index[1]) - reference.trace->at(row, ref.index[1])));
+  }
+  return out;
+}
+
+const MetricRegistration kOdometryRatio{
+    "odometry_error_ratio", "final position error of one dead reckoning divided by another's (< 1: the first is better)",
+    [](const MetricSetup& s) -> MetricFunction {
+      const Columns sig = columns_of(s, "signal", {"x", "y"});
+      const Columns other = columns_of(s, "other", {"x", "y"});
+      const Columns ref = columns_of(s, "reference", {"x", "y"});
+      const auto [from, to] = s.window();
+      return [=](const RunLog& log) {
+        const auto a = position_errors(log, sig, ref, from, to);
+        const auto b = position_errors(log, other, ref, from, to);
+        MetricResult r;
+        for (std::size_t i = 0; i < a.size() && i < b.size(); ++i) {
+          if (a[i].first == b[i].first && b[i].second > 0.0) r.series.emplace_back(a[i].first, a[i].second / b[i].second);
+        }
+        if (!a.empty() && !b.empty() && b.back().second > 0.0) r.value = a.back().second / b.back().second;
         return r;
       };
     }};
