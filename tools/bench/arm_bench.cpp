@@ -20,7 +20,7 @@ ArmFeedback sample_feedback(int n) {
   ArmFeedback fb = ArmFeedback::zero(n);
   for (int i = 0; i < n; ++i) {
     fb.q(i) = 0.1 * std::sin(i + 1.0), fb.qd(i) = 0.3 * std::cos(i + 2.0), fb.qdd(i) = 0.5;
-    fb.tau(i) = 2.0, fb.taud(i) = 1.0, fb.phi(i) = fb.q(i) + 2e-4, fb.phid(i) = fb.qd(i);
+    fb.qddd(i) = 2.0, fb.tau(i) = 2.0, fb.taud(i) = 1.0, fb.phi(i) = fb.q(i) + 2e-4, fb.phid(i) = fb.qd(i);
   }
   return fb;
 }

@@ -25,7 +25,7 @@ FlexibleJointEkf::FlexibleJointEkf(const FlexibleJointEkfParams& p) : params_(p)
   const int m = 4 * n_;
   for (Vector* v : {&x_, &k1_, &k2_, &k3_, &k4_, &xt_}) *v = Vector::Zero(m);
   for (Matrix* a : {&p_, &fjac_, &p1_, &p2_, &p3_, &p4_, &pt_, &tmp_}) *a = Matrix::Zero(m, m);
-  for (Vector* v : {&q_, &qd_, &qdd_, &qdd_plus_, &qdd_minus_, &tau_, &qp_}) *v = Vector::Zero(n_);
+  for (Vector* v : {&q_, &qd_, &qdd_, &qdd_plus_, &qdd_minus_, &tau_, &qp_, &jq_, &jqd_, &jtau_}) *v = Vector::Zero(n_);
   innovation_ = y_prev_ = Vector::Zero(2 * n_);
   minv_ = a_ = b_ = Matrix::Zero(n_, n_);
   fb_ = ArmFeedback::zero(n_);
@@ -40,7 +40,7 @@ void FlexibleJointEkf::reset(const Vector& x0) {
   accel_.reset();
   has_y_prev_ = false;
   link_state(x_);
-  fb_.q = q_, fb_.qd = qd_, fb_.qdd.setZero();
+  fb_.q = q_, fb_.qd = qd_, fb_.qdd.setZero(), fb_.qddd.setZero();
   fb_.tau = x_.segment(0, n_), fb_.taud = x_.segment(n_, n_);
   fb_.phi = x_.segment(2 * n_, n_), fb_.phid = x_.segment(3 * n_, n_);
 }
@@ -60,6 +60,20 @@ void FlexibleJointEkf::dynamics(const Vector& x, const Vector& u, Vector& dx) {
   dx.segment(n_, n_) = k_.cwiseProduct(dx.segment(3 * n_, n_) - qdd_);
   dx.segment(0, n_) = x.segment(n_, n_);
   dx.segment(2 * n_, n_) = x.segment(3 * n_, n_);
+}
+
+void FlexibleJointEkf::link_jerk(const Vector& x) {
+  // Header comment: q''' by a central difference of the forward dynamics along (q', q'', tau')
+  // at x (q_, qd_, qdd_, tau_ hold the link state of x from dynamics()).
+  constexpr double e = 1e-5;  // s
+  const auto taud = x.segment(n_, n_);
+  for (const double sign : {1.0, -1.0}) {
+    jq_ = q_ + (sign * e) * qd_;
+    jqd_ = qd_ + (sign * e) * qdd_;
+    jtau_ = tau_ + (sign * e) * taud;
+    dyn_.forward_dynamics(jq_, jqd_, jtau_, sign > 0 ? qdd_plus_ : qdd_minus_);
+  }
+  fb_.qddd = (qdd_plus_ - qdd_minus_) / (2.0 * e);
 }
 
 void FlexibleJointEkf::jacobian(const Vector& x, const Vector& /*u*/, Matrix& f) {
@@ -156,6 +170,7 @@ void FlexibleJointEkf::update(const Vector& u, const Vector& y, double dt) {
   fb_.q = q_, fb_.qd = qd_;
   const Vector& differentiated = accel_.update(qd_);  // section 4: q'' by a filtered differentiator of q'
   fb_.qdd = params_.acceleration == LinkAcceleration::kModel ? qdd_ : differentiated;
+  link_jerk(x_);
   fb_.tau = x_.segment(0, n_), fb_.taud = x_.segment(n_, n_);
   fb_.phi = x_.segment(2 * n_, n_), fb_.phid = x_.segment(3 * n_, n_);
 }

@@ -33,11 +33,17 @@ void FlexibleJointArmPlant::reset(const FlexibleJointArmState& s) {
   state_ = s;
 }
 
-void FlexibleJointArmPlant::reset_at_rest(const Eigen::VectorXd& q) {
-  FlexibleJointArmState s{q, Eigen::VectorXd::Zero(n_), q, Eigen::VectorXd::Zero(n_)};
-  Eigen::VectorXd g(n_);
-  dyn_.bias(q, s.qd, g);
-  s.phi = q + g.cwiseQuotient(k_);
+void FlexibleJointArmPlant::reset_at_rest(const Eigen::VectorXd& q) { reset_in_motion(q, Eigen::VectorXd::Zero(n_)); }
+
+void FlexibleJointArmPlant::reset_in_motion(const Eigen::VectorXd& q, const Eigen::VectorXd& qd) {
+  if (q.size() != n_ || qd.size() != n_) {
+    validation::fail("flexible_joint_arm", "state size", "the number of joints " + std::to_string(n_),
+                     static_cast<double>(q.size() != n_ ? q.size() : qd.size()));
+  }
+  FlexibleJointArmState s{q, qd, q, qd};
+  Eigen::VectorXd bias(n_);
+  dyn_.bias(q, qd, bias);  // C(q, q') q' + G(q): the spring torque that gives q'' = 0
+  s.phi = q + bias.cwiseQuotient(k_);
   reset(s);
 }
 

@@ -104,8 +104,8 @@ VdcController::VdcController(const VdcParams& p) : params_(p), n_(p.model.dof())
     k.base_rotation.setIdentity();
   }
   const Eigen::VectorXd z = Eigen::VectorXd::Zero(n_);
-  qr_d_ = qr_dd_ = qr_ddd_ = tau_od_ = ts_ = ts_rate_ = u_ = z;
-  q_e_ = qd_e_ = qr_d_e_ = qr_dd_e_ = tau_od_e_ = z;
+  qr_d_ = qr_dd_ = qr_ddd_ = qr_dddd_ = tau_od_ = ts_ = ts_rate_ = u_ = z;
+  q_e_ = qd_e_ = qr_d_e_ = qr_dd_e_ = tau_od_1_ = tau_od_2_ = z;
   reset();
 }
 
@@ -174,29 +174,39 @@ void VdcController::adapt() {
 
 const Eigen::VectorXd& VdcController::step(const ArmReferenceSample& ref, const ArmFeedback& fb) {
   const VdcParams& p = params_;
-  // Eq. (19) and its first two derivatives.
+  // Eq. (19) and its first three derivatives (q_d'''' omitted, header comment).
   qr_d_ = ref.qd + p.lambda.cwiseProduct(ref.q - fb.q);
   qr_dd_ = ref.qdd + p.lambda.cwiseProduct(ref.qd - fb.qd);
   qr_ddd_ = ref.qddd + p.lambda.cwiseProduct(ref.qdd - fb.qdd);
-  // tau_od' by the directional difference (header comment), then tau_od itself, so the
-  // links keep the nominal pass for the adaptation below.
+  qr_dddd_ = p.lambda.cwiseProduct(ref.qddd - fb.qddd);
+  // tau_od' and tau_od'' (header comment): the link recursion at t = e and 2e along the
+  // second-order Taylor path of (q, q', q_r', q_r''), then at t = 0 last, so the links keep
+  // the nominal pass for the adaptation below.
   const double e = p.derivative_step;
-  q_e_ = fb.q + e * fb.qd;
-  qd_e_ = fb.qd + e * fb.qdd;
-  qr_d_e_ = qr_d_ + e * qr_dd_;
-  qr_dd_e_ = qr_dd_ + e * qr_ddd_;
-  required_link_torques(q_e_, qd_e_, qr_d_e_, qr_dd_e_, tau_od_e_);
+  for (const int m : {1, 2}) {
+    const double t = m * e, t2 = 0.5 * t * t;
+    q_e_ = fb.q + t * fb.qd + t2 * fb.qdd;
+    qd_e_ = fb.qd + t * fb.qdd + t2 * fb.qddd;
+    qr_d_e_ = qr_d_ + t * qr_dd_ + t2 * qr_ddd_;
+    qr_dd_e_ = qr_dd_ + t * qr_ddd_ + t2 * qr_dddd_;
+    required_link_torques(q_e_, qd_e_, qr_d_e_, qr_dd_e_, m == 1 ? tau_od_1_ : tau_od_2_);
+  }
   required_link_torques(fb.q, fb.qd, qr_d_, qr_dd_, tau_od_);
   adapt();
   for (int i = 0; i < n_; ++i) {
-    const double ev = qr_d_(i) - fb.qd(i);    // q_r' - q'
-    const double ea = qr_dd_(i) - fb.qdd(i);  // q_r'' - q''
+    const double ev = qr_d_(i) - fb.qd(i);      // q_r' - q'
+    const double ea = qr_dd_(i) - fb.qdd(i);    // q_r'' - q''
+    const double ej = qr_ddd_(i) - fb.qddd(i);  // q_r''' - q'''
     ts_rate_(i) = p_function_step(ts_(i), p.k_i(i), ev, p.ts_min(i), p.ts_max(i), p.step);     // (21)
+    const double ts_acc = (ts_(i) > p.ts_min(i) && ts_(i) < p.ts_max(i)) ? p.k_i(i) * ea : 0.0;
+    const double taud_od = (4.0 * tau_od_1_(i) - 3.0 * tau_od_(i) - tau_od_2_(i)) / (2.0 * e);
+    const double taudd_od = (tau_od_(i) - 2.0 * tau_od_1_(i) + tau_od_2_(i)) / (e * e);
     const double tau_r = tau_od_(i) + p.k_p(i) * ev + ts_(i);                                   // (20)
-    const double taud_r = (tau_od_e_(i) - tau_od_(i)) / e + p.k_p(i) * ea + ts_rate_(i);
+    const double taud_r = taud_od + p.k_p(i) * ea + ts_rate_(i);
+    const double taudd_r = taudd_od + p.k_p(i) * ej + ts_acc;
     const double phi_d = fb.q(i) + tau_r / stiffness_(i);                                       // (22)
     const double phid_d = fb.qd(i) + taud_r / stiffness_(i);
-    const double phidd_d = fb.qdd(i);
+    const double phidd_d = fb.qdd(i) + taudd_r / stiffness_(i);
     const double phir_d = phid_d + p.lambda_q(i) * ev + p.lambda_phi(i) * (phi_d - fb.phi(i)) +
                           p.lambda_tau(i) * (tau_r - fb.tau(i));                                // (23)
     const double phir_dd = phidd_d + p.lambda_q(i) * ea + p.lambda_phi(i) * (phid_d - fb.phid(i)) +

@@ -9,7 +9,8 @@
 //   gravity: [gx, gy, gz]              m/s^2 in the base frame (default [9.81, 0, 0]: q = 0 hangs)
 //   payload_mass                       kg at the tip of the last link (default 0)
 //
-//   flexible_joint_arm (plant): + q0 (list, default 0: at rest, springs loaded by gravity),
+//   flexible_joint_arm (plant): + q0 (list, default 0), dq0 (list, default 0: at rest): the
+//       arm starts in steady motion at (q0, dq0), motors at dq0, springs holding C q' + G;
 //       max_substep (s, default 1e-4: RK4 sub-step inside each plant period).
 //       in cmd {u1..un}; out state {q1..qn, dq1..dqn} (link side, truth for metrics),
 //       motor {phi1..phin, dphi1..dphin}, torque {tau1..taun}.
@@ -18,8 +19,8 @@
 //   arm_ekf (estimator): model keys + q (4), r (0.1), p0 (1), substeps (1), jacobian
 //       (full | paper), acceleration (model | differentiator), accel_filter_hz (50).
 //       in encoder_position {phi1..}, encoder_velocity {dphi1..}, cmd {u1..};
-//       out estimate {q1.., dq1.., ddq1..}, joint_estimate {tau1.., dtau1.., phi1.., dphi1..}.
-//       At its first step it assumes the arm at rest: x^ = [G(phi), 0, phi, phi'].
+//       out estimate {q1.., dq1.., ddq1.., dddq1..}, joint_estimate {tau1.., dtau1.., phi1.., dphi1..}.
+//       At its first step it assumes steady motion: x^ = [C(phi, phi') phi' + G(phi), 0, phi, phi'].
 //   arm_vdc (controller): model keys + k_b, rho, lambda, k_p, k_i, ts_min, ts_max, lambda_q,
 //       lambda_phi, lambda_tau, k_phi, k_tau (lists; default Table 3), theta_lower (0.6),
 //       theta_upper (1.8), theta_initial (1.0). in reference, estimate, joint_estimate; out cmd.
@@ -123,7 +124,8 @@ class FlexibleJointArmComponent final : public Component {
         state_(add_output("state", concat({names("q", n_), names("dq", n_)}))),
         motor_(add_output("motor", concat({names("phi", n_), names("dphi", n_)}))),
         torque_(add_output("torque", names("tau", n_))) {
-    plant_.reset_at_rest(number_list(c.params(), "q0", n_, Eigen::VectorXd::Zero(n_)));
+    const Eigen::VectorXd zero = Eigen::VectorXd::Zero(n_);
+    plant_.reset_in_motion(number_list(c.params(), "q0", n_, zero), number_list(c.params(), "dq0", n_, zero));
   }
 
   void step(int64_t k, double /*t*/) override {
@@ -226,7 +228,7 @@ class ArmEkfComponent final : public Component {
         pos_(add_input("encoder_position", names("phi", n_))),
         vel_(add_input("encoder_velocity", names("dphi", n_))),
         cmd_(add_input("cmd", names("u", n_))),
-        estimate_(add_output("estimate", concat({names("q", n_), names("dq", n_), names("ddq", n_)}))),
+        estimate_(add_output("estimate", concat({names("q", n_), names("dq", n_), names("ddq", n_), names("dddq", n_)}))),
         joint_(add_output("joint_estimate", concat({names("tau", n_), names("dtau", n_), names("phi", n_), names("dphi", n_)}))) {}
 
   void step(int64_t /*k*/, double /*t*/) override {
@@ -236,9 +238,10 @@ class ArmEkfComponent final : public Component {
       y_(n_ + i) = vel_[static_cast<std::size_t>(i)];
     }
     if (!started_) {
-      // At rest: tau = G(q) with q ~ phi (the springs hold the arm against gravity).
+      // Steady motion (at rest when phi' = 0): q ~ phi, q' ~ phi', q'' = 0, so
+      // tau = C(q, q') q' + G(q) and tau' = 0 (the springs hold the arm).
       const Eigen::VectorXd zero = Eigen::VectorXd::Zero(n_);
-      rest_.bias(y_.head(n_), zero, g_);
+      rest_.bias(y_.head(n_), y_.tail(n_), g_);
       x0_ << g_, zero, y_;
       ekf_.reset(x0_);
       started_ = true;
@@ -250,7 +253,7 @@ class ArmEkfComponent final : public Component {
     for (int i = 0; i < n_; ++i) {
       const auto a = static_cast<std::size_t>(i);
       const auto n = static_cast<std::size_t>(n_);
-      estimate_[a] = fb.q(i), estimate_[n + a] = fb.qd(i), estimate_[2 * n + a] = fb.qdd(i);
+      estimate_[a] = fb.q(i), estimate_[n + a] = fb.qd(i), estimate_[2 * n + a] = fb.qdd(i), estimate_[3 * n + a] = fb.qddd(i);
       joint_[a] = fb.tau(i), joint_[n + a] = fb.taud(i), joint_[2 * n + a] = fb.phi(i), joint_[3 * n + a] = fb.phid(i);
     }
   }
@@ -279,7 +282,7 @@ class ArmControllerBase : public Component {
       : Component(c),
         n_(n),
         ref_(add_input("reference", concat({names("q", n), names("dq", n), names("ddq", n), names("dddq", n)}))),
-        est_(add_input("estimate", concat({names("q", n), names("dq", n), names("ddq", n)}))),
+        est_(add_input("estimate", concat({names("q", n), names("dq", n), names("ddq", n), names("dddq", n)}))),
         joint_(add_input("joint_estimate", concat({names("tau", n), names("dtau", n), names("phi", n), names("dphi", n)}))),
         cmd_(add_output("cmd", names("u", n))) {
     const Eigen::VectorXd z = Eigen::VectorXd::Zero(n);
@@ -294,7 +297,7 @@ class ArmControllerBase : public Component {
       const auto a = static_cast<std::size_t>(i);
       const auto n = static_cast<std::size_t>(n_);
       sample_.q(i) = ref_[a], sample_.qd(i) = ref_[n + a], sample_.qdd(i) = ref_[2 * n + a], sample_.qddd(i) = ref_[3 * n + a];
-      fb_.q(i) = est_[a], fb_.qd(i) = est_[n + a], fb_.qdd(i) = est_[2 * n + a];
+      fb_.q(i) = est_[a], fb_.qd(i) = est_[n + a], fb_.qdd(i) = est_[2 * n + a], fb_.qddd(i) = est_[3 * n + a];
       fb_.tau(i) = joint_[a], fb_.taud(i) = joint_[n + a], fb_.phi(i) = joint_[2 * n + a], fb_.phid(i) = joint_[3 * n + a];
     }
     return true;

@@ -29,6 +29,10 @@
 //  - kDifferentiator: a filtered differentiator of q^' (the paper's section 4, cutoff
 //    `accel_filter_hz`). Its lag destabilises the VDC phi_r'' loop at 1 kHz (measured, see
 //    docs/algorithms/arm.md), so it is not the default.
+// q^''' (the VDC's phi_r'' needs tau_r'' and so the link jerk): always from the model, the
+// central difference of the forward dynamics along the estimate's own derivative,
+//   q''' = [FD(q + e q', q' + e q'', tau + e tau') - FD(q - e q', q' - e q'', tau - e tau')] / 2e,
+// e = 1e-5 s, with q'' the model's (algebraic, no lag; the link side of eq. (35)).
 #pragma once
 
 #include <Eigen/Core>
@@ -79,11 +83,12 @@ class FlexibleJointEkf {
 
   const Vector& state() const { return x_; }
   const Matrix& covariance() const { return p_; }
-  /// Link- and motor-side feedback from the estimate (q, q', q'', tau, tau', phi, phi').
+  /// Link- and motor-side feedback from the estimate (q, q', q'', q''', tau, tau', phi, phi').
   const ArmFeedback& feedback() const { return fb_; }
 
  private:
   void link_state(const Vector& x);  // fills q_, qd_ from x
+  void link_jerk(const Vector& x);   // fb_.qddd at x, after dynamics(x, ...)
   void riccati(const Matrix& p, Matrix& dp);
 
   FlexibleJointEkfParams params_;
@@ -93,6 +98,7 @@ class FlexibleJointEkf {
   Vector x_, k1_, k2_, k3_, k4_, xt_, innovation_;
   Matrix p_, fjac_, p1_, p2_, p3_, p4_, pt_, tmp_;
   Vector q_, qd_, qdd_, qdd_plus_, qdd_minus_, tau_, qp_;
+  Vector jq_, jqd_, jtau_;  ///< shifted link state of the jerk difference
   Matrix minv_, a_, b_;
   Vector y_prev_;
   bool has_y_prev_ = false;

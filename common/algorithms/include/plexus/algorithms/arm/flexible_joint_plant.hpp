@@ -42,6 +42,9 @@ class FlexibleJointArmPlant {
   void reset(const FlexibleJointArmState& state);
   /// At rest at q with phi = q + K^{-1} G(q) (the springs hold the arm against gravity).
   void reset_at_rest(const Eigen::VectorXd& q);
+  /// In steady motion at (q, q'): motors at phi' = q', springs holding C(q, q') q' + G(q), so
+  /// q'' = 0 and tau' = 0 at the start. reset_at_rest(q) is reset_in_motion(q, 0).
+  void reset_in_motion(const Eigen::VectorXd& q, const Eigen::VectorXd& qd);
 
   /// Advances by dt seconds with motor torque u (and disturbance u_d) held. No allocation.
   void step(const Eigen::VectorXd& u, double dt);

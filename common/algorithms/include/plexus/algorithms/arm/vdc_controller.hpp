@@ -16,21 +16,25 @@
 //   phi_d = q + tau_r / K                                            (22)
 //   phi_r' = phi_d' + lambda_q (q_r' - q') + lambda_phi (phi_d - phi) + lambda_tau (tau_r - tau)   (23)
 //   u = J phi_r'' + F phi_r' + k_phi (phi_r' - phi') + tau_r + k_tau (tau_r - tau)                (18)
-// with the time derivatives built from the signals the paper lists as needed (q, q', q'',
-// phi, phi', tau, tau'; section 4) and the reference up to q_d''' (the paper is silent on
-// how; docs/algorithms/arm.md):
-//   q_r''' = q_d''' + lambda (q_d'' - q''),   tau_r' = tau_od' + k_p (q_r'' - q'') + t_s',
-//   phi_d' = q' + tau_r'/K,   phi_d'' = q'' (the tau_r''/K term is dropped),
+// with the time derivatives built algebraically from the signals the paper lists as needed
+// (q, q', q'', phi, phi', tau, tau'; section 4), the link jerk q''' (from the observer's
+// model) and the reference up to q_d''' (the paper is silent on how; docs/algorithms/arm.md):
+//   q_r''' = q_d''' + lambda (q_d'' - q''),   q_r'''' = lambda (q_d''' - q''') (q_d'''' omitted),
+//   tau_r' = tau_od' + k_p (q_r'' - q'') + t_s',   tau_r'' = tau_od'' + k_p (q_r''' - q''') + t_s'',
+//   phi_d' = q' + tau_r'/K,   phi_d'' = q'' + tau_r''/K,
 //   phi_r'' = phi_d'' + lambda_q (q_r'' - q'') + lambda_phi (phi_d' - phi') + lambda_tau (tau_r' - tau'),
-// and tau_od' the directional difference of the link recursion along the state's own
-// derivative: [tau_od(q + e q', q' + e q'', q_r' + e q_r'', q_r'' + e q_r''') - tau_od] / e
-// (exact to O(e), no time lag; the adaptation rate's contribution Y theta^' is neglected).
-// Numerical differentiation in time (filtered) is NOT used: its lag destabilises the
-// phi_r'' loop at 1 kHz (measured; see the docs). Gravity enters through
-// G_B = M_B [-g_B; 0] in the regressor.
+// i.e. phi_r'' is the exact time derivative of (23). tau_od' and tau_od'' come from the link
+// recursion T evaluated at t = 0, e, 2e along the second-order Taylor path of
+// (q, q', q_r', q_r''): tau_od' = (4 T(e) - 3 T(0) - T(2e)) / 2e, tau_od'' = (T(0) - 2 T(e) +
+// T(2e)) / e^2 (no time lag; the adaptation rate's contribution Y theta^' is neglected).
+// The tau_r''/K term matters: its k_p q''' part (q''' ~ M^{-1} tau') feeds the spring rate
+// back into the motor (J k_p / M ~ 250 N m s/rad on joint 2) and damps the joint-spring
+// mode. Numerical differentiation in time (filtered) is NOT used: its lag destabilises the
+// phi_r'' loop (measured; see the docs). Gravity enters through G_B = M_B [-g_B; 0] in the
+// regressor.
 //
-// Every step is O(n): one pass base->tip and one tip->base, fixed-size 6x13 regressors
-// per link; no allocation after construction.
+// Every step is O(n): three base->tip / tip->base passes of the link recursion (t = 0, e,
+// 2e), fixed-size 6x13 regressors per link; no allocation after construction.
 #pragma once
 
 #include <vector>
@@ -55,7 +59,7 @@ struct VdcParams {
   double theta_upper = 1.8;    ///< upper bound (1.8 = 180 %), > theta_lower
   double theta_initial = 1.0;  ///< theta^(0) as a fraction of the nominal value, in [lower, upper]
   double step = 1e-3;                  ///< s, controller period, > 0
-  double derivative_step = 1e-6;       ///< s, > 0: look-ahead of the tau_od' directional difference
+  double derivative_step = 1e-4;       ///< s, > 0: spacing e of the tau_od', tau_od'' differences
 
   /// Table 3 gains for the paper's 2-DoF arm.
   static VdcParams paper_2dof();
@@ -107,8 +111,8 @@ class VdcController {
   int n_;
   std::vector<Link> links_;
   Eigen::VectorXd stiffness_, motor_inertia_, friction_;
-  Eigen::VectorXd qr_d_, qr_dd_, qr_ddd_, tau_od_, ts_, ts_rate_, u_;
-  Eigen::VectorXd q_e_, qd_e_, qr_d_e_, qr_dd_e_, tau_od_e_;
+  Eigen::VectorXd qr_d_, qr_dd_, qr_ddd_, qr_dddd_, tau_od_, ts_, ts_rate_, u_;
+  Eigen::VectorXd q_e_, qd_e_, qr_d_e_, qr_dd_e_, tau_od_1_, tau_od_2_;
 };
 
 }  // namespace plexus::algorithms
