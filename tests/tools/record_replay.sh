@@ -1,9 +1,12 @@
 #!/usr/bin/env bash
-# record_replay.sh BIN_DIR VENDOR DOMAIN WORK_DIR: records 50 samples of a live topic,
-# replays them (--verbatim) while recording again, and checks that both recordings hold the
-# same samples (same count and CDR digest per topic, from `plexus replay --summary`).
+# record_replay.sh BIN_DIR VENDOR DOMAIN WORK_DIR [REPLAY_ARGS...]: records 50 samples of a
+# live topic, replays them (--verbatim, then REPLAY_ARGS: default `--rate-scale 2`) while
+# recording again, and checks that both recordings hold the same samples (same count and
+# CDR digest per topic, from `plexus replay --summary`).
 set -eu
 bin=$1 vendor=$2 domain=$3 work=$4
+shift 4
+[ $# -gt 0 ] || set -- --rate-scale 2
 mkdir -p "$work"
 a=$work/a.sqlite b=$work/b.sqlite
 "$bin/topic_peer" pub --dds "$vendor" --domain "$domain" --topic tools/replayed --profile sensor_reliable --rate 100 --count 50 --duration 30 --wait-reader &
@@ -13,7 +16,7 @@ wait $peer || true
 "$bin/plexus" record --dds "$vendor" --domain "$domain" --topics tools/replayed -o "$b" --count 50 --duration 25 --wait 10 &
 rec=$!
 sleep 0.2
-"$bin/plexus" replay --dds "$vendor" --domain "$domain" --verbatim --rate-scale 2 --wait 10 "$a"
+"$bin/plexus" replay --dds "$vendor" --domain "$domain" --verbatim --wait 10 "$@" "$a"
 wait $rec
 sa=$("$bin/plexus" replay --summary "$a")
 sb=$("$bin/plexus" replay --summary "$b")

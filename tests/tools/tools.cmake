@@ -70,6 +70,27 @@ add_test(NAME tools.latency_probe_cyclone_to_fast
 set_tests_properties(tools.latency_probe_fast_to_cyclone tools.latency_probe_cyclone_to_fast PROPERTIES
                      LABELS "tools;multiprocess;interop" TIMEOUT 120 PASS_REGULAR_EXPRESSION "\"received\":100")
 
+# Replay's other pacing modes: a fixed rate, and as fast as possible (depth-64 reliable
+# writers, so no sample is overwritten before the recorder has it).
+add_test(NAME tools.replay_rate_fast
+         COMMAND ${TOOLS_DIR}/record_replay.sh ${BIN_DIR} fast 220 ${CMAKE_BINARY_DIR}/test-runs/tools/replay_rate_fast --rate 200)
+add_test(NAME tools.replay_fast_cyclone
+         COMMAND ${TOOLS_DIR}/record_replay.sh ${BIN_DIR} cyclone 221 ${CMAKE_BINARY_DIR}/test-runs/tools/replay_fast_cyclone
+                 --fast --qos lockstep)
+# Replay in lockstep standing in for the plant simulator: the services must compute exactly
+# the recorded run's signals. Both vendors, and a Cyclone replay feeding Fast DDS services.
+foreach(pair "fast;fast;222" "cyclone;cyclone;223" "fast;cyclone;224")
+  list(GET pair 0 launch_vendor)
+  list(GET pair 1 replay_vendor)
+  list(GET pair 2 domain)
+  set(name tools.replay_stands_in_for_plant_${launch_vendor}_${replay_vendor})
+  add_test(NAME ${name}
+           COMMAND ${TOOLS_DIR}/replay_stands_in.sh ${PLEXUS_CLI} ${PROJECT_SOURCE_DIR}/deploy/scenarios/wmr_output_feedback_rfid.yaml
+                   ${launch_vendor} ${replay_vendor} ${domain} ${CMAKE_BINARY_DIR}/test-runs/tools/${name})
+  set_tests_properties(${name} PROPERTIES LABELS "tools;multiprocess;lockstep" TIMEOUT 180)
+endforeach()
+set_tests_properties(tools.replay_rate_fast tools.replay_fast_cyclone PROPERTIES LABELS "tools;multiprocess" TIMEOUT 120)
+
 # The periodic loop against cyclictest (short; priority refused -> warning, still runs).
 add_test(NAME tools.latency_loop
          COMMAND ${PLEXUS_CLI} latency loop --rate 1000 --duration 1 --json --out ${CMAKE_BINARY_DIR}/test-runs/tools/loop)
@@ -95,6 +116,12 @@ add_test(NAME tools.unknown_profile COMMAND ${EXPECT} 2 "unknown QoS profile 'fa
          ${PLEXUS_CLI} latency pingpong --profile fastest)
 add_test(NAME tools.bad_peer_vendor COMMAND ${EXPECT} 2 "--peer-dds: unknown DDS vendor 'rti'"
          ${PLEXUS_CLI} latency pingpong --peer-dds rti)
+set(CIRCLE ${PROJECT_SOURCE_DIR}/deploy/scenarios/unicycle_circle.yaml)
+add_test(NAME tools.launch_unknown_external COMMAND ${EXPECT} 2 "--external plant: no such process"
+         ${PLEXUS_CLI} launch ${CIRCLE} --external plant --domain 225)
+add_test(NAME tools.launch_record_bad_file COMMAND ${EXPECT} 2 "/nonexistent/dir/x.sqlite: cannot create recording"
+         ${PLEXUS_CLI} launch ${CIRCLE} --record /nonexistent/dir/x.sqlite --domain 225)
 set_tests_properties(tools.bad_topic_type tools.bad_vendor tools.missing_run_file tools.replay_missing_file
                      tools.record_bad_file tools.bad_loop_rate tools.bad_pingpong_size tools.unknown_profile
-                     tools.bad_peer_vendor PROPERTIES LABELS "cli;tools")
+                     tools.bad_peer_vendor tools.launch_unknown_external tools.launch_record_bad_file
+                     PROPERTIES LABELS "cli;tools")

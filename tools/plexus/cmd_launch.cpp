@@ -22,6 +22,7 @@
 #include "child_process.hpp"
 #include "command.hpp"
 #include "run_result.hpp"
+#include "signal_recorder.hpp"
 #include "plexus/base/clock.hpp"
 #include "plexus/base/input_error.hpp"
 #include "plexus/base/logging.hpp"
@@ -44,7 +45,8 @@ struct LaunchOptions {
   std::vector<std::string> sets;
   std::vector<std::string> vendors;  // PROCESS=VENDOR
   std::vector<std::string> kills;    // PROCESS@SECONDS (fault injection, realtime)
-  std::string dds, out, qos_file, host;
+  std::vector<std::string> externals;  // processes provided from outside (replay, hardware bridge)
+  std::string dds, out, qos_file, host, record;
   int domain = -1;
   double timeout = 10.0;
   bool json = false, quiet = false;
@@ -259,6 +261,17 @@ int run_launch(const LaunchOptions& o) {
     rt::parse_vendor(v.substr(eq + 1), "--vendor " + v);
     vendor_of[v.substr(0, eq)] = v.substr(eq + 1);
   }
+  // --external: a process the scenario declares but something else provides (plexus replay,
+  // a hardware bridge) on the same topics. Not started; the lockstep clock still waits for it.
+  for (const auto& e : o.externals) {
+    const auto all = plan(sc, "");
+    if (std::none_of(all.begin(), all.end(), [&](const Process& p) { return p.name == e; }))
+      throw InputError("--external " + e + ": no such process (processes: plant_simulator or a service name)");
+    procs.erase(std::remove_if(procs.begin(), procs.end(), [&](const Process& p) { return p.name == e; }), procs.end());
+  }
+  auto is_external = [&](const Process& p) {
+    return std::find(o.externals.begin(), o.externals.end(), p.name) != o.externals.end();
+  };
   for (auto& p : procs) p.vendor = vendor_of.count(p.name) ? vendor_of[p.name] : vendor;
   for (const auto& p : plan(sc, "")) vendor_of.erase(p.name);  // names of processes on any host are fine
   if (!vendor_of.empty())
@@ -268,6 +281,14 @@ int run_launch(const LaunchOptions& o) {
   for (const auto& c : sc.components)
     if (!c.qos.empty() && !profiles.contains(c.qos))
       throw InputError(c.where + ".qos: unknown QoS profile '" + c.qos + "' in " + qos_file);
+
+  std::unique_ptr<SignalRecorder> recorder;
+  if (!o.record.empty()) {
+    if (sc.clock == scenario::ClockMode::realtime)
+      throw InputError("--record: records what the lockstep clock receives; in realtime mode run `plexus record`");
+    if (!runs_clock) throw InputError("--record: only the host running the clock (" + sc.hosts.front() + ") records");
+    recorder = std::make_unique<SignalRecorder>(o.record, qos);  // file errors: exit 2 before anything starts
+  }
 
   init_logging("launch", "", o.quiet ? "error" : "warn");
   std::signal(SIGINT, on_signal);
@@ -372,7 +393,8 @@ int run_launch(const LaunchOptions& o) {
   if (realtime) {
     RealtimeResult r;
     try {
-      std::vector<Process> all = everywhere;
+      std::vector<Process> all = everywhere;  // monitored through heartbeats: not the external ones
+      all.erase(std::remove_if(all.begin(), all.end(), is_external), all.end());
       r = run_realtime(sc, *participant, profiles, all, 30.0, fault);
       run_active = false;
     } catch (const distributed::LockstepError& e) {
@@ -405,13 +427,15 @@ int run_launch(const LaunchOptions& o) {
     clock.wait_ready(static_cast<int>(everywhere.size()), 30.0, g_stop);
     scenario::ProgressBar bar(!o.quiet);
     const int64_t start = monotonic_ns();
-    log = clock.run(g_stop, [&](int64_t k, int64_t n) { bar.update(k, n); });
+    log = clock.run(g_stop, [&](int64_t k, int64_t n) { bar.update(k, n); },
+                    recorder ? recorder->tap(clock.signals()) : distributed::LockstepClock::SampleTap{});
     wall = static_cast<double>(monotonic_ns() - start) * 1e-9;
     bar.finish();
   } catch (const distributed::LockstepError& e) {
     return failure(e.what());
   }
   stop_all();
+  if (recorder) recorder->write();
 
   const double steps_per_s = wall > 0 ? static_cast<double>(sc.steps + 1) / wall : 0.0;
   RunSummary summary;
@@ -433,6 +457,10 @@ Command add_launch_command(CLI::App& root) {
   c.app->add_option("--host", o->host, "Start only the processes assigned to this host of the scenario");
   c.app->add_option("--dds", o->dds, "DDS vendor of every process (default: the scenario's, else fast)");
   c.app->add_option("--kill", o->kills, "Fault injection (realtime): SIGKILL PROCESS at SECONDS, as PROCESS@SECONDS");
+  c.app->add_option("--external", o->externals,
+                     "Do not start PROCESS: plexus replay or a hardware bridge provides its topics (repeatable)");
+  c.app->add_option("--record", o->record,
+                    "Lockstep: write every signal sample the clock receives to this recording (plexus replay)");
   c.app->add_option("--vendor", o->vendors, "Vendor of one process: PROCESS=fast|cyclone (repeatable)");
   c.app->add_option("--domain", o->domain, "DDS domain id (default: the scenario's)")->check(CLI::Range(0, 232));
   c.app->add_option("--set", o->sets, "Override a scenario value: dotted.key=value (repeatable)");

@@ -1,6 +1,8 @@
 // plexus replay FILE: publishes a recording (plexus record) again, at the recorded speed
 // (--rate-scale), at a fixed rate, as fast as possible, or one step per clock tick
-// (--lockstep). Replayed data stands in for the simulator: same topics, same types.
+// (--lockstep). Replayed data stands in for the simulator: same topics, same types
+// (`plexus launch SCENARIO --record FILE`, then `plexus launch SCENARIO --external
+// plant_simulator` with `plexus replay --lockstep FILE --topics <the plant's sig/ topics>`).
 //
 // Header times: by default seq_num and data_time_ns are kept and origin/publish times are
 // shifted by (replay start - recording start), so hop latencies downstream stay
@@ -16,6 +18,7 @@
 #include "command.hpp"
 #include "plexus/base/clock.hpp"
 #include "plexus/base/input_error.hpp"
+#include "plexus/distributed/lockstep.hpp"
 #include "plexus/msg/messages.hpp"
 #include "recording.hpp"
 #include "topic_discovery.hpp"
@@ -132,10 +135,10 @@ int run_replay(const ReplayOpts& o) {
   void* tick = nullptr;
   const auto& clock_ts = msg::type_support<msg::ClockStep>();
   if (o.lockstep) {
-    rt::QosProfile cq;
-    cq.reliability = rt::QosProfile::Reliability::reliable;
-    cq.depth = 64;
-    clock = p->make_reader(clock_ts, o.clock_topic, cq);
+    // The profile every lockstep host follows the clock with (transient-local: the first
+    // tick is not lost to a reader that matched a moment after the clock saw it).
+    clock = p->make_reader(clock_ts, o.clock_topic,
+                           rt::QosProfiles::load(o.qos_file.empty() ? rt::default_qos_file() : o.qos_file).get("lockstep"));
     tick = clock_ts.create();
   }
 
@@ -145,15 +148,19 @@ int run_replay(const ReplayOpts& o) {
   uint64_t published = 0, failed = 0;
   std::size_t i = 0;
   while (i < msgs.size() && !g_stop) {
-    // The group published now: one sample, or (lockstep) every sample sharing a data time.
+    // The group published now: one sample, or (lockstep) every sample whose data time is
+    // due at the clock's step (header data time <= the step's simulated time).
     std::size_t group_end = i + 1;
     if (o.lockstep) {
-      while (group_end < msgs.size() && msgs[group_end].data_time_ns == msgs[i].data_time_ns) ++group_end;
       bool got = false;
       while (!got && !g_stop) {
         if (clock->wait(50'000'000)) got = clock->take(tick, nullptr);
       }
       if (!got) break;
+      const auto& t = *static_cast<const msg::ClockStep*>(tick);
+      if (t.step_index() == distributed::kEndOfRun) break;
+      group_end = i;
+      while (group_end < msgs.size() && msgs[group_end].data_time_ns <= t.sim_time_ns()) ++group_end;
     } else if (o.rate > 0) {
       sleep_until(start_mono + static_cast<int64_t>(static_cast<double>(i) * 1e9 / o.rate));
     } else if (!o.fast) {
@@ -200,7 +207,8 @@ Command add_replay_command(CLI::App& root) {
   c.app->add_option("--rate", o->rate, "publish one sample every 1/HZ seconds instead");
   c.app->add_flag("--fast", o->fast, "as fast as possible");
   c.app->add_flag("--lockstep", o->lockstep,
-                  "one recorded step (the samples sharing a header data time) per ClockStep on --clock-topic");
+                  "follow the lockstep clock on --clock-topic: at each ClockStep, the samples whose header data time "
+                  "is due (<= the step's time); stops at the end of the run");
   c.app->add_option("--clock-topic", o->clock_topic, "clock topic for --lockstep")->capture_default_str();
   c.app->add_flag("--verbatim", o->verbatim, "keep the recorded header times (byte-identical samples)");
   c.app->add_option("--wait", o->wait, "seconds to wait for subscribers before starting")->capture_default_str();

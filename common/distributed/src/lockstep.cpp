@@ -190,7 +190,10 @@ void LockstepClock::wait_ready(int hosts, double timeout_s, const std::atomic<bo
   }
 }
 
-scenario::RunLog LockstepClock::run(const std::atomic<bool>& stop, const scenario::StepObserver& observer) {
+const std::vector<SignalSpec>& LockstepClock::signals() const { return impl_->exec.signals(); }
+
+scenario::RunLog LockstepClock::run(const std::atomic<bool>& stop, const scenario::StepObserver& observer,
+                                    const SampleTap& tap) {
   Impl& m = *impl_;
   const auto& signals = m.exec.signals();
   scenario::RunLog log;
@@ -208,6 +211,7 @@ scenario::RunLog LockstepClock::run(const std::atomic<bool>& stop, const scenari
   const int64_t step_ns = to_ns(m.sc.step);
   msg::ClockStep tick;
   SignalSample sample;
+  rt::SampleMeta meta;
   for (int64_t k = 0; k <= m.sc.steps; ++k) {
     if (stop.load(std::memory_order_relaxed)) throw LockstepError("lockstep: stopped at " + step_text(k));
     tick.step_index(static_cast<uint64_t>(k));
@@ -221,7 +225,8 @@ scenario::RunLog LockstepClock::run(const std::atomic<bool>& stop, const scenari
       if (k % signals[s].period_steps != 0) continue;
       const int64_t deadline = monotonic_ns() + timeout;
       for (;;) {
-        if (m.subs[s].take(m.in)) {
+        if (m.subs[s].take(m.in, &meta)) {
+          if (tap) tap(s, m.in, meta);
           if (!m.guard.accept(m.in, signals[s], sample))
             throw LockstepError("lockstep: refused the sample of '" + signals[s].name + "' from '" +
                                 signals[s].producer + "' for " + step_text(k) + " (reason logged above)");

@@ -17,6 +17,7 @@
 
 #include <atomic>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -74,8 +75,14 @@ class LockstepClock {
   /// LockstepError naming what is missing after `timeout_s`.
   void wait_ready(int hosts, double timeout_s, const std::atomic<bool>& stop);
 
+  /// Called with every signal sample the clock takes (signal index, the message as received,
+  /// its metadata), for `plexus launch --record`.
+  using SampleTap = std::function<void(std::size_t signal, const msg::Signal&, const rt::SampleMeta&)>;
   /// Runs every step and returns the log (the same as `plexus sim`'s). Throws LockstepError.
-  scenario::RunLog run(const std::atomic<bool>& stop, const scenario::StepObserver& observer = {});
+  scenario::RunLog run(const std::atomic<bool>& stop, const scenario::StepObserver& observer = {},
+                       const SampleTap& tap = {});
+  /// The scenario's signals, by the index SampleTap reports.
+  const std::vector<scenario::SignalSpec>& signals() const;
 
  private:
   struct Impl;
