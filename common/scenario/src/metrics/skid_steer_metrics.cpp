@@ -14,6 +14,13 @@
 //     within `tolerance` of the truth and stays so until the next switch (or the end);
 //     value: the largest over the switches; a switch that never re-converges counts as
 //     the run length (the duration). NaN if the truth never changes. Series: largest error.
+//     `switch: N` (1-based) reports the N-th switch only (NaN if there are fewer).
+//   icr_reconvergence_rise_time  estimate, truth, fraction (0.9), switch: the paper's own
+//     convergence definition (10 % -> 90 % of the step, section 4.1) applied to a terrain
+//     switch and counted from the switch: for every switch, the time until each field's
+//     estimate first covers `fraction` of its true step (new - old truth; fields that do
+//     not change are skipped); the slowest field; the largest over the switches; the run
+//     length if a field never gets there. Series: (switch time, its value).
 //   classification_accuracy  classifier (fields class, windows), truth (field terrain),
 //     window_s (1.0): over the classifier's decisions in the window (a new `windows`
 //     count), the fraction whose class equals the true terrain, counting only decisions
@@ -81,6 +88,7 @@ struct ErrorSample {
   double t;
   double error;
   std::vector<double> truth;
+  std::vector<double> estimate;
 };
 
 std::vector<ErrorSample> errors(const RunLog& log, const Columns& est, const Columns& tru, double from, double to) {
@@ -91,10 +99,11 @@ std::vector<ErrorSample> errors(const RunLog& log, const Columns& est, const Col
     const double t = log.time(e.steps[i]);
     const long r = truth.row(e.steps[i]);
     if (r < 0 || !in_window(t, from, to, log.base_step)) continue;
-    ErrorSample s{t, 0.0, {}};
+    ErrorSample s{t, 0.0, {}, {}};
     for (std::size_t f = 0; f < est.index.size(); ++f) {
       const double tv = truth.trace->at(static_cast<std::size_t>(r), tru.index[f]);
       s.truth.push_back(tv);
+      s.estimate.push_back(e.at(i, est.index[f]));
       s.error = std::max(s.error, std::abs(e.at(i, est.index[f]) - tv));
     }
     out.push_back(std::move(s));
@@ -160,6 +169,37 @@ const MetricRegistration kErrorFinal{
       };
     }};
 
+/// One change of the truth (a terrain switch): samples [begin, end) lie on the new truth;
+/// the switch happened between samples begin - 1 and begin, at t = samples[begin - 1].t.
+struct Switch {
+  std::size_t begin, end;
+  double t;
+};
+
+std::vector<Switch> switches(const std::vector<ErrorSample>& samples) {
+  std::vector<Switch> out;
+  for (std::size_t i = 1; i < samples.size(); ++i) {
+    if (samples[i].truth == samples[i - 1].truth) continue;
+    if (!out.empty()) out.back().end = i;
+    out.push_back({i, samples.size(), samples[i - 1].t});
+  }
+  return out;
+}
+
+/// `switch` (optional, 1-based): report that switch only; default 0 = the largest over all.
+int switch_choice(const MetricSetup& s) {
+  const int k = s.params().optional<int>("switch", 0);
+  if (k < 0) s.params().fail("switch", "must be >= 1 (or 0: the largest over the switches)");
+  return k;
+}
+
+/// The chosen switch's value, or the largest; NaN without switches or past the last one.
+double pick(const std::vector<double>& per_switch, int choice) {
+  if (choice > 0) return static_cast<std::size_t>(choice) <= per_switch.size() ? per_switch[choice - 1] : kNaN;
+  if (per_switch.empty()) return kNaN;
+  return *std::max_element(per_switch.begin(), per_switch.end());
+}
+
 const MetricRegistration kReconvergence{
     "icr_reconvergence_time",
     "largest time from a terrain switch until the ICR estimates stay within tolerance of the truth, s",
@@ -169,32 +209,61 @@ const MetricRegistration kReconvergence{
       const auto [from, to] = s.window();
       const double tol = s.params().optional<double>("tolerance", 0.02);
       if (!(tol > 0.0)) s.params().fail("tolerance", "must be > 0");
+      const int choice = switch_choice(s);
       const double duration = s.duration();
       return [=](const RunLog& log) {
         const std::vector<ErrorSample> samples = errors(log, est, tru, from, to);
         MetricResult r;
         for (const ErrorSample& e : samples) r.series.emplace_back(e.t, e.error);
-        // Segments between changes of the truth; the first segment is the initial convergence.
-        std::vector<std::size_t> starts;
-        for (std::size_t i = 1; i < samples.size(); ++i) {
-          if (samples[i].truth != samples[i - 1].truth) starts.push_back(i);
-        }
-        if (starts.empty()) return r;
-        double worst = 0.0;
-        for (std::size_t k = 0; k < starts.size(); ++k) {
-          const std::size_t begin = starts[k];
-          const std::size_t end = k + 1 < starts.size() ? starts[k + 1] : samples.size();
+        std::vector<double> times;
+        for (const Switch& w : switches(samples)) {
           // Last sample of the segment outside the tolerance; converged right after it.
-          std::size_t settled = begin;
-          for (std::size_t i = begin; i < end; ++i) {
+          std::size_t settled = w.begin;
+          for (std::size_t i = w.begin; i < w.end; ++i) {
             if (!(samples[i].error <= tol)) settled = i + 1;
           }
-          // The switch happened between the previous sample and this one.
-          const double switch_t = samples[begin - 1].t;
-          const double time = settled >= end ? duration : samples[settled].t - switch_t;
-          worst = std::max(worst, time);
+          times.push_back(settled >= w.end ? duration : samples[settled].t - w.t);
         }
-        r.value = worst;
+        r.value = pick(times, choice);
+        return r;
+      };
+    }};
+
+const MetricRegistration kReconvergenceRise{
+    "icr_reconvergence_rise_time",
+    "largest time from a terrain switch until every ICR estimate first covers 90 % of its step, s",
+    [](const MetricSetup& s) -> MetricFunction {
+      const Columns est = columns(s, "estimate", kIcrFields);
+      const Columns tru = columns(s, "truth", kIcrFields);
+      const auto [from, to] = s.window();
+      const double fraction = s.params().optional<double>("fraction", 0.9);
+      if (!(fraction > 0.0 && fraction <= 1.0)) s.params().fail("fraction", "must be in (0, 1]");
+      const int choice = switch_choice(s);
+      const double duration = s.duration();
+      return [=](const RunLog& log) {
+        const std::vector<ErrorSample> samples = errors(log, est, tru, from, to);
+        MetricResult r;
+        std::vector<double> times;
+        for (const Switch& w : switches(samples)) {
+          const std::vector<double>& before = samples[w.begin - 1].truth;
+          const std::vector<double>& after = samples[w.begin].truth;
+          double slowest = 0.0;
+          for (std::size_t f = 0; f < after.size(); ++f) {
+            const double step = after[f] - before[f];
+            if (step == 0.0) continue;  // this field did not change
+            double reached = duration;
+            for (std::size_t i = w.begin; i < w.end; ++i) {
+              if ((samples[i].estimate[f] - before[f]) / step >= fraction) {
+                reached = samples[i].t - w.t;
+                break;
+              }
+            }
+            slowest = std::max(slowest, reached);
+          }
+          times.push_back(slowest);
+          r.series.emplace_back(w.t, slowest);
+        }
+        r.value = pick(times, choice);
         return r;
       };
     }};

@@ -1,0 +1,104 @@
+// Skid-steer metrics (skid_steer_metrics.cpp) on synthetic runs whose answer is known in
+// closed form: ICR estimates that approach each new true value exponentially.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "metric_on_log.hpp"
+#include "plexus/scenario/metric.hpp"
+
+namespace plexus::scenario {
+namespace {
+
+constexpr double kStep = 0.01;
+constexpr int64_t kSteps = 3000;  // 30 s
+constexpr double kSwitch1 = 5.0, kSwitch2 = 15.0;
+constexpr double kTau1 = 0.5, kTau2 = 1.5;  // s, time constants of the estimate after each switch
+
+/// Truth: ICRs (0.3, -0.5, -0.1) until kSwitch1, then (0.5, -0.7, -0.3), from kSwitch2
+/// (0.5, -0.6, -0.3) (x_G and y_l unchanged at the second switch). The estimate starts on
+/// the truth and approaches each new value as new + (old - new) exp(-(t - switch) / tau).
+/// Two odometry signals with constant position errors 0.3 m and 0.6 m.
+RunLog switching_run() {
+  RunLog log;
+  log.base_step = kStep;
+  log.steps = kSteps;
+  SignalTrace state{{"r/state", {"x", "y", "y_l", "y_r", "x_G"}, 1, "plant", true}, {}, {}};
+  SignalTrace est{{"r/estimate", {"y_l", "y_r", "x_G"}, 1, "ekf", false}, {}, {}};
+  SignalTrace odo_a{{"r/odo_a", {"x", "y"}, 1, "a", false}, {}, {}};
+  SignalTrace odo_b{{"r/odo_b", {"x", "y"}, 1, "b", false}, {}, {}};
+  const double a[3] = {0.3, -0.5, -0.1}, b[3] = {0.5, -0.7, -0.3}, c[3] = {0.5, -0.6, -0.3};
+  for (int64_t k = 0; k <= kSteps; ++k) {
+    const double t = static_cast<double>(k) * kStep;
+    const double x = 0.4 * t, y = std::sin(t);
+    const double* truth = t < kSwitch1 - 1e-9 ? a : (t < kSwitch2 - 1e-9 ? b : c);
+    double e[3];
+    for (int i = 0; i < 3; ++i) {
+      if (truth == a) e[i] = a[i];
+      else if (truth == b) e[i] = b[i] + (a[i] - b[i]) * std::exp(-(t - kSwitch1) / kTau1);
+      else e[i] = c[i] + (b[i] - c[i]) * std::exp(-(t - kSwitch2) / kTau2);
+    }
+    for (auto* tr : {&state, &est, &odo_a, &odo_b}) tr->steps.push_back(k);
+    state.values.insert(state.values.end(), {x, y, truth[0], truth[1], truth[2]});
+    est.values.insert(est.values.end(), {e[0], e[1], e[2]});
+    odo_a.values.insert(odo_a.values.end(), {x + 0.3, y});
+    odo_b.values.insert(odo_b.values.end(), {x, y - 0.6});
+  }
+  log.signals = {state, est, odo_a, odo_b};
+  return log;
+}
+
+MetricResult compute(const RunLog& log, const std::string& yaml) {
+  return testing::metric_on_log(log, yaml, kStep, kStep * kSteps);
+}
+
+// The metrics count from the last sample on the old truth (one step before the switch) to
+// the first sample past the threshold (up to one step after the crossing): within 2 steps.
+constexpr double kTol = 2.5 * kStep;
+
+TEST(SkidSteerMetrics, ReconvergenceTimeIsTheTimeToEnterTheBandForGood) {
+  const RunLog log = switching_run();
+  const std::string m = "{type: icr_reconvergence_time, estimate: r/estimate, truth: r/state, tolerance: 0.02";
+  // Switch 1: steps of 0.2 m, tau 0.5 s -> 0.5 ln(10); switch 2: 0.1 m, tau 1.5 s -> 1.5 ln(5).
+  const double t1 = kTau1 * std::log(0.2 / 0.02), t2 = kTau2 * std::log(0.1 / 0.02);
+  EXPECT_NEAR(compute(log, m + ", switch: 1}").value, t1, kTol);
+  EXPECT_NEAR(compute(log, m + ", switch: 2}").value, t2, kTol);
+  EXPECT_NEAR(compute(log, m + "}").value, std::max(t1, t2), kTol);
+  EXPECT_TRUE(std::isnan(compute(log, m + ", switch: 3}").value));
+}
+
+TEST(SkidSteerMetrics, ReconvergenceRiseTimeIsTheTimeToCoverNinetyPercentOfTheStep) {
+  const RunLog log = switching_run();
+  const std::string m = "{type: icr_reconvergence_rise_time, estimate: r/estimate, truth: r/state";
+  // 90 % of an exponential step after tau ln(10), whatever the step's size; the fields that
+  // do not change at the second switch (y_l, x_G) are skipped.
+  EXPECT_NEAR(compute(log, m + ", switch: 1}").value, kTau1 * std::log(10.0), kTol);
+  EXPECT_NEAR(compute(log, m + ", switch: 2}").value, kTau2 * std::log(10.0), kTol);
+  EXPECT_NEAR(compute(log, m + ", fraction: 0.5}").value, kTau2 * std::log(2.0), kTol);
+}
+
+TEST(SkidSteerMetrics, ReconvergenceIsTheRunLengthWhenTheEstimateNeverGetsThere) {
+  RunLog log = switching_run();
+  // Freeze the estimate after the first switch: it never moves towards the new truth.
+  SignalTrace& est = log.signals[1];
+  for (std::size_t i = 0; i < est.steps.size(); ++i) {
+    if (static_cast<double>(est.steps[i]) * kStep >= kSwitch1) {
+      est.values[3 * i] = 0.3, est.values[3 * i + 1] = -0.5, est.values[3 * i + 2] = -0.1;
+    }
+  }
+  const double run = kStep * kSteps;
+  EXPECT_EQ(compute(log, "{type: icr_reconvergence_time, estimate: r/estimate, truth: r/state}").value, run);
+  EXPECT_EQ(compute(log, "{type: icr_reconvergence_rise_time, estimate: r/estimate, truth: r/state}").value, run);
+}
+
+TEST(SkidSteerMetrics, OdometryErrorRatioDividesTheFinalPositionErrors) {
+  const RunLog log = switching_run();
+  EXPECT_NEAR(compute(log, "{type: odometry_error_ratio, signal: r/odo_a, other: r/odo_b, reference: r/state}").value,
+              0.5, 1e-12);
+  EXPECT_NEAR(compute(log, "{type: odometry_error_ratio, signal: r/odo_b, other: r/odo_a, reference: r/state}").value,
+              2.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace plexus::scenario
