@@ -8,6 +8,12 @@ foreach(scenario arm_vdc_ekf arm_ct_pd arm_vdc_ekf_reference_sweep arm_vdc_ekf_p
   set_tests_properties(repro.${scenario} PROPERTIES LABELS "repro" TIMEOUT 300)
 endforeach()
 
+# The Table 4 run at 1 kHz, the distributed joint controller's rate: same expectations.
+add_test(NAME repro.arm_vdc_ekf_1khz
+         COMMAND $<TARGET_FILE:plexus> sim ${PROJECT_SOURCE_DIR}/deploy/scenarios/arm_vdc_ekf.yaml --quiet --set step=0.001
+                 --out ${CMAKE_BINARY_DIR}/test-runs/arm_vdc_ekf_1khz)
+set_tests_properties(repro.arm_vdc_ekf_1khz PROPERTIES LABELS "repro" TIMEOUT 300)
+
 # Bad arm parameters are input errors (exit 2) naming the file, line and key.
 set(ARM_SCENARIO ${PROJECT_SOURCE_DIR}/deploy/scenarios/arm_vdc_ekf.yaml)
 add_test(NAME cli.arm_gain_list_size

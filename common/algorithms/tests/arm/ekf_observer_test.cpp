@@ -134,5 +134,40 @@ TEST(FlexibleJointEkf, LinkSideRecoveryFollowsEquation17) {
   EXPECT_NEAR(ekf.feedback().qd(1), 2.0 - 10 / 1e4, 1e-15);
 }
 
+TEST(FlexibleJointEkf, LinkJerkIsTheRateOfTheLinkAcceleration) {
+  // q^''' (the VDC's tau_r'' needs it) against the central difference in time of the true
+  // link acceleration of a driven arm, the observer started consistent with the arm.
+  FlexibleJointArmPlant plant({}), ahead({});
+  FlexibleJointEkfParams p;
+  p.step = 2e-4;
+  FlexibleJointEkf ekf(p);
+  Eigen::VectorXd u(2), y(4), tau(2), qdd_prev(2), qdd_now(2), qdd_next(2);
+  auto link_acceleration = [&](FlexibleJointArmPlant& arm, Eigen::VectorXd& out) {
+    arm.spring_torque(tau);
+    arm.dynamics().forward_dynamics(arm.state().q, arm.state().qd, tau, out);
+  };
+  double worst = 0.0, largest = 0.0;
+  link_acceleration(plant, qdd_now);
+  for (int k = 1; k <= 5000; ++k) {
+    const double t = k * p.step;
+    u << 20 * std::sin(3 * t), 5 * std::cos(2 * t);
+    plant.step(u, p.step);
+    y << plant.state().phi, plant.state().phid;
+    ekf.update(u, y, p.step);
+    qdd_prev = qdd_now;
+    link_acceleration(plant, qdd_now);
+    if (k > 1000 && k % 10 == 0) {
+      ahead.reset(plant.state());  // one step further with the same input
+      ahead.step(u, p.step);
+      link_acceleration(ahead, qdd_next);
+      const Eigen::VectorXd jerk = (qdd_next - qdd_prev) / (2.0 * p.step);
+      worst = std::max(worst, (ekf.feedback().qddd - jerk).cwiseAbs().maxCoeff());
+      largest = std::max(largest, jerk.cwiseAbs().maxCoeff());
+    }
+  }
+  EXPECT_GT(largest, 100.0);          // the springs ring: the jerk is large (~2000 rad/s^3)
+  EXPECT_LT(worst, 0.01 * largest);   // measured 0.06 %
+}
+
 }  // namespace
 }  // namespace plexus::algorithms

@@ -103,5 +103,29 @@ TEST(FlexibleJointPlant, RestingStateIsAnEquilibriumUnderGravityTorque) {
   EXPECT_LT((plant.state().q - q).norm(), 1e-9);
 }
 
+TEST(FlexibleJointPlant, InMotionStartHasNoLinkAccelerationAndNoSpringRate) {
+  // reset_in_motion: the springs hold C(q, q') q' + G(q), so q'' = 0 and tau' = 0 at t = 0;
+  // over a short step the link keeps its velocity (to second order in dt).
+  FlexibleJointArmPlant plant({});
+  Eigen::VectorXd q(2), qd(2), tau(2), qdd(2);
+  q << 0.3, -0.5;
+  qd << 1.0, -0.7;
+  plant.reset_in_motion(q, qd);
+  EXPECT_TRUE(plant.state().phid.isApprox(qd));
+  plant.spring_torque(tau);
+  plant.dynamics().forward_dynamics(q, qd, tau, qdd);
+  EXPECT_LT(qdd.norm(), 1e-9);
+  Eigen::VectorXd u(2);  // motor torque that keeps phi'' = 0: tau + F phi'
+  for (int i = 0; i < 2; ++i) u(i) = tau(i) + plant.dynamics().model().joints[static_cast<std::size_t>(i)].friction * qd(i);
+  const double dt = 1e-4;
+  plant.step(u, dt);
+  EXPECT_LT((plant.state().qd - qd).norm(), 1e-2 * dt);
+  // Without velocity it is reset_at_rest.
+  plant.reset_in_motion(q, Eigen::VectorXd::Zero(2));
+  const FlexibleJointArmState moving = plant.state();
+  plant.reset_at_rest(q);
+  EXPECT_TRUE(plant.state().phi.isApprox(moving.phi));
+}
+
 }  // namespace
 }  // namespace plexus::algorithms
