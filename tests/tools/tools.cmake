@@ -125,3 +125,8 @@ set_tests_properties(tools.bad_topic_type tools.bad_vendor tools.missing_run_fil
                      tools.record_bad_file tools.bad_loop_rate tools.bad_pingpong_size tools.unknown_profile
                      tools.bad_peer_vendor tools.launch_unknown_external tools.launch_record_bad_file
                      PROPERTIES LABELS "cli;tools")
+
+# A service's or robot's `dds` key must name a vendor (file, line and key in the error).
+add_test(NAME cli.scenario_bad_dds_key COMMAND ${EXPECT} 2 "robots.r1.dds: expected fast or cyclone, got 'rti'"
+         ${PLEXUS_CLI} sim ${CIRCLE} --set robots.r1.dds=rti)
+set_tests_properties(cli.scenario_bad_dds_key PROPERTIES LABELS "cli")

@@ -193,18 +193,25 @@ std::vector<Process> plan(const scenario::Scenario& sc, const std::string& host)
   auto here = [&](const std::string& h) { return host.empty() || (h.empty() ? first : h) == host; };
   std::vector<Process> procs;
   std::map<std::string, std::string> robots_by_host;  // host -> "r1,r2"
+  std::map<std::string, std::string> dds_by_host;     // host -> the robots' `dds` key
   for (const auto& c : sc.components) {
     if (!here(c.host)) continue;
     if (c.kind == scenario::ComponentKind::plant) {
       const std::string robot = c.component->name().substr(0, c.component->name().find('/'));
       auto& list = robots_by_host[c.host];
       list += (list.empty() ? "" : ",") + robot;
+      auto [it, first_robot] = dds_by_host.emplace(c.host, c.dds);
+      if (!first_robot && it->second != c.dds)
+        throw InputError(c.where + ": the robots on one host share one plant_simulator process, so their `dds` keys "
+                         "must agree ('" + c.dds + "' for " + robot + ", '" + it->second + "' for " +
+                         list.substr(0, list.rfind(',')) + ")");
     } else if (c.kind != scenario::ComponentKind::sensor) {
       Process p;
       p.name = c.component->name();
       p.program = distributed::executable_for(c.type);
       p.select = {"--components", c.component->name()};
       p.restart = c.restart;
+      p.vendor = c.dds;
       procs.push_back(p);
     }
   }
@@ -218,10 +225,18 @@ std::vector<Process> plan(const scenario::Scenario& sc, const std::string& host)
     p.name = name;
     p.program = "plant_simulator";
     p.select = {"--robots", robots};
+    p.vendor = dds_by_host[h];
     sims.push_back(p);
   }
   procs.insert(procs.begin(), sims.begin(), sims.end());
   return procs;
+}
+
+/// launch.json's record of what this launcher started: process -> executable and vendor.
+nlohmann::ordered_json process_table(const std::vector<Process>& procs) {
+  nlohmann::ordered_json t = nlohmann::ordered_json::object();
+  for (const auto& p : procs) t[p.name] = {{"program", p.program}, {"vendor", p.vendor}};
+  return t;
 }
 
 int run_launch(const LaunchOptions& o) {
@@ -272,7 +287,11 @@ int run_launch(const LaunchOptions& o) {
   auto is_external = [&](const Process& p) {
     return std::find(o.externals.begin(), o.externals.end(), p.name) != o.externals.end();
   };
-  for (auto& p : procs) p.vendor = vendor_of.count(p.name) ? vendor_of[p.name] : vendor;
+  // A process's vendor: --vendor, else its scenario `dds` key, else --dds / dds.vendor.
+  for (auto& p : procs) p.vendor = vendor_of.count(p.name) ? vendor_of[p.name] : p.vendor.empty() ? vendor : p.vendor;
+  std::set<std::string> used{vendor};  // for the headline
+  for (const auto& p : procs) used.insert(p.vendor);
+  const std::string vendors_label = used.size() == 1 ? vendor : "mixed: fast + cyclone";
   for (const auto& p : plan(sc, "")) vendor_of.erase(p.name);  // names of processes on any host are fine
   if (!vendor_of.empty())
     throw InputError("--vendor " + vendor_of.begin()->first + ": no such process (processes: plant_simulator or a service name)");
@@ -405,8 +424,9 @@ int run_launch(const LaunchOptions& o) {
     RunSummary summary;
     char headline[256];
     std::snprintf(headline, sizeof headline, "scenario %s: realtime over %zu processes (%s), %.3g s", sc.name.c_str(),
-                  everywhere.size(), vendor.c_str(), r.wall);
+                  everywhere.size(), vendors_label.c_str(), r.wall);
     summary.headline = headline;
+    summary.extra["processes"] = process_table(procs);
     summary.extra["services"] = r.services;
     summary.extra["command_latency"] = r.latency;
     nlohmann::ordered_json restarts = nlohmann::ordered_json::object();
@@ -441,9 +461,10 @@ int run_launch(const LaunchOptions& o) {
   RunSummary summary;
   char headline[256];
   std::snprintf(headline, sizeof headline, "scenario %s: %lld steps in lockstep over %zu processes (%s), %.3g s, %.0f steps/s",
-                sc.name.c_str(), static_cast<long long>(sc.steps), everywhere.size(), vendor.c_str(), wall, steps_per_s);
+                sc.name.c_str(), static_cast<long long>(sc.steps), everywhere.size(), vendors_label.c_str(), wall, steps_per_s);
   summary.headline = headline;
   summary.extra["steps_per_s"] = steps_per_s;
+  summary.extra["processes"] = process_table(procs);
   return finish_run(sc, log, wall, o.out, o.json, o.quiet, summary);
 }
 
@@ -455,7 +476,7 @@ Command add_launch_command(CLI::App& root) {
   c.app = root.add_subcommand("launch", "Run a scenario distributed over DDS (lockstep), one process per service");
   c.app->add_option("scenario", o->scenario, "Scenario file (YAML)")->required();
   c.app->add_option("--host", o->host, "Start only the processes assigned to this host of the scenario");
-  c.app->add_option("--dds", o->dds, "DDS vendor of every process (default: the scenario's, else fast)");
+  c.app->add_option("--dds", o->dds, "DDS vendor of the clock and of every process without a `dds` key in the scenario (default: dds.vendor, else fast)");
   c.app->add_option("--kill", o->kills, "Fault injection (realtime): SIGKILL PROCESS at SECONDS, as PROCESS@SECONDS");
   c.app->add_option("--external", o->externals,
                      "Do not start PROCESS: plexus replay or a hardware bridge provides its topics (repeatable)");

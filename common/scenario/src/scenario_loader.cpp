@@ -22,6 +22,13 @@ bool valid_name(const std::string& s) {
   return true;
 }
 
+/// A robot's or service's `dds` key: the vendor its process uses under `plexus launch`.
+std::string dds_key(const YamlMap& section) {
+  const std::string v = section.optional<std::string>("dds", "");
+  if (section.has("dds") && v != "fast" && v != "cyclone") section.fail("dds", "expected fast or cyclone, got '" + v + "'");
+  return v;
+}
+
 std::string known_list(const std::vector<std::string>& names) {
   std::string out;
   for (const auto& n : names) out += (out.empty() ? "" : ", ") + n;
@@ -99,6 +106,7 @@ struct Loader {
         section.fail("host", "no host '" + out.host + "' in hosts");
       out.qos = section.optional<std::string>("qos", "");
       if (section.has("qos") && out.qos.empty()) section.fail("qos", "must name a QoS profile");
+      out.dds = dds_key(section);
       out.restart = section.optional<std::string>("restart", out.restart);
       if (out.restart != "never" && out.restart != "on_failure" && out.restart != "always")
         section.fail("restart", "expected never, on_failure or always, got '" + out.restart + "'");
@@ -186,15 +194,18 @@ struct Loader {
       const std::string rpath = "robots." + r;
       const std::string robot_host = robot.optional<std::string>("host", "");
       if (robot.has("host") && !hosts.count(robot_host)) robot.fail("host", "no host '" + robot_host + "' in hosts");
+      const std::string robot_dds = dds_key(robot);
       const YamlMap plant = robot.map("plant");
       all.push_back(build(plant, rpath + ".plant", "plant", r, sc.resolved["robots"][r]["plant"], false));
       all.back().host = robot_host;
+      all.back().dds = robot_dds;
       if (robot.has("sensors")) {
         const YamlMap sensors = robot.map("sensors");
         for (const auto& s : sensors.keys()) {
           const YamlMap sensor = sensors.map(name_key(sensors, s, "sensor"));
           all.push_back(build(sensor, rpath + ".sensors." + s, s, r, sc.resolved["robots"][r]["sensors"][s], false));
           all.back().host = robot_host;  // a robot's sensors run with its plant
+          all.back().dds = robot_dds;
         }
       }
       robot.reject_unknown();

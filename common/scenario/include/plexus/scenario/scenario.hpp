@@ -31,6 +31,7 @@ struct ScenarioComponent {
   std::string where;  ///< "file:line: yaml.path", for errors about this component
   std::string host;   ///< host it runs on under `plexus launch` (empty: any)
   std::string qos;    ///< QoS profile name for its outputs (empty: the default)
+  std::string dds;    ///< DDS vendor of its process under `plexus launch` (empty: the run's)
   /// `plexus launch`, realtime mode: restart the service's process when it dies
   /// ("on_failure", the default), whenever it exits ("always"), or not ("never").
   std::string restart = "on_failure";
