@@ -105,6 +105,17 @@ TEST(FlexibleJointEkf, ConvergesFromAWrongTorqueEstimateAndKeepsPSymmetricPositi
   EXPECT_LT(last_q, 1.15e-3);  // link side inside the paper's settling band
 }
 
+/// One step of the open-loop drive of the tracking tests: smooth motor torques u(t) into
+/// the plant, its motor-side state into the observer.
+void drive_one_step(FlexibleJointArmPlant& plant, FlexibleJointEkf& ekf, int k, double step, Eigen::VectorXd& u) {
+  const double t = k * step;
+  u << 20 * std::sin(3 * t), 5 * std::cos(2 * t);
+  plant.step(u, step);
+  Eigen::VectorXd y(4);
+  y << plant.state().phi, plant.state().phid;
+  ekf.update(u, y, step);
+}
+
 TEST(FlexibleJointEkf, TracksAConsistentlyInitialisedArmClosely) {
   // Started consistent with the resting arm (as in the scenarios), the estimate stays within
   // 2e-5 rad of the true link angle while the arm is driven.
@@ -112,14 +123,10 @@ TEST(FlexibleJointEkf, TracksAConsistentlyInitialisedArmClosely) {
   FlexibleJointEkfParams p;
   p.step = 2e-4;
   FlexibleJointEkf ekf(p);
-  Eigen::VectorXd u(2), y(4);
+  Eigen::VectorXd u(2);
   double worst = 0.0;
   for (int k = 1; k <= 10000; ++k) {
-    const double t = k * p.step;
-    u << 20 * std::sin(3 * t), 5 * std::cos(2 * t);
-    plant.step(u, p.step);
-    y << plant.state().phi, plant.state().phid;
-    ekf.update(u, y, p.step);
+    drive_one_step(plant, ekf, k, p.step, u);
     worst = std::max(worst, (ekf.feedback().q - plant.state().q).cwiseAbs().maxCoeff());
   }
   EXPECT_LT(worst, 2e-5);
@@ -141,7 +148,7 @@ TEST(FlexibleJointEkf, LinkJerkIsTheRateOfTheLinkAcceleration) {
   FlexibleJointEkfParams p;
   p.step = 2e-4;
   FlexibleJointEkf ekf(p);
-  Eigen::VectorXd u(2), y(4), tau(2), qdd_prev(2), qdd_now(2), qdd_next(2);
+  Eigen::VectorXd u(2), tau(2), qdd_prev(2), qdd_now(2), qdd_next(2);
   auto link_acceleration = [&](FlexibleJointArmPlant& arm, Eigen::VectorXd& out) {
     arm.spring_torque(tau);
     arm.dynamics().forward_dynamics(arm.state().q, arm.state().qd, tau, out);
@@ -149,11 +156,7 @@ TEST(FlexibleJointEkf, LinkJerkIsTheRateOfTheLinkAcceleration) {
   double worst = 0.0, largest = 0.0;
   link_acceleration(plant, qdd_now);
   for (int k = 1; k <= 5000; ++k) {
-    const double t = k * p.step;
-    u << 20 * std::sin(3 * t), 5 * std::cos(2 * t);
-    plant.step(u, p.step);
-    y << plant.state().phi, plant.state().phid;
-    ekf.update(u, y, p.step);
+    drive_one_step(plant, ekf, k, p.step, u);
     qdd_prev = qdd_now;
     link_acceleration(plant, qdd_now);
     if (k > 1000 && k % 10 == 0) {
