@@ -32,5 +32,8 @@ add_test(NAME cli.arm_too_many_joints
          COMMAND ${EXPECT} 2 "robots.arm.plant.dof: must be in 1..4"
                  $<TARGET_FILE:plexus> sim ${PROJECT_SOURCE_DIR}/deploy/scenarios/arm_vdc_ekf_3dof.yaml --quiet
                  --set robots.arm.plant.dof=6)
+add_test(NAME cli.arm_initial_velocity_list_size
+         COMMAND ${EXPECT} 2 "robots.arm.plant.dq0: needs 2 numbers \\(one per joint\\)"
+                 $<TARGET_FILE:plexus> sim ${ARM_SCENARIO} --quiet --set robots.arm.plant.dq0=[1,1,1])
 set_tests_properties(cli.arm_gain_list_size cli.arm_negative_gain cli.arm_bad_link_mass cli.arm_bad_jacobian
-                     cli.arm_too_many_joints PROPERTIES LABELS "cli")
+                     cli.arm_too_many_joints cli.arm_initial_velocity_list_size PROPERTIES LABELS "cli")
