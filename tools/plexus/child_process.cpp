@@ -13,8 +13,8 @@ namespace plexus::cli {
 
 std::string bin_dir() { return std::filesystem::read_symlink("/proc/self/exe").parent_path().string(); }
 
-pid_t spawn(const std::string& program, const std::vector<std::string>& args) {
-  return spawn_program(bin_dir() + "/" + program, args);
+pid_t spawn(const std::string& program, const std::vector<std::string>& args, int output_fd) {
+  return spawn_program(bin_dir() + "/" + program, args, {}, {.file = {}, .fd = output_fd});
 }
 
 int run_capture(const std::string& program, const std::vector<std::string>& args, std::string& out) {

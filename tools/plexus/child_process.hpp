@@ -11,8 +11,9 @@ namespace plexus::cli {
 /// Directory of the running plexus executable (build/bin): services live beside it.
 std::string bin_dir();
 
-/// Starts `bin_dir()/program args...`; returns its pid. Throws std::runtime_error.
-pid_t spawn(const std::string& program, const std::vector<std::string>& args);
+/// Starts `bin_dir()/program args...` (stdout and stderr to `output_fd` if >= 0, else
+/// inherited); returns its pid. Throws std::runtime_error.
+pid_t spawn(const std::string& program, const std::vector<std::string>& args, int output_fd = -1);
 
 /// Runs `bin_dir()/program args...` to completion, capturing stdout. Returns the exit code.
 int run_capture(const std::string& program, const std::vector<std::string>& args, std::string& out);

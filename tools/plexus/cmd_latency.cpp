@@ -193,7 +193,7 @@ int run_pingpong(const PingOpts& o) {
       std::vector<std::string> pa = base;
       pa.insert(pa.end(), {"-D", std::to_string(dur + 12), "pong"});
       const std::string pong_log = temp_path("ddsperf_pong");
-      const pid_t dpong = spawn_program(ddsperf, pa, {uri}, pong_log);
+      const pid_t dpong = spawn_program(ddsperf, pa, {uri}, {.file = pong_log, .fd = -1});
       std::vector<std::string> qa = base;
       qa.insert(qa.end(), {"-Qminmatch:1", "-Qinitwait:10", "-D", std::to_string(dur), "ping"});
       if (o.rate > 0) qa.push_back(std::to_string(static_cast<long>(o.rate)) + "Hz");

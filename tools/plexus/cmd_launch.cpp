@@ -20,6 +20,7 @@
 #include <nlohmann/json.hpp>
 
 #include "child_process.hpp"
+#include "log_relay.hpp"
 #include "command.hpp"
 #include "run_result.hpp"
 #include "signal_recorder.hpp"
@@ -341,6 +342,19 @@ int run_launch(const LaunchOptions& o) {
     if (!realtime) throw InputError("--kill " + k + ": fault injection needs clock.mode realtime");
     kill_at[name] = when;
   }
+  // The run folder is fixed now: the children's logs go to <run>/logs/<process>.log (on a
+  // host without the clock, to <run>-<host>/logs), each line also on stderr, prefixed.
+  const std::string run_dir = !o.out.empty() ? o.out
+                              : scenario::default_run_folder(sc.name).string() + (runs_clock ? "" : "-" + o.host);
+  LogRelay relay(std::filesystem::path(run_dir) / "logs", true);
+  auto start_process = [&relay](Process& p) {
+    const int fd = relay.open(p.service());
+    p.pid = spawn(p.program, p.args, fd);
+    ::close(fd);
+    std::string cmd = p.program;
+    for (const auto& a : p.args) cmd += " " + a;
+    relay.note(p.service(), "started pid " + std::to_string(p.pid) + ": " + cmd);
+  };
   FaultClock fault;
   std::atomic<bool> run_active{true};
   for (auto& p : procs) {
@@ -348,7 +362,7 @@ int run_launch(const LaunchOptions& o) {
     args.insert(args.end(), p.select.begin(), p.select.end());
     args.insert(args.end(), {"--dds", p.vendor, "--mode", realtime ? "realtime" : "lockstep"});
     p.args = args;
-    p.pid = spawn(p.program, args);
+    start_process(p);
   }
   // A child that dies ends the run at once, with its name and exit code.
   std::string died;
@@ -366,11 +380,12 @@ int run_launch(const LaunchOptions& o) {
         }
         int status = 0;
         if (p.pid > 0 && exited(p.pid, status)) {
+          relay.note(p.service(), "pid " + std::to_string(p.pid) + " exited with code " + std::to_string(status));
           p.pid = 0;
           const bool restart = realtime && run_active &&
                                (p.restart == "always" || (status != 0 && p.restart == "on_failure"));
           if (restart) {
-            p.pid = spawn(p.program, p.args);
+            start_process(p);
             ++p.restarts;
             spdlog::warn("{} exited with code {}: restarted ({} restarts)", p.service(), status, p.restarts);
           } else if (status != 0 && died.empty()) {
@@ -387,6 +402,7 @@ int run_launch(const LaunchOptions& o) {
     if (watcher.joinable()) watcher.join();
     for (auto& p : procs)
       if (p.pid > 0) stop(p.pid), p.pid = 0;
+    relay.drain();  // the children's last lines before the launcher's verdict
   };
   auto failure = [&](const std::string& what) {
     stop_all();
@@ -440,7 +456,7 @@ int run_launch(const LaunchOptions& o) {
                     l["p50_us"].get<double>(), l["p99_us"].get<double>(), l["samples"].get<int>());
       summary.lines.push_back(line);
     }
-    return finish_run(sc, r.log, r.wall, o.out, o.json, o.quiet, summary);
+    return finish_run(sc, r.log, r.wall, run_dir, o.json, o.quiet, summary);
   }
   try {
     distributed::LockstepClock clock(sc, *participant, qos, {.timeout_s = o.timeout});
@@ -465,7 +481,7 @@ int run_launch(const LaunchOptions& o) {
   summary.headline = headline;
   summary.extra["steps_per_s"] = steps_per_s;
   summary.extra["processes"] = process_table(procs);
-  return finish_run(sc, log, wall, o.out, o.json, o.quiet, summary);
+  return finish_run(sc, log, wall, run_dir, o.json, o.quiet, summary);
 }
 
 }  // namespace

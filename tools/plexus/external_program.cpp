@@ -55,12 +55,15 @@ std::string find_program(const std::string& name) {
 }
 
 pid_t spawn_program(const std::string& path, const std::vector<std::string>& args, const std::vector<std::string>& env,
-                    const std::string& log_file) {
+                    const ProgramOutput& output) {
   posix_spawn_file_actions_t fa;
   posix_spawn_file_actions_init(&fa);
-  if (!log_file.empty()) {
-    posix_spawn_file_actions_addopen(&fa, STDOUT_FILENO, log_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  if (!output.file.empty()) {
+    posix_spawn_file_actions_addopen(&fa, STDOUT_FILENO, output.file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     posix_spawn_file_actions_adddup2(&fa, STDOUT_FILENO, STDERR_FILENO);
+  } else if (output.fd >= 0) {
+    posix_spawn_file_actions_adddup2(&fa, output.fd, STDOUT_FILENO);  // dup2 clears close-on-exec
+    posix_spawn_file_actions_adddup2(&fa, output.fd, STDERR_FILENO);
   }
   auto argv = argv_of(path, args);
   Env e(env);

@@ -11,10 +11,17 @@ namespace plexus::cli {
 /// Path of `name` on $PATH, or "" if it is not installed.
 std::string find_program(const std::string& name);
 
-/// Starts `path args...` with extra environment entries ("KEY=VALUE"), stdout and stderr
-/// to `log_file` (or inherited if empty). Returns the pid; throws std::runtime_error.
+/// Where a started program's stdout and stderr go: inherited (default), a file, or an
+/// open descriptor (e.g. a LogRelay pipe).
+struct ProgramOutput {
+  std::string file;
+  int fd = -1;
+};
+
+/// Starts `path args...` with extra environment entries ("KEY=VALUE") and its stdout and
+/// stderr to `output`. Returns the pid; throws std::runtime_error.
 pid_t spawn_program(const std::string& path, const std::vector<std::string>& args,
-                    const std::vector<std::string>& env = {}, const std::string& log_file = "");
+                    const std::vector<std::string>& env = {}, const ProgramOutput& output = {});
 
 /// Runs `path args...` to completion with stdout (and stderr, if merge_stderr) captured.
 /// Returns the exit code (128+signal if killed).

@@ -1,0 +1,154 @@
+#include "log_relay.hpp"
+
+#include <fcntl.h>
+#include <poll.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <mutex>
+#include <stdexcept>
+#include <thread>
+#include <vector>
+
+namespace plexus::cli {
+
+namespace {
+/// "localisation_observer observer" -> "localisation_observer_observer.log"
+std::string file_name(std::string name) {
+  for (char& c : name)
+    if (c == ' ' || c == '/' || c == ',') c = '_';
+  return name + ".log";
+}
+}  // namespace
+
+struct LogRelay::Impl {
+  struct Source {
+    std::string name;
+    int fd = -1;
+    std::FILE* file = nullptr;
+    std::string partial;  // bytes after the last newline
+  };
+  std::filesystem::path dir;
+  bool echo = true;
+  std::mutex mu;  // guards sources (added by the launcher, read by the thread)
+  std::vector<Source> sources;
+  std::atomic<bool> running{true};
+  std::thread thread;
+  std::size_t width = 8;  // prefix column width
+
+  void emit(Source& s, const std::string& line) {
+    if (s.file) {
+      std::fwrite(line.data(), 1, line.size(), s.file);
+      std::fputc('\n', s.file);
+      std::fflush(s.file);
+    }
+    if (echo) std::fprintf(stderr, "%-*s | %s\n", static_cast<int>(width), s.name.c_str(), line.c_str());
+  }
+
+  void close_source(Source& s) {
+    if (!s.partial.empty()) emit(s, s.partial);
+    s.partial.clear();
+    ::close(s.fd);
+    s.fd = -1;
+    if (s.file) std::fclose(s.file);
+    s.file = nullptr;
+  }
+
+  void loop() {
+    std::vector<pollfd> fds;
+    char buf[4096];
+    while (running) {
+      {
+        std::lock_guard lk(mu);
+        fds.clear();
+        for (const auto& s : sources)
+          if (s.fd >= 0) fds.push_back({s.fd, POLLIN, 0});
+      }
+      if (fds.empty()) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        continue;
+      }
+      if (::poll(fds.data(), fds.size(), 100) <= 0) continue;
+      std::lock_guard lk(mu);
+      for (const auto& p : fds) {
+        if (!(p.revents & (POLLIN | POLLHUP | POLLERR))) continue;
+        for (auto& s : sources) {
+          if (s.fd != p.fd) continue;
+          const ssize_t n = ::read(s.fd, buf, sizeof buf);
+          if (n <= 0) {
+            close_source(s);
+            break;
+          }
+          s.partial.append(buf, static_cast<std::size_t>(n));
+          std::size_t start = 0, nl;
+          while ((nl = s.partial.find('\n', start)) != std::string::npos) {
+            emit(s, s.partial.substr(start, nl - start));
+            start = nl + 1;
+          }
+          s.partial.erase(0, start);
+          break;
+        }
+      }
+    }
+  }
+};
+
+LogRelay::LogRelay(const std::filesystem::path& dir, bool echo) : impl_(std::make_unique<Impl>()) {
+  impl_->dir = dir;
+  impl_->echo = echo;
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) throw std::runtime_error(dir.string() + ": cannot create the log folder (" + ec.message() + ")");
+  impl_->thread = std::thread([this] { impl_->loop(); });
+}
+
+LogRelay::~LogRelay() {
+  drain(500);
+  impl_->running = false;
+  if (impl_->thread.joinable()) impl_->thread.join();
+  for (auto& s : impl_->sources)
+    if (s.fd >= 0) impl_->close_source(s);
+}
+
+int LogRelay::open(const std::string& name) {
+  int p[2];
+  if (::pipe2(p, O_CLOEXEC) != 0) throw std::runtime_error("cannot create a pipe for " + name + "'s output");
+  Impl::Source s;
+  s.name = name;
+  s.fd = p[0];
+  s.file = std::fopen((impl_->dir / file_name(name)).c_str(), "a");
+  std::lock_guard lk(impl_->mu);
+  impl_->width = std::max(impl_->width, name.size());
+  impl_->sources.push_back(std::move(s));
+  return p[1];
+}
+
+void LogRelay::note(const std::string& name, const std::string& line) {
+  std::lock_guard lk(impl_->mu);
+  for (auto it = impl_->sources.rbegin(); it != impl_->sources.rend(); ++it)
+    if (it->name == name) {
+      std::FILE* f = std::fopen((impl_->dir / file_name(name)).c_str(), "a");
+      if (!f) return;
+      std::fprintf(f, "-- %s\n", line.c_str());
+      std::fclose(f);
+      return;
+    }
+}
+
+void LogRelay::drain(int timeout_ms) {
+  const auto end = std::chrono::steady_clock::now() + std::chrono::milliseconds(timeout_ms);
+  for (;;) {
+    {
+      std::lock_guard lk(impl_->mu);
+      bool open = false;
+      for (const auto& s : impl_->sources) open = open || s.fd >= 0;
+      if (!open) return;
+    }
+    if (std::chrono::steady_clock::now() >= end) return;
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+}
+
+}  // namespace plexus::cli
