@@ -21,6 +21,7 @@
 
 #include "child_process.hpp"
 #include "log_relay.hpp"
+#include "status_console.hpp"
 #include "command.hpp"
 #include "run_result.hpp"
 #include "signal_recorder.hpp"
@@ -50,7 +51,7 @@ struct LaunchOptions {
   std::string dds, out, qos_file, host, record;
   int domain = -1;
   double timeout = 10.0;
-  bool json = false, quiet = false;
+  bool json = false, quiet = false, report = false;
 };
 
 /// One child process: a name, the executable and its selection argument.
@@ -92,7 +93,8 @@ struct FaultClock {
 };
 
 RealtimeResult run_realtime(scenario::Scenario& sc, rt::Participant& participant, const rt::QosProfiles& profiles,
-                            std::vector<Process>& procs, double start_timeout_s, FaultClock& fault) {
+                            std::vector<Process>& procs, double start_timeout_s, FaultClock& fault,
+                            StatusConsole& console) {
   RealtimeResult res;
   scenario::StepExecutor wiring(sc, std::vector<bool>(sc.components.size(), false));
   const auto& signals = wiring.signals();
@@ -143,7 +145,43 @@ RealtimeResult run_realtime(scenario::Scenario& sc, rt::Participant& participant
   const int64_t end = t0 + static_cast<int64_t>((sc.duration + 2.0) * 1e9);
   msg::Signal m;
   scenario::SignalSample sample;
+  // The live status line, once a second: loop rates, deadline misses, command latency.
+  std::vector<uint64_t> loops_before(procs.size(), 0), misses_before(procs.size(), 0);
+  std::vector<std::size_t> latency_before(signals.size(), 0);
+  int64_t status_at = t0;
+  auto show_status = [&](int64_t now) {
+    const double dt = static_cast<double>(now - status_at) * 1e-9;
+    double min_rate = 1e18;
+    std::string slowest;
+    uint64_t misses = 0;
+    for (std::size_t i = 0; i < procs.size(); ++i) {
+      const double rate = static_cast<double>(last[i].loop_count() - loops_before[i]) / dt;
+      if (rate < min_rate) min_rate = rate, slowest = procs[i].service();
+      const uint64_t miss = last[i].overruns() + last[i].stale_inputs();
+      misses += miss - std::min(miss, misses_before[i]);
+      loops_before[i] = last[i].loop_count();
+      misses_before[i] = miss;
+    }
+    std::string lat;
+    for (std::size_t s : commands) {
+      auto& l = latency[s];
+      std::vector<int64_t> window(l.begin() + static_cast<std::ptrdiff_t>(latency_before[s]), l.end());
+      latency_before[s] = l.size();
+      if (window.empty()) continue;
+      char buf[96];
+      std::snprintf(buf, sizeof buf, "%s%s %.1f/%.1f", lat.empty() ? "" : ", ", signals[s].name.c_str(),
+                    percentile_us(window, 0.5) * 1e-3, percentile_us(window, 0.99) * 1e-3);
+      lat += buf;
+    }
+    char line[512];
+    std::snprintf(line, sizeof line, "t %5.1f/%.0f s | slowest loop %.0f Hz (%s) | deadline misses %llu/s | "
+                  "sensor->cmd p50/p99 ms: %s", static_cast<double>(now - t0) * 1e-9, sc.duration, min_rate,
+                  slowest.c_str(), static_cast<unsigned long long>(static_cast<double>(misses) / dt), lat.c_str());
+    console.status(line);
+    status_at = now;
+  };
   while (monotonic_ns() < end && !g_stop) {
+    if (monotonic_ns() - status_at >= 1'000'000'000) show_status(monotonic_ns());
     bool any_data = false;
     for (std::size_t s = 0; s < subs.size(); ++s) {
       while (subs[s].take(m)) {
@@ -170,7 +208,8 @@ RealtimeResult run_realtime(scenario::Scenario& sc, rt::Participant& participant
   for (std::size_t i = 0; i < procs.size(); ++i) {
     const auto& hb = last[i];
     res.services[procs[i].service()] = {{"loop_count", hb.loop_count()},         {"overruns", hb.overruns()},
-                                        {"stale_input_reads", hb.rejected_inputs()}, {"jitter_p50_us", hb.jitter_p50_us()},
+                                        {"stale_input_reads", hb.stale_inputs()},  {"rejected_inputs", hb.rejected_inputs()},
+                                        {"jitter_p50_us", hb.jitter_p50_us()},
                                         {"jitter_p99_us", hb.jitter_p99_us()},     {"jitter_max_us", hb.jitter_max_us()},
                                         {"compute_p50_us", hb.compute_p50_us()},   {"compute_p99_us", hb.compute_p99_us()}};
   }
@@ -346,7 +385,8 @@ int run_launch(const LaunchOptions& o) {
   // host without the clock, to <run>-<host>/logs), each line also on stderr, prefixed.
   const std::string run_dir = !o.out.empty() ? o.out
                               : scenario::default_run_folder(sc.name).string() + (runs_clock ? "" : "-" + o.host);
-  LogRelay relay(std::filesystem::path(run_dir) / "logs", true);
+  StatusConsole console(!o.quiet);
+  LogRelay relay(std::filesystem::path(run_dir) / "logs", console);
   auto start_process = [&relay](Process& p) {
     const int fd = relay.open(p.service());
     p.pid = spawn(p.program, p.args, fd);
@@ -412,6 +452,12 @@ int run_launch(const LaunchOptions& o) {
 
   scenario::RunLog log;
   double wall = 0;
+  struct Response {  // lockstep: a producer's step response, over the run
+    uint64_t samples = 0;
+    int windows = 0;
+    double p50_sum = 0, worst_p99 = 0;
+  };
+  std::map<std::string, Response> responses;
   if (!runs_clock) {
     // Another host runs the clock: serve until our processes end with the run.
     auto running = [&] {
@@ -430,8 +476,9 @@ int run_launch(const LaunchOptions& o) {
     try {
       std::vector<Process> all = everywhere;  // monitored through heartbeats: not the external ones
       all.erase(std::remove_if(all.begin(), all.end(), is_external), all.end());
-      r = run_realtime(sc, *participant, profiles, all, 30.0, fault);
+      r = run_realtime(sc, *participant, profiles, all, 30.0, fault, console);
       run_active = false;
+      console.clear();
     } catch (const distributed::LockstepError& e) {
       return failure(e.what());
     }
@@ -456,17 +503,46 @@ int run_launch(const LaunchOptions& o) {
                     l["p50_us"].get<double>(), l["p99_us"].get<double>(), l["samples"].get<int>());
       summary.lines.push_back(line);
     }
-    return finish_run(sc, r.log, r.wall, run_dir, o.json, o.quiet, summary);
+    const int rc = finish_run(sc, r.log, r.wall, run_dir, o.json, o.quiet, summary);
+    if (o.report) print_report(run_dir, o.json);
+    return rc;
   }
   try {
     distributed::LockstepClock clock(sc, *participant, qos, {.timeout_s = o.timeout});
     clock.wait_ready(static_cast<int>(everywhere.size()), 30.0, g_stop);
-    scenario::ProgressBar bar(!o.quiet);
     const int64_t start = monotonic_ns();
-    log = clock.run(g_stop, [&](int64_t k, int64_t n) { bar.update(k, n); },
-                    recorder ? recorder->tap(clock.signals()) : distributed::LockstepClock::SampleTap{});
+    // The live status line, once a second: progress, step rate, the slowest producer.
+    std::vector<distributed::LockstepClock::ProducerStatus> status;
+    int64_t status_at = start, steps_at = 0;
+    auto observe = [&](int64_t k, int64_t n) {
+      const int64_t now = monotonic_ns();
+      if (now - status_at < 1'000'000'000 && k != n) return;
+      clock.producer_status(status);
+      const double dt = static_cast<double>(now - status_at) * 1e-9;
+      const double rate = dt > 0 ? static_cast<double>(k - steps_at) / dt : 0.0;
+      status_at = now;
+      steps_at = k;
+      for (const auto& p : status) {
+        auto& acc = responses[p.producer];
+        if (p.samples == 0) continue;
+        acc.windows += 1;
+        acc.p50_sum += p.response_p50_us;
+        acc.worst_p99 = std::max(acc.worst_p99, p.response_p99_us);
+        acc.samples += p.samples;
+      }
+      const auto slow = std::max_element(status.begin(), status.end(), [](const auto& a, const auto& b) {
+        return a.response_p99_us < b.response_p99_us;
+      });
+      char line[512];
+      std::snprintf(line, sizeof line, "t %.1f/%.0f s (%3.0f%%) | %.0f steps/s, %.2fx realtime | slowest: %s p99 %.0f us",
+                    static_cast<double>(k) * sc.step, sc.duration, 100.0 * static_cast<double>(k) / static_cast<double>(n),
+                    rate, rate * sc.step, slow == status.end() ? "-" : slow->producer.c_str(),
+                    slow == status.end() ? 0.0 : slow->response_p99_us);
+      console.status(line);
+    };
+    log = clock.run(g_stop, observe, recorder ? recorder->tap(clock.signals()) : distributed::LockstepClock::SampleTap{});
     wall = static_cast<double>(monotonic_ns() - start) * 1e-9;
-    bar.finish();
+    console.clear();
   } catch (const distributed::LockstepError& e) {
     return failure(e.what());
   }
@@ -481,7 +557,15 @@ int run_launch(const LaunchOptions& o) {
   summary.headline = headline;
   summary.extra["steps_per_s"] = steps_per_s;
   summary.extra["processes"] = process_table(procs);
-  return finish_run(sc, log, wall, run_dir, o.json, o.quiet, summary);
+  nlohmann::ordered_json resp = nlohmann::ordered_json::object();
+  for (const auto& [producer, acc] : responses)
+    resp[producer] = {{"samples", acc.samples},
+                      {"response_p50_us", acc.windows ? acc.p50_sum / acc.windows : 0.0},
+                      {"response_p99_us_worst_second", acc.worst_p99}};
+  summary.extra["response"] = resp;
+  const int rc = finish_run(sc, log, wall, run_dir, o.json, o.quiet, summary);
+  if (o.report) print_report(run_dir, o.json);
+  return rc;
 }
 
 }  // namespace
@@ -505,7 +589,8 @@ Command add_launch_command(CLI::App& root) {
   c.app->add_option("--qos-file", o->qos_file, "QoS profiles (default deploy/qos.yaml)");
   c.app->add_option("--timeout", o->timeout, "Seconds a process may stay silent before the run fails");
   c.app->add_flag("--json", o->json, "Print the metrics (and steps_per_s) as one JSON object");
-  c.app->add_flag("--quiet,-q", o->quiet, "No progress bar");
+  c.app->add_flag("--quiet,-q", o->quiet, "No live status line");
+  c.app->add_flag("--report", o->report, "Then plot the run and print its metrics against the expectations (plexus report)");
   c.run = [o] { return run_launch(*o); };
   return c;
 }

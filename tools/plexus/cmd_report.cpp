@@ -5,7 +5,7 @@
 #include <string>
 
 #include "command.hpp"
-#include "plexus/scenario/report.hpp"
+#include "run_result.hpp"
 
 namespace plexus::cli {
 
@@ -15,9 +15,7 @@ Command add_report_command(CLI::App& root) {
   c.app = root.add_subcommand("report", "Plot a run folder written by `plexus sim` (gnuplot PNGs) and tabulate its metrics");
   c.app->add_option("run_dir", *dir, "Run folder")->required();
   c.run = [dir] {
-    const auto r = scenario::write_report(*dir);
-    std::printf("%s\n", r.markdown.string().c_str());
-    for (const auto& p : r.plots) std::printf("%s\n", p.string().c_str());
+    print_report(*dir);
     return 0;
   };
   return c;

@@ -4,6 +4,7 @@
 #include <poll.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cstdio>
@@ -31,7 +32,7 @@ struct LogRelay::Impl {
     std::string partial;  // bytes after the last newline
   };
   std::filesystem::path dir;
-  bool echo = true;
+  StatusConsole* console = nullptr;
   std::mutex mu;  // guards sources (added by the launcher, read by the thread)
   std::vector<Source> sources;
   std::atomic<bool> running{true};
@@ -44,7 +45,9 @@ struct LogRelay::Impl {
       std::fputc('\n', s.file);
       std::fflush(s.file);
     }
-    if (echo) std::fprintf(stderr, "%-*s | %s\n", static_cast<int>(width), s.name.c_str(), line.c_str());
+    std::string out = s.name;
+    out.resize(std::max(width, s.name.size()), ' ');
+    console->line(out + " | " + line);
   }
 
   void close_source(Source& s) {
@@ -95,9 +98,9 @@ struct LogRelay::Impl {
   }
 };
 
-LogRelay::LogRelay(const std::filesystem::path& dir, bool echo) : impl_(std::make_unique<Impl>()) {
+LogRelay::LogRelay(const std::filesystem::path& dir, StatusConsole& console) : impl_(std::make_unique<Impl>()) {
   impl_->dir = dir;
-  impl_->echo = echo;
+  impl_->console = &console;
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) throw std::runtime_error(dir.string() + ": cannot create the log folder (" + ec.message() + ")");

@@ -8,12 +8,14 @@
 #include <memory>
 #include <string>
 
+#include "status_console.hpp"
+
 namespace plexus::cli {
 
 class LogRelay {
  public:
-  /// Log files go to `dir` (created). `echo`: also print prefixed lines on stderr.
-  LogRelay(const std::filesystem::path& dir, bool echo);
+  /// Log files go to `dir` (created); every line is also printed, prefixed, on `console`.
+  LogRelay(const std::filesystem::path& dir, StatusConsole& console);
   ~LogRelay();
   LogRelay(const LogRelay&) = delete;
   LogRelay& operator=(const LogRelay&) = delete;

@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "plexus/scenario/evaluation.hpp"
+#include "plexus/scenario/report.hpp"
 #include "plexus/scenario/run_folder.hpp"
 
 namespace plexus::cli {
@@ -30,6 +31,13 @@ int finish_run(const scenario::Scenario& sc, const scenario::RunLog& log, double
   if (!quiet) std::fprintf(stderr, "run folder: %s\n", dir.string().c_str());
   for (const auto& f : ev.failures) std::fprintf(stderr, "%s\n", f.c_str());
   return ev.failures.empty() ? 0 : 1;
+}
+
+void print_report(const std::string& run_dir, bool to_stderr) {
+  const auto r = scenario::write_report(run_dir);
+  std::FILE* out = to_stderr ? stderr : stdout;
+  std::fprintf(out, "\n%s\nreport: %s\n", r.table.c_str(), r.markdown.string().c_str());
+  for (const auto& p : r.plots) std::fprintf(out, "  %s\n", p.string().c_str());
 }
 
 }  // namespace plexus::cli

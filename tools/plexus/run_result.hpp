@@ -25,4 +25,8 @@ struct RunSummary {
 int finish_run(const scenario::Scenario& sc, const scenario::RunLog& log, double wall_seconds, const std::string& out,
                bool json, bool quiet, const RunSummary& summary);
 
+/// `plexus report` (and `launch --report`): writes the plots and report.md of a run folder,
+/// prints the metrics-against-expectations table (the paper comparison) and the files.
+void print_report(const std::string& run_dir, bool to_stderr = false);
+
 }  // namespace plexus::cli

@@ -2,6 +2,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <array>
 #include <thread>
 
@@ -158,11 +159,31 @@ struct LockstepClock::Impl {
   std::vector<rt::Subscriber<msg::Signal>> subs;
   detail::InputGuard guard{"lockstep clock"};
   msg::Signal in;
+  // Response times (ns) since the last producer_status(), per producer.
+  std::vector<std::string> producers;
+  std::vector<std::size_t> producer_of;  // by signal
+  std::vector<std::vector<int64_t>> response;
+  std::vector<std::size_t> response_count;
+  std::vector<int64_t> scratch;
+  static constexpr std::size_t kWindow = 4096;
 
   Impl(scenario::Scenario& s, rt::Participant& p, const rt::QosProfile& qos, LockstepOptions o)
       : sc(s), exec(s, std::vector<bool>(s.components.size(), false)), opt(o) {
     clock = p.publisher<msg::ClockStep>(kClockTopic, qos);
-    for (const auto& spec : exec.signals()) subs.push_back(p.subscriber<msg::Signal>(signal_topic(spec.name), qos));
+    for (const auto& spec : exec.signals()) {
+      subs.push_back(p.subscriber<msg::Signal>(signal_topic(spec.name), qos));
+      auto it = std::find(producers.begin(), producers.end(), spec.producer);
+      producer_of.push_back(static_cast<std::size_t>(it - producers.begin()));
+      if (it == producers.end()) producers.push_back(spec.producer);
+    }
+    response.assign(producers.size(), std::vector<int64_t>(kWindow));
+    response_count.assign(producers.size(), 0);
+    scratch.resize(kWindow);
+  }
+
+  void note_response(std::size_t signal, int64_t ns) {
+    const std::size_t p = producer_of[signal];
+    response[p][response_count[p]++ % kWindow] = ns;
   }
 };
 
@@ -192,6 +213,28 @@ void LockstepClock::wait_ready(int hosts, double timeout_s, const std::atomic<bo
 
 const std::vector<SignalSpec>& LockstepClock::signals() const { return impl_->exec.signals(); }
 
+void LockstepClock::producer_status(std::vector<ProducerStatus>& out) {
+  Impl& m = *impl_;
+  out.resize(m.producers.size());
+  for (std::size_t p = 0; p < m.producers.size(); ++p) {
+    ProducerStatus& st = out[p];
+    if (st.producer != m.producers[p]) st.producer = m.producers[p];
+    const std::size_t n = std::min(m.response_count[p], Impl::kWindow);
+    st.samples = m.response_count[p];
+    std::copy_n(m.response[p].begin(), n, m.scratch.begin());
+    auto at = [&](double q) {
+      if (n == 0) return 0.0;
+      const auto i = static_cast<std::ptrdiff_t>(q * static_cast<double>(n - 1));
+      std::nth_element(m.scratch.begin(), m.scratch.begin() + i, m.scratch.begin() + static_cast<std::ptrdiff_t>(n));
+      return static_cast<double>(m.scratch[static_cast<std::size_t>(i)]) * 1e-3;
+    };
+    st.response_p50_us = at(0.5);
+    st.response_p99_us = at(0.99);
+    st.response_max_us = at(1.0);
+    m.response_count[p] = 0;
+  }
+}
+
 scenario::RunLog LockstepClock::run(const std::atomic<bool>& stop, const scenario::StepObserver& observer,
                                     const SampleTap& tap) {
   Impl& m = *impl_;
@@ -220,12 +263,14 @@ scenario::RunLog LockstepClock::run(const std::atomic<bool>& stop, const scenari
     tick.header().origin_time_ns(0);
     tick.header().data_time_ns(k * step_ns);
     m.clock.publish(tick);
+    const int64_t published = wall_time_ns();  // producers stamp their samples' publish time on the wall clock
     // Every signal due at step k, from every host: then step k is complete everywhere.
     for (std::size_t s = 0; s < signals.size(); ++s) {
       if (k % signals[s].period_steps != 0) continue;
       const int64_t deadline = monotonic_ns() + timeout;
       for (;;) {
         if (m.subs[s].take(m.in, &meta)) {
+          m.note_response(s, m.in.header().publish_time_ns() - published);
           if (tap) tap(s, m.in, meta);
           if (!m.guard.accept(m.in, signals[s], sample))
             throw LockstepError("lockstep: refused the sample of '" + signals[s].name + "' from '" +
@@ -243,7 +288,7 @@ scenario::RunLog LockstepClock::run(const std::atomic<bool>& stop, const scenari
         m.subs[s].wait(std::min<int64_t>(deadline - now, 100'000'000));
       }
     }
-    if (observer && (k % 1024 == 0 || k == m.sc.steps)) observer(k, m.sc.steps);
+    if (observer && (k % 128 == 0 || k == m.sc.steps)) observer(k, m.sc.steps);
   }
   tick.step_index(kEndOfRun);
   m.clock.publish(tick);

@@ -98,6 +98,7 @@ struct RealtimeHost::Impl {
     hb.loop_count(ls.iterations);
     hb.overruns(ls.overruns);
     hb.rejected_inputs(guard.rejected());
+    hb.stale_inputs(report.stale_inputs);
     hb.jitter_p50_us(ls.jitter_p50_us);
     hb.jitter_p99_us(ls.jitter_p99_us);
     hb.jitter_max_us(ls.jitter_max_us);

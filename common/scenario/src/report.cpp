@@ -163,7 +163,8 @@ Report write_report(const fs::path& run_dir) {
   const std::string name = scenario["name"] && scenario["name"].IsScalar() ? scenario["name"].Scalar() : dir;
   md << "# Report: " << name << "\n\n";
   md << "Digest `" << (metrics.contains("digest") ? metrics["digest"].get<std::string>() : "?") << "`\n\n";
-  md << "| metric | value | expectation | result |\n|---|---|---|---|\n";
+  std::ostringstream table;
+  table << "| metric | value | expectation | result |\n|---|---|---|---|\n";
   for (const auto& [metric, value] : metrics.items()) {
     if (metric == "digest") continue;
     const double v = value.is_number() ? value.get<double>() : std::nan("");
@@ -172,8 +173,10 @@ Report write_report(const fs::path& run_dir) {
       bound = (bound == "-" ? "" : bound + ", ") + e.op_text() + " " + format_number(e.bound);
       result = (result == "-" || result == "pass") && e.holds(v) ? "pass" : "FAIL";
     }
-    md << "| " << metric << " | " << format_number(v) << " | " << bound << " | " << result << " |\n";
+    table << "| " << metric << " | " << format_number(v) << " | " << bound << " | " << result << " |\n";
   }
+  report.table = table.str();
+  md << report.table;
   md << "\n## Plots\n";
   for (const auto& p : report.plots) md << "\n![" << p.stem().string() << "](plots/" << p.filename().string() << ")\n";
   report.markdown = run_dir / "report.md";

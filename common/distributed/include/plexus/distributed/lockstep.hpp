@@ -84,6 +84,18 @@ class LockstepClock {
   /// The scenario's signals, by the index SampleTap reports.
   const std::vector<scenario::SignalSpec>& signals() const;
 
+  /// How fast each producer answers: from the clock publishing step k to the producer
+  /// publishing its sample of step k (both wall-clock stamps: one machine, or synchronised
+  /// clocks), over the most recent samples (up to 4096) since the previous call. Call it
+  /// from the observer (the run's thread); it does not allocate once `out` has grown to
+  /// the producer count.
+  struct ProducerStatus {
+    std::string producer;
+    uint64_t samples = 0;
+    double response_p50_us = 0, response_p99_us = 0, response_max_us = 0;
+  };
+  void producer_status(std::vector<ProducerStatus>& out);
+
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;

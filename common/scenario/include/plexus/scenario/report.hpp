@@ -13,6 +13,7 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
 #include <vector>
 
 namespace plexus::scenario {
@@ -20,6 +21,7 @@ namespace plexus::scenario {
 struct Report {
   std::filesystem::path markdown;
   std::vector<std::filesystem::path> plots;
+  std::string table;  ///< the metrics-against-expectations table (markdown), as in report.md
 };
 
 /// Throws InputError when `run_dir` is not a readable run folder, std::runtime_error

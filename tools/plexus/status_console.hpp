@@ -1,0 +1,35 @@
+// The launcher's stderr: log lines from the children (LogRelay) and a live status line
+// that stays at the bottom. On a terminal the status line is redrawn in place (each log
+// line clears it first and redraws it after); elsewhere (CI logs, files) it is printed as
+// an ordinary line every `plain_interval_s`. Thread-safe.
+#pragma once
+
+#include <cstdint>
+#include <mutex>
+#include <string>
+
+namespace plexus::cli {
+
+class StatusConsole {
+ public:
+  /// `status_enabled`: false for --quiet (log lines still pass through).
+  explicit StatusConsole(bool status_enabled, double plain_interval_s = 10.0);
+  ~StatusConsole();
+
+  /// Prints one log line (a newline is added).
+  void line(const std::string& text);
+  /// Replaces the status line.
+  void status(const std::string& text);
+  /// Removes the status line (before the final report).
+  void clear();
+
+ private:
+  void erase_locked();
+  std::mutex mu_;
+  bool enabled_, tty_;
+  int64_t plain_interval_ns_, next_plain_ns_ = 0;
+  std::string status_;
+  bool drawn_ = false;
+};
+
+}  // namespace plexus::cli
