@@ -146,7 +146,11 @@ RealtimeResult run_realtime(scenario::Scenario& sc, rt::Participant& participant
   msg::Signal m;
   scenario::SignalSample sample;
   // The live status line, once a second: loop rates, deadline misses, command latency.
+  // Loop rates come from consecutive heartbeats (loop count over their publish times), so a
+  // heartbeat that has not arrived yet this second does not read as a stopped loop.
   std::vector<uint64_t> loops_before(procs.size(), 0), misses_before(procs.size(), 0);
+  std::vector<int64_t> beat_before(procs.size(), 0);
+  std::vector<double> rate_of(procs.size(), 0.0);
   std::vector<std::size_t> latency_before(signals.size(), 0);
   int64_t status_at = t0;
   auto show_status = [&](int64_t now) {
@@ -155,11 +159,17 @@ RealtimeResult run_realtime(scenario::Scenario& sc, rt::Participant& participant
     std::string slowest;
     uint64_t misses = 0;
     for (std::size_t i = 0; i < procs.size(); ++i) {
-      const double rate = static_cast<double>(last[i].loop_count() - loops_before[i]) / dt;
-      if (rate < min_rate) min_rate = rate, slowest = procs[i].service();
+      const int64_t beat = last[i].header().publish_time_ns();
+      if (beat > beat_before[i]) {
+        if (beat_before[i] > 0 && last[i].loop_count() >= loops_before[i])
+          rate_of[i] = static_cast<double>(last[i].loop_count() - loops_before[i]) /
+                       (static_cast<double>(beat - beat_before[i]) * 1e-9);
+        beat_before[i] = beat;
+        loops_before[i] = last[i].loop_count();
+      }
+      if (rate_of[i] > 0 && rate_of[i] < min_rate) min_rate = rate_of[i], slowest = procs[i].service();  // 0: unknown yet
       const uint64_t miss = last[i].overruns() + last[i].stale_inputs();
       misses += miss - std::min(miss, misses_before[i]);
-      loops_before[i] = last[i].loop_count();
       misses_before[i] = miss;
     }
     std::string lat;
@@ -174,9 +184,11 @@ RealtimeResult run_realtime(scenario::Scenario& sc, rt::Participant& participant
       lat += buf;
     }
     char line[512];
-    std::snprintf(line, sizeof line, "t %5.1f/%.0f s | slowest loop %.0f Hz (%s) | deadline misses %llu/s | "
-                  "sensor->cmd p50/p99 ms: %s", static_cast<double>(now - t0) * 1e-9, sc.duration, min_rate,
-                  slowest.c_str(), static_cast<unsigned long long>(static_cast<double>(misses) / dt), lat.c_str());
+    char loop[160] = "slowest loop -";
+    if (!slowest.empty()) std::snprintf(loop, sizeof loop, "slowest loop %.0f Hz (%s)", min_rate, slowest.c_str());
+    std::snprintf(line, sizeof line, "t %5.1f/%.0f s | %s | deadline misses %llu/s | sensor->cmd p50/p99 ms: %s",
+                  static_cast<double>(now - t0) * 1e-9, sc.duration, loop,
+                  static_cast<unsigned long long>(static_cast<double>(misses) / dt), lat.c_str());
     console.status(line);
     status_at = now;
   };
@@ -386,6 +398,7 @@ int run_launch(const LaunchOptions& o) {
   const std::string run_dir = !o.out.empty() ? o.out
                               : scenario::default_run_folder(sc.name).string() + (runs_clock ? "" : "-" + o.host);
   StatusConsole console(!o.quiet);
+  const ConsoleLogging console_logging(console);
   LogRelay relay(std::filesystem::path(run_dir) / "logs", console);
   auto start_process = [&relay](Process& p) {
     const int fd = relay.open(p.service());

@@ -2,6 +2,8 @@
 
 #include <unistd.h>
 
+#include <spdlog/sinks/base_sink.h>
+
 #include <cstdio>
 
 #include "plexus/base/clock.hpp"
@@ -55,5 +57,36 @@ void StatusConsole::clear() {
   status_.clear();
   std::fflush(stderr);
 }
+
+namespace {
+/// An spdlog sink that hands each formatted line to the console.
+class ConsoleSink final : public spdlog::sinks::base_sink<std::mutex> {
+ public:
+  explicit ConsoleSink(StatusConsole& console) : console_(console) {}
+
+ protected:
+  void sink_it_(const spdlog::details::log_msg& msg) override {
+    spdlog::memory_buf_t buf;
+    formatter_->format(msg, buf);
+    std::string line(buf.data(), buf.size());
+    while (!line.empty() && (line.back() == '\n' || line.back() == '\r')) line.pop_back();
+    console_.line(line);
+  }
+  void flush_() override {}
+
+ private:
+  StatusConsole& console_;
+};
+}  // namespace
+
+ConsoleLogging::ConsoleLogging(StatusConsole& console) {
+  auto logger = spdlog::default_logger();
+  saved_ = logger->sinks();
+  auto sink = std::make_shared<ConsoleSink>(console);
+  sink->set_pattern("%Y-%m-%dT%H:%M:%S.%e %l [%n] %v");
+  logger->sinks() = {sink};
+}
+
+ConsoleLogging::~ConsoleLogging() { spdlog::default_logger()->sinks() = saved_; }
 
 }  // namespace plexus::cli

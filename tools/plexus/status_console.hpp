@@ -4,9 +4,13 @@
 // an ordinary line every `plain_interval_s`. Thread-safe.
 #pragma once
 
+#include <spdlog/spdlog.h>
+
 #include <cstdint>
+#include <memory>
 #include <mutex>
 #include <string>
+#include <vector>
 
 namespace plexus::cli {
 
@@ -30,6 +34,19 @@ class StatusConsole {
   int64_t plain_interval_ns_, next_plain_ns_ = 0;
   std::string status_;
   bool drawn_ = false;
+};
+
+/// While alive, the process's default spdlog logger writes through `console` (so the
+/// launcher's own warnings do not tear the status line); restores the previous sinks.
+class ConsoleLogging {
+ public:
+  explicit ConsoleLogging(StatusConsole& console);
+  ~ConsoleLogging();
+  ConsoleLogging(const ConsoleLogging&) = delete;
+  ConsoleLogging& operator=(const ConsoleLogging&) = delete;
+
+ private:
+  std::vector<std::shared_ptr<spdlog::sinks::sink>> saved_;
 };
 
 }  // namespace plexus::cli
