@@ -119,32 +119,41 @@ int64_t LockstepHost::run(const std::atomic<bool>& stop) {
     if (!m.out[signal].publish(m.out_msg))
       throw LockstepError("lockstep: cannot publish '" + m.exec.signals()[signal].name + "' at " + step_text(s.step));
   };
+  // ClockStep k allows steps up to k + lead: a host runs ahead of the clock as far as its
+  // inputs allow (each remote input is waited for exactly, so the result cannot change), which
+  // takes the clock's round trip off the critical path of a closed loop.
+  const int64_t lead = std::clamp<int64_t>(m.opt.lead_steps, 0, kMaxLeadSteps);
   msg::ClockStep tick;
   int64_t steps = 0;
   int64_t expected = 0;
+  int64_t allowed = -1;  // the last step the clock allows
   int64_t last_tick = monotonic_ns();
   while (!stop.load(std::memory_order_relaxed)) {
-    if (!m.clock.take(tick)) {
-      // Every step done and the clock's writer gone: the run ended even if the end-of-run
-      // mark never reached us (the clock waits for its acknowledgement, but bounded).
-      if (expected > m.sc.steps && m.clock.matched_count() == 0) break;
-      // The clock waits for our outputs, so silence here means the clock is gone; the
-      // launcher's timeout covers a slow run, this one a dead launcher.
-      if (monotonic_ns() - last_tick > 3 * timeout)
-        throw LockstepError("lockstep: the clock stopped at " + step_text(expected) + " for more than " +
-                            std::to_string(3 * timeout / 1'000'000'000) + " s");
-      m.clock.wait(100'000'000);
+    bool ended = false;
+    while (m.clock.take(tick)) {
+      last_tick = monotonic_ns();
+      if (tick.step_index() == kEndOfRun) {
+        ended = true;
+        break;
+      }
+      allowed = std::max(allowed, static_cast<int64_t>(tick.step_index()) + lead);  // repeats (late join) are harmless
+    }
+    if (ended) break;
+    if (expected <= std::min(allowed, m.sc.steps)) {
+      m.exec.step(expected, remote, publish);
+      ++expected;
+      ++steps;
       continue;
     }
-    last_tick = monotonic_ns();
-    if (tick.step_index() == kEndOfRun) break;
-    const auto k = static_cast<int64_t>(tick.step_index());
-    if (k < expected) continue;  // a repeat (late join): already done
-    if (k != expected)
-      throw LockstepError("lockstep: the clock jumped from " + step_text(expected) + " to " + step_text(k));
-    m.exec.step(k, remote, publish);
-    ++expected;
-    ++steps;
+    // Every step done and the clock's writer gone: the run ended even if the end-of-run
+    // mark never reached us (the clock waits for its acknowledgement, but bounded).
+    if (expected > m.sc.steps && m.clock.matched_count() == 0) break;
+    // The clock waits for our outputs, so silence here means the clock is gone; the
+    // launcher's timeout covers a slow run, this one a dead launcher.
+    if (monotonic_ns() - last_tick > 3 * timeout)
+      throw LockstepError("lockstep: the clock stopped at " + step_text(expected) + " for more than " +
+                          std::to_string(3 * timeout / 1'000'000'000) + " s");
+    m.clock.wait(100'000'000);
   }
   return steps;
 }

@@ -3,10 +3,12 @@
 //
 // Protocol:
 //  - the clock (in `plexus launch`) publishes ClockStep k on `lockstep/clock`;
-//  - every host runs base step k of its components (StepExecutor). An input produced in
-//    another process is read from `sig/<signal>` (plexus::msg::Signal, bit-exact):
-//    the host waits for exactly the sample the in-process executor would use (the latest
-//    one due at step k, or k-1 for a delayed input);
+//  - every host runs base step k of its components (StepExecutor) once the clock has
+//    published a step >= k - lead_steps (it may run ahead of the clock by that much). An
+//    input produced in another process is read from `sig/<signal>` (plexus::msg::Signal,
+//    bit-exact): the host waits for exactly the sample the in-process executor would use
+//    (the latest one due at step k, or k-1 for a delayed input), so the lead changes the
+//    speed, never the result;
 //  - every output sample is published on `sig/<signal>`;
 //  - the clock records every signal; when all samples due at step k have arrived, it
 //    publishes ClockStep k+1. After the last step it publishes the end-of-run step.
@@ -37,8 +39,17 @@ inline constexpr uint64_t kEndOfRun = ~uint64_t{0};
 std::string signal_topic(const std::string& signal);
 inline const char* const kClockTopic = "lockstep/clock";
 
+/// Largest lead_steps: a producer can then be at most this many steps ahead of a consumer,
+/// well inside a host's per-signal ring (32 samples) and the lockstep profile's keep_last 64.
+inline constexpr int64_t kMaxLeadSteps = 16;
+
 struct LockstepOptions {
   double timeout_s = 10.0;  ///< longest wait for one sample or one clock step
+  /// Host: ClockStep k lets it run steps up to k + lead_steps as soon as their inputs are
+  /// there (0: strictly the clock's step). Results are identical for any lead (every input
+  /// is the exact sample); a lead takes the clock's round trip off a closed loop's critical
+  /// path. Clamped to [0, kMaxLeadSteps].
+  int64_t lead_steps = 8;
 };
 
 /// A run that cannot go on: a producer stopped answering, or data arrived out of order.
