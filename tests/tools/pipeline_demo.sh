@@ -13,5 +13,7 @@ sleep 1
 "$bin/demo_node" source --dds "$vendor" --domain "$domain" --rate 200 --count 200 > /dev/null
 wait $rec
 kill $echo_pid; wait $echo_pid || true
-"$bin/plexus" latency pipeline "$f" --out "$work" --json
+out=$("$bin/plexus" latency pipeline "$f" --out "$work" --json)
+echo "$out"
+echo "$out" | grep -q '"hops":\[{"from":"demo/ping","to":"demo/pong"' || { echo "no ping -> pong hop"; exit 1; }
 test -s "$work/pipeline.png"
