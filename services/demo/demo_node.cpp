@@ -61,7 +61,29 @@ int run_source(rt::Participant& p, const rt::QosProfile& qos, double rate, int c
     std::fprintf(stderr, "demo_node source: no echo matched within %.0f s\n", timeout_s);
     return 1;
   }
-  std::this_thread::sleep_for(std::chrono::milliseconds(200));  // let both directions settle
+  // Warm-up: a writer can see its reader matched before that reader has matched the writer
+  // (then the first samples are dropped, legitimately, under volatile durability; Fast DDS
+  // -> Cyclone DDS showed up to a second of it). Ping until one echo comes back, so all four
+  // endpoints know each other before anything is measured. Warm-up pings carry x = -1.
+  {
+    msg::Pose2D warm, back;
+    warm.x(-1.0);
+    bool echoed = false;
+    const int64_t give_up = monotonic_ns() + static_cast<int64_t>(timeout_s * 1e9);
+    while (!echoed && !g_stop && monotonic_ns() < give_up) {
+      warm.header().origin_time_ns(0);
+      pub.publish(warm);
+      if (sub.wait(20'000'000))
+        while (sub.take(back)) echoed = true;
+    }
+    if (!echoed) {
+      std::fprintf(stderr, "demo_node source: no echo came back within %.0f s\n", timeout_s);
+      return 1;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    while (sub.take(back)) {  // late warm-up echoes
+    }
+  }
   std::vector<int64_t> rtt;
   rtt.reserve(static_cast<std::size_t>(count));
   rt::PeriodicLoop loop({.rate_hz = rate});
@@ -71,6 +93,7 @@ int run_source(rt::Participant& p, const rt::QosProfile& qos, double rate, int c
   int64_t last_rx = t0;
   auto drain = [&] {
     while (sub.take(in)) {
+      if (in.x() < 0) continue;  // a late warm-up echo
       rtt.push_back(wall_time_ns() - in.header().origin_time_ns());
       last_rx = monotonic_ns();
     }
