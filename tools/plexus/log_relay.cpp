@@ -1,5 +1,7 @@
 #include "log_relay.hpp"
 
+#include "plexus/base/input_error.hpp"
+
 #include <fcntl.h>
 #include <poll.h>
 #include <unistd.h>
@@ -103,7 +105,7 @@ LogRelay::LogRelay(const std::filesystem::path& dir, StatusConsole& console) : i
   impl_->console = &console;
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
-  if (ec) throw std::runtime_error(dir.string() + ": cannot create the log folder (" + ec.message() + ")");
+  if (ec) throw InputError(dir.string() + ": cannot create the log folder (" + ec.message() + ")");
   impl_->thread = std::thread([this] { impl_->loop(); });
 }
 
