@@ -140,5 +140,8 @@ int main(int argc, char** argv) {
   } catch (const distributed::LockstepError& e) {
     std::fprintf(stderr, "%s: %s\n", kName, e.what());
     return 1;
+  } catch (const std::exception& e) {  // a DDS entity that cannot be created, for one
+    std::fprintf(stderr, "%s: failed: %s\n", kName, e.what());
+    return 1;
   }
 }

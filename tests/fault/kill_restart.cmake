@@ -3,9 +3,11 @@
 # restarted the service, and that tracking resumed (the scenario's expectations, passed in
 # EXPECT as --set arguments). How fast the safe command came is reported, not asserted here:
 # timing goals live in measured reports, not in tests on a shared machine.
-# Arguments: PLEXUS, SCENARIO, OUT, DOMAIN, KILL (PROCESS@SECONDS), SERVICE, EXPECT ("|"-separated).
+# Arguments: PLEXUS, SCENARIO, OUT, DOMAIN, KILL (PROCESS@SECONDS), SERVICE, EXPECT and VENDORS
+# (launch arguments choosing the vendors), both "|"-separated.
 string(REPLACE "|" ";" expect "${EXPECT}")
-execute_process(COMMAND ${PLEXUS} launch ${SCENARIO} --quiet --domain ${DOMAIN} --out ${OUT} --kill ${KILL}
+string(REPLACE "|" ";" vendors "${VENDORS}")
+execute_process(COMMAND ${PLEXUS} launch ${SCENARIO} --quiet --domain ${DOMAIN} --out ${OUT} --kill ${KILL} ${vendors}
                         --set clock.mode=realtime ${expect}
                 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 message(STATUS "${out}${err}")

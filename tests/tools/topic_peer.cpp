@@ -3,6 +3,7 @@
 //
 //   topic_peer pub --dds fast --domain 180 --topic tools/pose --profile sensor --rate 50 --duration 20
 //   topic_peer sub --dds cyclone --domain 180 --topic tools/pose --profile sensor_reliable --duration 20
+//   topic_peer sub ... --expect 100     (exit 1 unless 100 samples arrived)
 //
 // pub publishes x = k, y = 2k, theta = 0.5 (k = 1, 2, ...) until --count or --duration.
 #include <CLI/CLI.hpp>
@@ -27,7 +28,7 @@ int main(int argc, char** argv) {
   using namespace plexus;
   CLI::App app{"topic_peer: one Pose2D writer or reader"};
   std::string role, dds = "fast", topic = "tools/pose", profile = "sensor";
-  int domain = 180, count = 0;
+  int domain = 180, count = 0, expect = 0;
   double rate = 50, duration = 20;
   bool wait_reader = false;
   app.add_option("role", role)->required()->check(CLI::IsMember({"pub", "sub"}));
@@ -38,6 +39,7 @@ int main(int argc, char** argv) {
   app.add_option("--rate", rate);
   app.add_option("--count", count);
   app.add_option("--duration", duration);
+  app.add_option("--expect", expect, "sub: exit 1 unless at least this many samples arrived");
   app.add_flag("--wait-reader", wait_reader, "pub: start publishing once a reader matched");
   CLI11_PARSE(app, argc, argv);
   std::signal(SIGINT, on_signal);
@@ -54,8 +56,14 @@ int main(int argc, char** argv) {
     if (role == "sub") {
       auto sub = p->subscriber<msg::Pose2D>(topic, qos);
       msg::Pose2D m;
+      int received = 0;
       while (!g_stop && monotonic_ns() < end) {
-        if (sub.wait(50'000'000)) sub.take_latest(m);
+        if (sub.wait(50'000'000))
+          while (sub.take(m)) ++received;
+      }
+      if (received < expect) {
+        std::fprintf(stderr, "topic_peer sub: %d samples on %s, expected at least %d\n", received, topic.c_str(), expect);
+        return 1;
       }
       return 0;
     }

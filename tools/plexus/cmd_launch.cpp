@@ -109,7 +109,7 @@ RealtimeResult run_realtime(scenario::Scenario& sc, rt::Participant& participant
   std::vector<rt::Subscriber<msg::Signal>> subs;
   for (const auto& spec : signals) subs.push_back(participant.subscriber<msg::Signal>(distributed::signal_topic(spec.name), any));
   std::vector<rt::Subscriber<msg::Heartbeat>> beats;
-  for (const auto& p : procs) beats.push_back(participant.subscriber<msg::Heartbeat>("health/" + p.service(), profiles.get("health")));
+  for (const auto& p : procs) beats.push_back(participant.subscriber<msg::Heartbeat>(distributed::health_topic(p.service()), profiles.get("health")));
   auto go = participant.publisher<msg::ClockStep>(distributed::kClockTopic, profiles.get("lockstep"));
 
   res.log.base_step = sc.step;
@@ -457,6 +457,12 @@ int run_launch(const LaunchOptions& o) {
       if (p.pid > 0) stop(p.pid), p.pid = 0;
     relay.drain();  // the children's last lines before the launcher's verdict
   };
+  // Whatever ends the run (an error from DDS included), the watcher is joined and no child
+  // outlives the launcher.
+  struct StopOnExit {
+    const decltype(stop_all)& stop;
+    ~StopOnExit() { stop(); }
+  } stop_on_exit{stop_all};
   auto failure = [&](const std::string& what) {
     stop_all();
     std::fprintf(stderr, "plexus launch: %s\n", died.empty() ? what.c_str() : died.c_str());

@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cstring>
 
 #include "plexus/base/clock.hpp"
@@ -33,6 +34,13 @@ void copy_name(std::array<char, 32>& dst, const std::string& src) {
 }
 
 }  // namespace
+
+std::string health_topic(const std::string& service) {
+  std::string name = service;
+  for (char& c : name)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '/') c = '_';
+  return "health/" + name;
+}
 
 const rt::QosProfile& signal_qos(const scenario::Scenario& sc, const std::string& producer,
                                  const rt::QosProfiles& profiles) {
@@ -76,7 +84,7 @@ struct RealtimeHost::Impl {
     for (std::size_t i : exec.local_outputs())
       out[i] = p.publisher<msg::Signal>(signal_topic(signals[i].name), signal_qos(sc, signals[i].producer, profiles));
     start = p.subscriber<msg::ClockStep>(kClockTopic, profiles.get("lockstep"));
-    heartbeat = p.publisher<msg::Heartbeat>("health/" + opt.service, profiles.get("health"));
+    heartbeat = p.publisher<msg::Heartbeat>(health_topic(opt.service), profiles.get("health"));
     copy_name(hb.service(), opt.service);
     hb.pid(static_cast<uint32_t>(getpid()));
   }

@@ -29,6 +29,11 @@
 
 namespace plexus::distributed {
 
+/// The heartbeat topic of a service: `health/<service>`, with every character a DDS topic
+/// name may not hold (Cyclone DDS accepts letters, digits, `_` and `/`) replaced by `_`, so
+/// "plant_simulator r1" publishes on `health/plant_simulator_r1`.
+std::string health_topic(const std::string& service);
+
 /// The QoS profile of a signal: its producer's `qos` key, else "state".
 const rt::QosProfile& signal_qos(const scenario::Scenario& sc, const std::string& producer, const rt::QosProfiles& profiles);
 
