@@ -3,7 +3,8 @@
 # exit with EXPECT_RC (default 0: every expectation of the scenario, i.e. the paper targets,
 # met in lockstep; a launch run whose expectations fail exits 1 and fails this test).
 # Arguments: PLEXUS, SCENARIO, OUT, DOMAIN, LAUNCH_ARGS (launch only), ARGS (both runs, e.g.
-# `--set|duration=1.2`), both "|"-separated; EXPECT_RC (optional).
+# `--set|duration=1.2`), both "|"-separated; EXPECT_RC (optional); PROCESS (optional): a
+# process launch.json must list, as "NAME=PROGRAM" (a `process` group, for one).
 if(NOT DEFINED EXPECT_RC)
   set(EXPECT_RC 0)
 endif()
@@ -44,3 +45,14 @@ if(NOT launch_rc EQUAL EXPECT_RC)
   message(FATAL_ERROR "plexus launch exited ${launch_rc}, expected ${EXPECT_RC} (1: an expectation failed): ${launch_err}")
 endif()
 message(STATUS "${n_members} results equal, exit code ${launch_rc} as expected")
+if(DEFINED PROCESS)
+  string(REPLACE "=" ";" expected_process "${PROCESS}")
+  list(GET expected_process 0 process_name)
+  list(GET expected_process 1 process_program)
+  file(READ ${OUT}/launch/launch.json launch_json)
+  string(JSON program ERROR_VARIABLE missing GET "${launch_json}" processes ${process_name} program)
+  if(missing OR NOT program STREQUAL process_program)
+    message(FATAL_ERROR "launch.json: process '${process_name}' should run ${process_program}, found '${program}'")
+  endif()
+  message(STATUS "process ${process_name} ran ${program}")
+endif()

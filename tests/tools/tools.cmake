@@ -134,3 +134,15 @@ set_tests_properties(tools.bad_topic_type tools.bad_vendor tools.missing_run_fil
 add_test(NAME cli.scenario_bad_dds_key COMMAND ${EXPECT} 2 "robots.r1.dds: expected fast or cyclone, got 'rti'"
          ${PLEXUS_CLI} sim ${CIRCLE} --set robots.r1.dds=rti)
 set_tests_properties(cli.scenario_bad_dds_key PROPERTIES LABELS "cli")
+
+# `process` groups (docs/scenarios.md): a valid name, and services of one process that agree.
+set(PATH_CIRCLE ${PROJECT_SOURCE_DIR}/deploy/scenarios/path_following_circle.yaml)
+add_test(NAME cli.scenario_bad_process_name COMMAND ${EXPECT} 2 "services.observer.process: letters, digits"
+         ${PLEXUS_CLI} sim ${PATH_CIRCLE} "--set" "services.observer.process=my control")
+add_test(NAME cli.launch_process_group_disagrees COMMAND ${EXPECT} 2 "services of process 'control' must agree on `dds`"
+         ${PLEXUS_CLI} launch ${PATH_CIRCLE} --domain 225 --set services.observer.process=control
+         --set services.controller.process=control --set services.controller.dds=cyclone)
+add_test(NAME cli.launch_process_name_taken COMMAND ${EXPECT} 2 "'path' is the name of service"
+         ${PLEXUS_CLI} launch ${PATH_CIRCLE} --domain 225 --set services.observer.process=path)
+set_tests_properties(cli.scenario_bad_process_name cli.launch_process_group_disagrees cli.launch_process_name_taken
+                     PROPERTIES LABELS "cli")

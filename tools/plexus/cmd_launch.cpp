@@ -137,9 +137,12 @@ RealtimeResult run_realtime(scenario::Scenario& sc, rt::Participant& participant
   }
   msg::ClockStep start;
   start.step_index(0);
-  start.sim_time_ns(wall_time_ns());  // realtime: the run's start, so a restarted host joins at the current tick
+  // The run's start on the wall clock, far enough ahead that every host has the start signal
+  // before tick 0; each host ticks on the grid it defines, a restarted one at the current tick.
+  constexpr int64_t kStartLeadNs = 200'000'000;
+  start.sim_time_ns(wall_time_ns() + kStartLeadNs);
   go.publish(start);
-  const int64_t t0 = monotonic_ns();
+  const int64_t t0 = monotonic_ns() + kStartLeadNs;
   fault.run_start_ns = t0;
   double safe_after_s = -1;  // first all-zero command after an injected kill
   const int64_t end = t0 + static_cast<int64_t>((sc.duration + 2.0) * 1e9);
@@ -203,7 +206,8 @@ RealtimeResult run_realtime(scenario::Scenario& sc, rt::Participant& participant
         sample.step = m.step_index();
         std::copy_n(m.field_values().begin(), m.count(), sample.values.begin());
         res.log.record(s, sample);
-        latency[s].push_back(now - m.header().origin_time_ns());
+        if (m.header().origin_time_ns() > distributed::kNoMeasurementOrigin)
+          latency[s].push_back(now - m.header().origin_time_ns());
         const int64_t killed = fault.killed_ns.load();
         if (killed && safe_after_s < 0 && std::find(commands.begin(), commands.end(), s) != commands.end() &&
             std::all_of(sample.values.begin(), sample.values.begin() + m.count(), [](double v) { return v == 0.0; }))
@@ -220,7 +224,7 @@ RealtimeResult run_realtime(scenario::Scenario& sc, rt::Participant& participant
   for (std::size_t i = 0; i < procs.size(); ++i) {
     const auto& hb = last[i];
     res.services[procs[i].service()] = {{"loop_count", hb.loop_count()},         {"overruns", hb.overruns()},
-                                        {"stale_input_reads", hb.stale_inputs()},  {"rejected_inputs", hb.rejected_inputs()},
+                                        {"stale_input_reads", hb.stale_inputs()}, {"late_input_reads", hb.late_inputs()},  {"rejected_inputs", hb.rejected_inputs()},
                                         {"jitter_p50_us", hb.jitter_p50_us()},
                                         {"jitter_p99_us", hb.jitter_p99_us()},     {"jitter_max_us", hb.jitter_max_us()},
                                         {"compute_p50_us", hb.compute_p50_us()},   {"compute_p99_us", hb.compute_p99_us()}};
@@ -237,10 +241,40 @@ RealtimeResult run_realtime(scenario::Scenario& sc, rt::Participant& participant
   return res;
 }
 
+/// Services that share a `process` key must agree on where and how that process runs, and
+/// the process name must not be taken by another service or the plant simulator.
+void check_process_groups(const scenario::Scenario& sc) {
+  std::map<std::string, const scenario::ScenarioComponent*> first_of;
+  for (const auto& c : sc.components) {
+    if (c.process.empty()) continue;
+    const std::string key = c.where + ".process";
+    if (c.process.rfind("plant_simulator", 0) == 0)
+      throw InputError(key + ": '" + c.process + "' is the plant simulator's process name");
+    for (const auto& other : sc.components)
+      if (other.component->name() == c.process && other.process != c.process && other.kind != scenario::ComponentKind::plant &&
+          other.kind != scenario::ComponentKind::sensor)
+        throw InputError(key + ": '" + c.process + "' is the name of service " + other.where +
+                         ", which runs in a process of its own");
+    auto [it, first] = first_of.emplace(c.process, &c);
+    if (first) continue;
+    const auto& f = *it->second;
+    auto clash = [&](const char* what, const std::string& mine, const std::string& theirs) {
+      if (mine != theirs)
+        throw InputError(key + ": services of process '" + c.process + "' must agree on `" + what + "` ('" + mine +
+                         "' here, '" + theirs + "' at " + f.where + ")");
+    };
+    clash("host", c.host, f.host);
+    clash("dds", c.dds, f.dds);
+    clash("restart", c.restart, f.restart);
+  }
+}
+
 /// The processes of a scenario: one plant_simulator per host for the robots on that host,
-/// one process per service, in the executable of its type. With `host` set, only those assigned to it (components
-/// without a host run on the first host).
+/// one process per service in the executable of its type, or one per `process` group (in the
+/// executable of its services' type if they share one, else component_host). With `host`
+/// set, only those assigned to it (components without a host run on the first host).
 std::vector<Process> plan(const scenario::Scenario& sc, const std::string& host) {
+  check_process_groups(sc);
   const std::string first = sc.hosts.empty() ? "" : sc.hosts.front();
   auto here = [&](const std::string& h) { return host.empty() || (h.empty() ? first : h) == host; };
   std::vector<Process> procs;
@@ -258,9 +292,17 @@ std::vector<Process> plan(const scenario::Scenario& sc, const std::string& host)
                          "must agree ('" + c.dds + "' for " + robot + ", '" + it->second + "' for " +
                          list.substr(0, list.rfind(',')) + ")");
     } else if (c.kind != scenario::ComponentKind::sensor) {
+      const std::string name = c.process.empty() ? c.component->name() : c.process;
+      const std::string program = distributed::executable_for(c.type);
+      auto group = std::find_if(procs.begin(), procs.end(), [&](const Process& p) { return p.name == name; });
+      if (group != procs.end()) {  // another service of the same `process`
+        group->select.back() += "," + c.component->name();
+        if (group->program != program) group->program = "component_host";
+        continue;
+      }
       Process p;
-      p.name = c.component->name();
-      p.program = distributed::executable_for(c.type);
+      p.name = name;
+      p.program = program;
       p.select = {"--components", c.component->name()};
       p.restart = c.restart;
       p.vendor = c.dds;

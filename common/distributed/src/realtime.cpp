@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstring>
 
 #include "plexus/base/clock.hpp"
@@ -18,6 +19,10 @@ namespace plexus::distributed {
 namespace {
 
 using scenario::SignalSample;
+
+/// Most steps a host runs back to back after an overrun (more are skipped: a host that far
+/// behind would only fall further behind by catching up).
+constexpr int64_t kMaxCatchUpSteps = 10;
 
 /// Latest sample of a signal produced in another process.
 struct RemoteLatest {
@@ -42,6 +47,21 @@ std::string health_topic(const std::string& service) {
   return "health/" + name;
 }
 
+double stage_phase(const scenario::Scenario& sc, const std::vector<bool>& hosted) {
+  double phase = 0.0;
+  for (std::size_t i = 0; i < sc.components.size() && i < hosted.size(); ++i) {
+    if (!hosted[i]) continue;
+    switch (sc.components[i].kind) {
+      case scenario::ComponentKind::plant:
+      case scenario::ComponentKind::sensor: return 0.0;  // the plants define the grid
+      case scenario::ComponentKind::reference:
+      case scenario::ComponentKind::estimator: phase = std::max(phase, 0.25); break;
+      case scenario::ComponentKind::controller: phase = 0.5; break;
+    }
+  }
+  return phase;
+}
+
 const rt::QosProfile& signal_qos(const scenario::Scenario& sc, const std::string& producer,
                                  const rt::QosProfiles& profiles) {
   for (const auto& c : sc.components)
@@ -51,12 +71,14 @@ const rt::QosProfile& signal_qos(const scenario::Scenario& sc, const std::string
 
 struct RealtimeHost::Impl {
   scenario::Scenario& sc;
+  double phase;  // of the base period, on the run's grid (stage_phase)
   scenario::StepExecutor exec;
   RealtimeOptions opt;
   detail::InputGuard guard{opt.service};
   std::vector<std::unique_ptr<RemoteLatest>> remote;  // by signal
   std::vector<rt::Publisher<msg::Signal>> out;        // by signal
   std::vector<int64_t> local_origin;                  // by signal: origin of the latest local sample
+  std::vector<std::vector<std::size_t>> local_inputs;  // by component: the signals it reads from this process
   rt::Subscriber<msg::ClockStep> start;
   rt::Publisher<msg::Heartbeat> heartbeat;
   msg::Signal in_msg, out_msg;
@@ -69,11 +91,17 @@ struct RealtimeHost::Impl {
 
   Impl(scenario::Scenario& s, std::vector<bool> hosted, rt::Participant& p, const rt::QosProfiles& profiles,
        RealtimeOptions o)
-      : sc(s), exec(s, std::move(hosted)), opt(std::move(o)) {
+      : sc(s), phase(stage_phase(s, hosted)), exec(s, std::move(hosted)), opt(std::move(o)) {
     const auto& signals = exec.signals();
     remote.resize(signals.size());
     out.resize(signals.size());
     local_origin.assign(signals.size(), 0);
+    const auto produced = exec.local_outputs();
+    local_inputs.resize(sc.components.size());
+    for (std::size_t c = 0; c < sc.components.size(); ++c)
+      if (exec.hosted(c))
+        for (std::size_t in : exec.inputs_of(c))
+          if (std::find(produced.begin(), produced.end(), in) != produced.end()) local_inputs[c].push_back(in);
     for (std::size_t i : exec.remote_inputs()) {
       auto r = std::make_unique<RemoteLatest>();
       r->sub = p.subscriber<msg::Signal>(signal_topic(signals[i].name), signal_qos(sc, signals[i].producer, profiles));
@@ -107,6 +135,7 @@ struct RealtimeHost::Impl {
     hb.overruns(ls.overruns);
     hb.rejected_inputs(guard.rejected());
     hb.stale_inputs(report.stale_inputs);
+    hb.late_inputs(report.late_inputs);
     hb.jitter_p50_us(ls.jitter_p50_us);
     hb.jitter_p99_us(ls.jitter_p99_us);
     hb.jitter_max_us(ls.jitter_max_us);
@@ -142,17 +171,24 @@ RealtimeReport RealtimeHost::run(const std::atomic<bool>& stop) {
     m.start.wait(50'000'000);
   }
 
-  // The start signal carries the run's start (wall clock): a host restarted mid-run joins
-  // at the current tick instead of replaying the run from 0.
-  const int64_t step_ns_start = static_cast<int64_t>(m.sc.step * 1e9);
-  const int64_t k0 = go.sim_time_ns() > 0 ? std::max<int64_t>(0, (wall_time_ns() - go.sim_time_ns()) / step_ns_start) : 0;
+  // The start signal carries the run's start T0 (wall clock). Tick k is due at
+  // T0 + (k + phase) periods: the first one still ahead is this host's first, so a host
+  // restarted mid-run joins at the current tick instead of replaying the run from 0.
+  const int64_t step_ns = std::llround(m.sc.step * 1e9);  // the loop period, as PeriodicLoop rounds it
+  const auto offset_ns = static_cast<int64_t>(m.phase * static_cast<double>(step_ns));
+  const int64_t wall_now = wall_time_ns(), mono_now = monotonic_ns();
+  const int64_t t0 = go.sim_time_ns() > 0 ? go.sim_time_ns() : wall_now;
+  const int64_t late_ns = wall_now - t0 - offset_ns;  // past this host's tick 0 by
+  const int64_t k0 = late_ns < 0 ? 0 : late_ns / step_ns + 1;
+  const int64_t first_deadline = mono_now + (t0 + k0 * step_ns + offset_ns - wall_now);
   rt::LoopOptions lo = m.opt.loop;
   lo.rate_hz = 1.0 / m.sc.step;
   rt::PeriodicLoop loop(lo);
   const auto& signals = m.exec.signals();
-  const scenario::StepExecutor::RemoteInput read = [&m](std::size_t signal, int64_t, SignalSample& s) {
+  const scenario::StepExecutor::RemoteInput read = [&m](std::size_t signal, int64_t due, SignalSample& s) {
     m.drain(signal);
     const RemoteLatest& r = *m.remote[signal];
+    if (r.sample.step < due) ++m.report.late_inputs;  // the sample of this step has not arrived
     s = r.sample;
     if (r.sample.step < 0 || monotonic_ns() - r.received_ns > r.deadline_ns) {
       m.stale = true;
@@ -161,29 +197,51 @@ RealtimeReport RealtimeHost::run(const std::atomic<bool>& stop) {
     m.origin = std::max(m.origin, r.origin_ns);
   };
   const scenario::StepExecutor::Gate gate = [&m](std::size_t component) {
-    const bool hold = m.stale && m.sc.components[component].kind == scenario::ComponentKind::controller;
+    const auto kind = m.sc.components[component].kind;
+    const bool hold = m.stale && kind == scenario::ComponentKind::controller;
     m.stale = false;
-    m.component_origin = m.origin;  // its inputs are read: the next component starts afresh
-    m.origin = 0;
+    // Its inputs are read: its outputs carry the newest origin among them, local or remote.
+    // A measurement starts a chain (origin 0: set when published); a component that read no
+    // measurement (a reference) marks its outputs as such.
+    int64_t origin = m.origin;
+    for (std::size_t s : m.local_inputs[component]) origin = std::max(origin, m.local_origin[s]);
+    if (kind == scenario::ComponentKind::plant || kind == scenario::ComponentKind::sensor)
+      origin = 0;
+    else if (origin == 0)
+      origin = kNoMeasurementOrigin;
+    m.component_origin = origin;
+    m.origin = 0;  // the next component starts afresh
     if (hold) ++m.report.holds;
     return !hold;
   };
-  const int64_t step_ns = static_cast<int64_t>(m.sc.step * 1e9);
   const scenario::StepExecutor::OutputSink publish = [&](std::size_t signal, const SignalSample& s) {
     detail::to_message(s, signals[signal].fields.size(), step_ns, m.out_msg);
     m.out_msg.header().origin_time_ns(m.component_origin);  // 0: this sample starts a chain (publish sets it)
     m.out[signal].publish(m.out_msg);
+    m.local_origin[signal] = m.out_msg.header().origin_time_ns();  // for readers in this process
   };
   const int64_t ticks = m.sc.steps + 1;
   if (k0 >= ticks) return m.report;  // joined after the end of the run
   const int64_t hb_every = std::max<int64_t>(1, static_cast<int64_t>(1.0 / m.sc.step));
+  int64_t next_beat = k0;
+  int64_t last_k = k0 - 1;
   loop.run([&](const rt::PeriodicLoop::Tick& t) {
-    const auto k = static_cast<int64_t>(t.index) + k0;
+    // The step is the grid's, from the deadline: after an overrun the loop skips the periods
+    // it missed, and so does the step, so every host keeps the same step at the same time.
+    // The steps skipped (up to kMaxCatchUpSteps) still run first, back to back: a plant
+    // integrates them with the command it holds and an estimator predicts over them, so
+    // neither falls behind the grid's time by the periods it lost.
+    const int64_t k = k0 + (t.deadline_ns - first_deadline) / loop.period_ns();
+    for (int64_t j = std::max(last_k + 1, k - kMaxCatchUpSteps); j < k; ++j) m.exec.step(j, read, publish, gate);
+    last_k = k;
     m.exec.step(k, read, publish, gate);
-    if (k % hb_every == 0) m.publish_heartbeat(m.report.holds ? msg::SERVICE_DEGRADED : msg::SERVICE_RUNNING, loop.stats());
+    if (k >= next_beat) {
+      m.publish_heartbeat(m.report.holds ? msg::SERVICE_DEGRADED : msg::SERVICE_RUNNING, loop.stats());
+      next_beat = k + hb_every;
+    }
     m.report.ticks = k + 1;
     return k + 1 < ticks && !stop.load(std::memory_order_relaxed);
-  });
+  }, first_deadline);
   m.report.loop = loop.stats();
   m.report.rejected_inputs = m.guard.rejected();
   m.publish_heartbeat(msg::SERVICE_DRAINING, m.report.loop);

@@ -62,8 +62,8 @@ PeriodicLoop::PeriodicLoop(const LoopOptions& o) {
   }
 }
 
-void PeriodicLoop::start() {
-  next_deadline_ns_ = monotonic_ns() + period_ns_;
+void PeriodicLoop::start(int64_t first_deadline_ns) {
+  next_deadline_ns_ = first_deadline_ns > 0 ? first_deadline_ns : monotonic_ns() + period_ns_;
   index_ = 0;
 }
 

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <vector>
+
 #include "plexus/base/clock.hpp"
 #include "plexus/base/input_error.hpp"
 
@@ -22,6 +24,23 @@ TEST(PeriodicLoop, RunsUntilTheBodySaysStopAndCountsIterations) {
   EXPECT_EQ(s.iterations, 20u);
   EXPECT_LE(s.jitter_p50_us, s.jitter_p99_us);
   EXPECT_LE(s.jitter_p99_us, s.jitter_max_us);
+}
+
+// Realtime hosts tick on a shared grid: the first deadline is given, the next ones follow
+// at whole periods from it (not from when the thread woke).
+TEST(PeriodicLoop, StartsAtAGivenDeadlineAndKeepsItsPhase) {
+  PeriodicLoop loop({.rate_hz = 1000});
+  const int64_t first = monotonic_ns() + 20'000'000 + 123'457;
+  std::vector<int64_t> deadlines;
+  loop.run([&](const PeriodicLoop::Tick& t) {
+    EXPECT_GE(t.wake_ns, t.deadline_ns);
+    deadlines.push_back(t.deadline_ns);
+    return t.index < 4;
+  }, first);
+  ASSERT_EQ(deadlines.size(), 5u);
+  EXPECT_EQ(deadlines[0], first);
+  for (std::size_t i = 1; i < deadlines.size(); ++i)
+    EXPECT_EQ((deadlines[i] - first) % 1'000'000, 0) << "tick " << i << " left the grid";
 }
 
 TEST(PeriodicLoop, OverrunsAreCounted) {

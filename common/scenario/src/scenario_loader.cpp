@@ -107,6 +107,9 @@ struct Loader {
       out.qos = section.optional<std::string>("qos", "");
       if (section.has("qos") && out.qos.empty()) section.fail("qos", "must name a QoS profile");
       out.dds = dds_key(section);
+      out.process = section.optional<std::string>("process", "");
+      if (section.has("process") && !valid_name(out.process))
+        section.fail("process", "letters, digits, '_' and '-' only, at most 64 characters");
       out.restart = section.optional<std::string>("restart", out.restart);
       if (out.restart != "never" && out.restart != "on_failure" && out.restart != "always")
         section.fail("restart", "expected never, on_failure or always, got '" + out.restart + "'");

@@ -1,5 +1,7 @@
 #include "plexus/scenario/step_executor.hpp"
 
+#include <algorithm>
+
 #include "wiring.hpp"
 
 namespace plexus::scenario {
@@ -60,6 +62,13 @@ int64_t StepExecutor::due_step(int64_t k, int64_t producer_period, bool delayed)
   const int64_t target = delayed ? k - 1 : k;
   if (target < 0) return -1;
   return target - target % producer_period;
+}
+
+std::vector<std::size_t> StepExecutor::inputs_of(std::size_t component) const {
+  std::vector<std::size_t> out;
+  for (const auto& in : impl_->wiring.inputs.at(component))
+    if (std::find(out.begin(), out.end(), in.signal) == out.end()) out.push_back(in.signal);
+  return out;
 }
 
 void StepExecutor::step(int64_t k, const RemoteInput& remote, const OutputSink& sink, const Gate& gate) {

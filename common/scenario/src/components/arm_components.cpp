@@ -129,8 +129,11 @@ class FlexibleJointArmComponent final : public Component {
   }
 
   void step(int64_t k, double /*t*/) override {
-    if (k > 0 && cmd_.valid()) {
-      for (int i = 0; i < n_; ++i) u_(i) = cmd_[static_cast<std::size_t>(i)];
+    if (k > 0) {
+      // The arm moves whether or not a command arrived: without one (realtime, before the
+      // first command) its drives hold the last torque (zero at first).
+      if (cmd_.valid())
+        for (int i = 0; i < n_; ++i) u_(i) = cmd_[static_cast<std::size_t>(i)];
       plant_.step(u_, h_);
     }
     const alg::FlexibleJointArmState& s = plant_.state();

@@ -2,15 +2,25 @@
 //
 //  - Each host runs its components in one absolute-deadline loop at the base rate
 //    (PeriodicLoop); a component runs at the ticks its period divides.
-//  - An input from another process is the latest sample received on `sig/<signal>`. It is
+//  - An input from another process is the latest sample received on `sig/<signal>`; a read
+//    that finds an older sample than the step the sim would read is counted as late. It is
 //    stale when it is older than `input_deadline_periods` periods of its producer (scenario
 //    `clock.input_deadline_periods`, default 3), or has never arrived.
 //  - A controller with a stale input runs hold() instead of step(): its documented safe
 //    output (by default all zero: zero velocity, zero torque). It recovers by itself at the
 //    first tick where its inputs are fresh again. Other components run on the last sample.
-//  - Every output carries in its header the origin time of the newest remote input it was
-//    computed from (a sensor, which has none, starts a chain), so the latency from a sensor
-//    sample to the command at the plant can be measured from the data.
+//  - Every output carries in its header the origin time of the newest input it was
+//    computed from, in this process or another (a sensor starts a chain; an output computed
+//    from no measurement, a reference's, carries kNoMeasurementOrigin), so the latency from
+//    a sensor sample to the command at the plant can be measured from the data.
+//  - All loops tick on one wall-clock grid, the run's start (carried by the start signal)
+//    plus whole base periods, each host at the phase of its stage (stage_phase): plants and
+//    sensors at 0, references and estimators a quarter period later, controllers (and hosts
+//    that also run a controller) at half a period. A sensor sample then reaches the
+//    estimator, the estimate the controller and the command the plant within one base
+//    period, as in `plexus sim`, when each hop takes less than a quarter period; a later hop
+//    costs that input one period. Hosts on different machines share the grid as well as
+//    their clocks agree.
 //  - Every host publishes a Heartbeat with its loop statistics on `health/<service>` once a
 //    second, and starts only when the launcher's start signal (ClockStep 0 on
 //    `lockstep/clock`) arrives, so all processes begin together.
@@ -29,10 +39,22 @@
 
 namespace plexus::distributed {
 
+/// Header origin of a sample computed from no measurement (a reference, an open-loop
+/// command): older than any real origin, so a measured input wins the newest-origin rule,
+/// and skipped by the launcher's sensor-to-command statistics.
+inline constexpr int64_t kNoMeasurementOrigin = 1;
+
 /// The heartbeat topic of a service: `health/<service>`, with every character a DDS topic
 /// name may not hold (Cyclone DDS accepts letters, digits, `_` and `/`) replaced by `_`, so
 /// "plant_simulator r1" publishes on `health/plant_simulator_r1`.
 std::string health_topic(const std::string& service);
+
+/// The phase, as a fraction of the base period, at which a host of these components ticks:
+/// 0 if it hosts a plant or a sensor, else 0.5 if it hosts a controller, else 0.25 (references
+/// and estimators). Components of one host run in the scenario's order within a tick, so a
+/// host of an estimator and its controller (a `process` group) reads the sensors half a
+/// period after they were taken and leaves the command half a period to reach the plant.
+double stage_phase(const scenario::Scenario& sc, const std::vector<bool>& hosted);
 
 /// The QoS profile of a signal: its producer's `qos` key, else "state".
 const rt::QosProfile& signal_qos(const scenario::Scenario& sc, const std::string& producer, const rt::QosProfiles& profiles);
@@ -48,6 +70,7 @@ struct RealtimeReport {
   int64_t ticks = 0;
   uint64_t holds = 0;            ///< controller steps replaced by the safe output
   uint64_t stale_inputs = 0;     ///< input reads that found a stale sample
+  uint64_t late_inputs = 0;      ///< input reads that found an older sample than the sim would read
   uint64_t rejected_inputs = 0;  ///< received samples refused at the edge (non-finite, malformed)
   rt::LoopStats loop;
 };

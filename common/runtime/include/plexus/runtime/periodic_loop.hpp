@@ -44,10 +44,12 @@ class PeriodicLoop {
   /// settings to the calling thread, warning for each one the system refuses.
   explicit PeriodicLoop(const LoopOptions& options);
 
-  /// Calls body(tick) once per period until it returns false or stop() is called.
+  /// Calls body(tick) once per period until it returns false or stop() is called. The first
+  /// deadline is `first_deadline_ns` (CLOCK_MONOTONIC) if given, else one period from now;
+  /// the next ones follow at whole periods from it.
   template <class Body>
-  void run(Body&& body) {
-    start();
+  void run(Body&& body, int64_t first_deadline_ns = 0) {
+    start(first_deadline_ns);
     while (!stop_.load(std::memory_order_relaxed)) {
       const Tick t = wait_next();
       const bool go = body(t);
@@ -57,7 +59,7 @@ class PeriodicLoop {
   }
 
   /// Lower-level use: start(), then for each iteration wait_next() ... end_compute().
-  void start();
+  void start(int64_t first_deadline_ns = 0);
   Tick wait_next();
   void end_compute();
 

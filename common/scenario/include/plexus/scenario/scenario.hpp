@@ -32,6 +32,9 @@ struct ScenarioComponent {
   std::string host;   ///< host it runs on under `plexus launch` (empty: any)
   std::string qos;    ///< QoS profile name for its outputs (empty: the default)
   std::string dds;    ///< DDS vendor of its process under `plexus launch` (empty: the run's)
+  /// `plexus launch`: services with the same `process` run in one process of that name
+  /// (empty: a process of their own, named after the service).
+  std::string process;
   /// `plexus launch`, realtime mode: restart the service's process when it dies
   /// ("on_failure", the default), whenever it exits ("always"), or not ("never").
   std::string restart = "on_failure";

@@ -38,6 +38,8 @@ class StepExecutor {
   std::vector<std::size_t> remote_inputs() const;
   /// Signals produced by hosted components.
   std::vector<std::size_t> local_outputs() const;
+  /// The signals component i reads, each once.
+  std::vector<std::size_t> inputs_of(std::size_t component) const;
   /// Whether component i runs here.
   bool hosted(std::size_t component) const { return hosted_[component]; }
 
