@@ -231,7 +231,7 @@ RealtimeReport RealtimeHost::run(const std::atomic<bool>& stop) {
     // The steps skipped (up to kMaxCatchUpSteps) still run first, back to back: a plant
     // integrates them with the command it holds and an estimator predicts over them, so
     // neither falls behind the grid's time by the periods it lost.
-    const int64_t k = k0 + (t.deadline_ns - first_deadline) / loop.period_ns();
+    const int64_t k = std::min(ticks - 1, k0 + (t.deadline_ns - first_deadline) / loop.period_ns());
     for (int64_t j = std::max(last_k + 1, k - kMaxCatchUpSteps); j < k; ++j) m.exec.step(j, read, publish, gate);
     last_k = k;
     m.exec.step(k, read, publish, gate);

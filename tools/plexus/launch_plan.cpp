@@ -1,0 +1,102 @@
+#include "launch_plan.hpp"
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+#include "plexus/base/input_error.hpp"
+#include "plexus/distributed/service_catalog.hpp"
+
+namespace plexus::cli {
+namespace {
+
+/// Services that share a `process` key must agree on where and how that process runs, and
+/// the process name must not be taken by another service or the plant simulator.
+void check_process_groups(const scenario::Scenario& sc) {
+  std::map<std::string, const scenario::ScenarioComponent*> first_of;
+  for (const auto& c : sc.components) {
+    if (c.process.empty()) continue;
+    const std::string key = c.where + ".process";
+    if (c.process.rfind("plant_simulator", 0) == 0)
+      throw InputError(key + ": '" + c.process + "' is the plant simulator's process name");
+    for (const auto& other : sc.components)
+      if (other.component->name() == c.process && other.process != c.process && other.kind != scenario::ComponentKind::plant &&
+          other.kind != scenario::ComponentKind::sensor)
+        throw InputError(key + ": '" + c.process + "' is the name of service " + other.where +
+                         ", which runs in a process of its own");
+    auto [it, first] = first_of.emplace(c.process, &c);
+    if (first) continue;
+    const auto& f = *it->second;
+    auto clash = [&](const char* what, const std::string& mine, const std::string& theirs) {
+      if (mine != theirs)
+        throw InputError(key + ": services of process '" + c.process + "' must agree on `" + what + "` ('" + mine +
+                         "' here, '" + theirs + "' at " + f.where + ")");
+    };
+    clash("host", c.host, f.host);
+    clash("dds", c.dds, f.dds);
+    clash("restart", c.restart, f.restart);
+  }
+}
+
+}  // namespace
+
+std::vector<Process> plan(const scenario::Scenario& sc, const std::string& host) {
+  check_process_groups(sc);
+  const std::string first = sc.hosts.empty() ? "" : sc.hosts.front();
+  auto here = [&](const std::string& h) { return host.empty() || (h.empty() ? first : h) == host; };
+  std::vector<Process> procs;
+  std::map<std::string, std::string> robots_by_host;  // host -> "r1,r2"
+  std::map<std::string, std::string> dds_by_host;     // host -> the robots' `dds` key
+  for (const auto& c : sc.components) {
+    if (!here(c.host)) continue;
+    if (c.kind == scenario::ComponentKind::plant) {
+      const std::string robot = c.component->name().substr(0, c.component->name().find('/'));
+      auto& list = robots_by_host[c.host];
+      list += (list.empty() ? "" : ",") + robot;
+      auto [it, first_robot] = dds_by_host.emplace(c.host, c.dds);
+      if (!first_robot && it->second != c.dds)
+        throw InputError(c.where + ": the robots on one host share one plant_simulator process, so their `dds` keys "
+                         "must agree ('" + c.dds + "' for " + robot + ", '" + it->second + "' for " +
+                         list.substr(0, list.rfind(',')) + ")");
+    } else if (c.kind != scenario::ComponentKind::sensor) {
+      const std::string name = c.process.empty() ? c.component->name() : c.process;
+      const std::string program = distributed::executable_for(c.type);
+      auto group = std::find_if(procs.begin(), procs.end(), [&](const Process& p) { return p.name == name; });
+      if (group != procs.end()) {  // another service of the same `process`
+        group->select.back() += "," + c.component->name();
+        if (group->program != program) group->program = "component_host";
+        continue;
+      }
+      Process p;
+      p.name = name;
+      p.program = program;
+      p.select = {"--components", c.component->name()};
+      p.restart = c.restart;
+      p.vendor = c.dds;
+      procs.push_back(p);
+    }
+  }
+  std::set<std::string> robot_hosts;  // over the whole scenario, so names agree on every host
+  for (const auto& c : sc.components)
+    if (c.kind == scenario::ComponentKind::plant) robot_hosts.insert(c.host);
+  std::vector<Process> sims;
+  for (const auto& [h, robots] : robots_by_host) {
+    const std::string name = robot_hosts.size() == 1 ? "plant_simulator" : "plant_simulator " + robots;
+    Process p;  // plants hold the physical state: never restarted
+    p.name = name;
+    p.program = "plant_simulator";
+    p.select = {"--robots", robots};
+    p.vendor = dds_by_host[h];
+    sims.push_back(p);
+  }
+  procs.insert(procs.begin(), sims.begin(), sims.end());
+  return procs;
+}
+
+nlohmann::ordered_json process_table(const std::vector<Process>& procs) {
+  nlohmann::ordered_json t = nlohmann::ordered_json::object();
+  for (const auto& p : procs) t[p.name] = {{"program", p.program}, {"vendor", p.vendor}};
+  return t;
+}
+
+}  // namespace plexus::cli

@@ -1,0 +1,41 @@
+// The processes `plexus launch` starts for a scenario: which executable, which components,
+// which vendor, and the `process` groups (docs/scenarios.md).
+#pragma once
+
+#include <sys/types.h>
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "plexus/scenario/scenario.hpp"
+
+namespace plexus::cli {
+
+/// One child process: a name, the executable and its selection argument.
+struct Process {
+  std::string name;
+  std::string program;
+  std::vector<std::string> select;
+  std::string vendor;
+  pid_t pid = 0;
+  std::string restart = "never";  ///< realtime: never | on_failure | always (scenario `restart`)
+  std::vector<std::string> args;  ///< as started, to restart it the same way
+  int restarts = 0;
+
+  /// The service name the process reports in its heartbeats and DDS participant.
+  std::string service() const { return select.empty() ? program : program + " " + select.back(); }
+};
+
+/// The processes of a scenario: one plant_simulator per host for the robots on that host,
+/// one process per service in the executable of its type, or one per `process` group (in the
+/// executable of its services' type if they share one, else component_host). With `host`
+/// set, only those assigned to it (components without a host run on the first host).
+/// Throws InputError when the services of a group disagree on host, vendor or restart policy,
+/// or a group takes another service's name.
+std::vector<Process> plan(const scenario::Scenario& sc, const std::string& host);
+
+/// launch.json's record of what this launcher started: process -> executable and vendor.
+nlohmann::ordered_json process_table(const std::vector<Process>& procs);
+
+}  // namespace plexus::cli

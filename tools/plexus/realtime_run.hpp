@@ -1,0 +1,42 @@
+// `plexus launch` in realtime mode, on the clock's host: start every process together,
+// record every signal with its latency from the sensor sample that started its chain,
+// collect heartbeats and the live status line, stop after the scenario's duration.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <nlohmann/json.hpp>
+#include <vector>
+
+#include "launch_plan.hpp"
+#include "status_console.hpp"
+#include "plexus/runtime/participant.hpp"
+#include "plexus/runtime/qos.hpp"
+#include "plexus/scenario/signal_log.hpp"
+#include "plexus/scenario/scenario.hpp"
+
+namespace plexus::cli {
+
+/// What a realtime run measured, for launch.json and the summary.
+struct RealtimeResult {
+  scenario::RunLog log;
+  nlohmann::ordered_json services = nlohmann::ordered_json::object();
+  nlohmann::ordered_json latency = nlohmann::ordered_json::object();
+  nlohmann::ordered_json fault = nlohmann::ordered_json::object();
+  double wall = 0;
+};
+
+/// Fault injection state shared with the launcher's watcher thread.
+struct FaultClock {
+  std::atomic<int64_t> run_start_ns{0};  ///< monotonic time of the start signal (0: not started)
+  std::atomic<int64_t> killed_ns{0};     ///< monotonic time of the injected kill (0: none yet)
+};
+
+/// Waits (up to start_timeout_s) for a heartbeat from every process in `procs`, publishes the
+/// start signal, then records until the duration has passed, every host is draining, or
+/// `stop`. Throws distributed::LockstepError when a process never reports.
+RealtimeResult run_realtime(scenario::Scenario& sc, rt::Participant& participant, const rt::QosProfiles& profiles,
+                            const std::vector<Process>& procs, double start_timeout_s, FaultClock& fault,
+                            StatusConsole& console, const std::atomic<bool>& stop);
+
+}  // namespace plexus::cli
