@@ -4,7 +4,7 @@
 # at 1 kHz: 1.72 mrad). With observer and controller in separate processes this loop diverged
 # on this 2-core machine (non-finite torques). Table 4's settling times (<= 0.36 / 0.37 s)
 # are met by the runs in which every hop keeps its deadline (such a run equals `plexus sim`:
-# 7 of 12 runs here); a pause at start-up or a few late samples push the error past the
+# 7 of 14 runs here); a pause at start-up or a few late samples push the error past the
 # 1.15 mrad band for a while (rms 1.8-45 mrad), so the settling times and the rms are printed
 # and reported in docs/distributed.md, not asserted (timing goals live in measured reports,
 # not in tests on a shared machine). The input deadline is 20 periods: a hold (zero torque)
