@@ -29,9 +29,9 @@ add_test(NAME cli.arm_bad_jacobian
          COMMAND ${EXPECT} 2 "services.observer.jacobian: must be full or paper"
                  $<TARGET_FILE:plexus> sim ${ARM_SCENARIO} --quiet --set services.observer.jacobian=exact)
 add_test(NAME cli.arm_too_many_joints
-         COMMAND ${EXPECT} 2 "robots.arm.plant.dof: must be in 1..4"
+         COMMAND ${EXPECT} 2 "robots.arm.plant.dof: must be in 1..16"
                  $<TARGET_FILE:plexus> sim ${PROJECT_SOURCE_DIR}/deploy/scenarios/arm_vdc_ekf_3dof.yaml --quiet
-                 --set robots.arm.plant.dof=6)
+                 --set robots.arm.plant.dof=17)
 add_test(NAME cli.arm_initial_velocity_list_size
          COMMAND ${EXPECT} 2 "robots.arm.plant.dq0: needs 2 numbers \\(one per joint\\)"
                  $<TARGET_FILE:plexus> sim ${ARM_SCENARIO} --quiet --set robots.arm.plant.dq0=[1,1,1])

@@ -13,7 +13,7 @@ set -- --set duration=101 --domain "$domain" --dds "$vendor" --quiet --json
 "$plexus" launch "$scenario" "$@" --record "$work/rec.sqlite" --out "$work/recorded" > "$work/recorded.json" || {
   echo "the recording launch failed"; exit 1; }
 "$plexus" replay --lockstep --dds "$replay_vendor" --domain "$domain" --wait 30 \
-  --topics sig/r1/state,sig/r1/position "$work/rec.sqlite" > "$work/replay.log" 2>&1 &
+  --topics r1/truth/state,r1/position "$work/rec.sqlite" > "$work/replay.log" 2>&1 &
 replay=$!
 "$plexus" launch "$scenario" "$@" --external plant_simulator --out "$work/replayed" > "$work/replayed.json"
 rc=$?
@@ -23,7 +23,7 @@ cat "$work/replay.log"
 echo "launch with replay: rc $rc, replay rc $replay_rc"
 [ $rc -eq 0 ] && [ $replay_rc -eq 0 ] || exit 1
 status=0
-for s in r1.estimate r1.cmd r1.reference; do
+for s in r1.heading r1.cmd r1.reference; do
   if cmp -s "$work/recorded/signals/$s.csv" "$work/replayed/signals/$s.csv"; then
     echo "$s: identical ($(wc -l < "$work/replayed/signals/$s.csv") lines)"
   else

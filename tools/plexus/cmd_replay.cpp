@@ -2,7 +2,8 @@
 // (--rate-scale), at a fixed rate, as fast as possible, or one step per clock tick
 // (--lockstep). Replayed data stands in for the simulator: same topics, same types
 // (`plexus launch SCENARIO --record FILE`, then `plexus launch SCENARIO --external
-// plant_simulator` with `plexus replay --lockstep FILE --topics <the plant's sig/ topics>`).
+// plant_simulator` with `plexus replay --lockstep FILE --topics <the plant's topics>`, e.g.
+// r1/truth/state,r1/position).
 //
 // Header times: by default seq_num and data_time_ns are kept and origin/publish times are
 // shifted by (replay start - recording start), so hop latencies downstream stay

@@ -37,8 +37,13 @@ RealtimeResult run_realtime(scenario::Scenario& sc, rt::Participant& participant
 
   rt::QosProfile any = profiles.get("sensor");  // best effort, volatile: matches every producer
   any.depth = 256;
-  std::vector<rt::Subscriber<msg::Signal>> subs;
-  for (const auto& spec : signals) subs.push_back(participant.subscriber<msg::Signal>(distributed::signal_topic(spec.name), any));
+  std::vector<std::unique_ptr<distributed::WireSignal>> wires;
+  std::vector<std::unique_ptr<distributed::WireSubscriber>> subs;
+  for (const auto& spec : signals) {
+    wires.push_back(std::make_unique<distributed::WireSignal>(spec, distributed::step_ns(sc)));
+    subs.push_back(std::make_unique<distributed::WireSubscriber>(participant, distributed::signal_topic(spec.name), any,
+                                                                 *wires.back()));
+  }
   std::vector<rt::Subscriber<msg::Heartbeat>> beats;
   for (const auto& p : procs) beats.push_back(participant.subscriber<msg::Heartbeat>(distributed::health_topic(p.service()), profiles.get("health")));
   auto go = participant.publisher<msg::ClockStep>(distributed::kClockTopic, profiles.get("lockstep"));
@@ -77,8 +82,8 @@ RealtimeResult run_realtime(scenario::Scenario& sc, rt::Participant& participant
   fault.run_start_ns = t0;
   double safe_after_s = -1;  // first all-zero command after an injected kill
   const int64_t end = t0 + static_cast<int64_t>((sc.duration + 2.0) * 1e9);
-  msg::Signal m;
   scenario::SignalSample sample;
+  std::size_t bad_field = 0;
   // The live status line, once a second: loop rates, deadline misses, command latency.
   // Loop rates come from consecutive heartbeats (loop count over their publish times), so a
   // heartbeat that has not arrived yet this second does not read as a stopped loop.
@@ -130,18 +135,17 @@ RealtimeResult run_realtime(scenario::Scenario& sc, rt::Participant& participant
     if (monotonic_ns() - status_at >= 1'000'000'000) show_status(monotonic_ns());
     bool any_data = false;
     for (std::size_t s = 0; s < subs.size(); ++s) {
-      while (subs[s].take(m)) {
+      while (const void* m = subs[s]->take()) {
         any_data = true;
         const int64_t now = wall_time_ns();
-        if (m.count() != signals[s].fields.size()) continue;
-        sample.step = m.step_index();
-        std::copy_n(m.field_values().begin(), m.count(), sample.values.begin());
+        if (wires[s]->decode(m, sample, bad_field) != distributed::Rejection::none) continue;
         res.log.record(s, sample);
-        if (m.header().origin_time_ns() > distributed::kNoMeasurementOrigin)
-          latency[s].push_back(now - m.header().origin_time_ns());
+        const int64_t origin = subs[s]->header().origin_time_ns();
+        if (origin > distributed::kNoMeasurementOrigin) latency[s].push_back(now - origin);
         const int64_t killed = fault.killed_ns.load();
+        const auto width = static_cast<std::ptrdiff_t>(signals[s].fields.size());
         if (killed && safe_after_s < 0 && std::find(commands.begin(), commands.end(), s) != commands.end() &&
-            std::all_of(sample.values.begin(), sample.values.begin() + m.count(), [](double v) { return v == 0.0; }))
+            std::all_of(sample.values.begin(), sample.values.begin() + width, [](double v) { return v == 0.0; }))
           safe_after_s = static_cast<double>(monotonic_ns() - killed) * 1e-9;
       }
     }

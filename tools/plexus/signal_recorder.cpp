@@ -1,5 +1,7 @@
 #include "signal_recorder.hpp"
 
+#include "plexus/base/input_error.hpp"
+#include "plexus/distributed/wire.hpp"
 #include "plexus/msg/messages.hpp"
 #include "topic_discovery.hpp"
 
@@ -16,19 +18,23 @@ SignalRecorder::SignalRecorder(const std::string& path, const rt::QosProfile& qo
 }
 
 distributed::LockstepClock::SampleTap SignalRecorder::tap(const std::vector<scenario::SignalSpec>& signals) {
-  const auto& ts = msg::type_support<msg::Signal>();
   topic_ids_.clear();
-  for (const auto& s : signals) topic_ids_.push_back(file_.add_topic(distributed::signal_topic(s.name), ts.type_name, qos_json_));
-  return [this, &ts](std::size_t signal, const msg::Signal& m, const rt::SampleMeta& meta) {
+  for (const auto& s : signals) {
+    const distributed::WireType* type = distributed::find_wire_type(s.message);
+    if (!type) throw InputError("--record: signal '" + s.name + "' has no IDL message type");
+    topic_ids_.push_back(file_.add_topic(distributed::signal_topic(s.name), type->support->type_name, qos_json_));
+  }
+  return [this](std::size_t signal, const msg::TypeSupport& ts, const void* m, const rt::SampleMeta& meta) {
+    const msg::StampHeader& h = *ts.header(const_cast<void*>(m));
     RecordedMessage r;
     r.topic_id = topic_ids_.at(signal);
     r.receive_time_ns = meta.receive_time_ns;
-    r.seq_num = static_cast<int64_t>(m.header().seq_num());
-    r.data_time_ns = m.header().data_time_ns();
-    r.origin_time_ns = m.header().origin_time_ns();
-    r.publish_time_ns = m.header().publish_time_ns();
+    r.seq_num = static_cast<int64_t>(h.seq_num());
+    r.data_time_ns = h.data_time_ns();
+    r.origin_time_ns = h.origin_time_ns();
+    r.publish_time_ns = h.publish_time_ns();
     r.cdr.resize(ts.max_cdr_size);
-    r.cdr.resize(ts.serialize(&m, r.cdr.data(), r.cdr.size()));
+    r.cdr.resize(ts.serialize(m, r.cdr.data(), r.cdr.size()));
     taken_.push_back(std::move(r));
   };
 }

@@ -1,5 +1,5 @@
 // plexus launch --record FILE: every signal sample the lockstep clock takes, written as a
-// plexus recording (recording.hpp) of the `sig/<signal>` topics, so `plexus replay
+// plexus recording (recording.hpp) of the signals' typed topics, so `plexus replay
 // --lockstep` can later stand in for any producer (`plexus launch --external`).
 //
 // The clock sees every sample of every step, so nothing is lost to a late-joining

@@ -4,11 +4,11 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <thread>
 
 #include "plexus/base/clock.hpp"
 #include "input_guard.hpp"
-#include "signal_codec.hpp"
 
 namespace plexus::distributed {
 namespace {
@@ -23,8 +23,9 @@ std::string step_text(int64_t k) { return "step " + std::to_string(k); }
 /// The latest samples received of one remote signal, by step.
 class RemoteSignal {
  public:
-  RemoteSignal(const SignalSpec& spec, rt::Subscriber<msg::Signal> sub, detail::InputGuard& guard)
-      : spec_(&spec), sub_(std::move(sub)), guard_(&guard) {}
+  RemoteSignal(const SignalSpec& spec, rt::Participant& p, const rt::QosProfile& qos, int64_t step_ns,
+               detail::InputGuard& guard)
+      : spec_(&spec), wire_(spec, step_ns), sub_(p, signal_topic(spec.name), qos, wire_), guard_(&guard) {}
 
   /// Copies the sample produced at step `due` into `out`, waiting for it up to `timeout_ns`.
   void get(int64_t due, int64_t timeout_ns, SignalSample& out) {
@@ -47,13 +48,11 @@ class RemoteSignal {
 
   /// Takes every received sample into the ring.
   void drain() {
-    while (sub_.take(msg_)) {
-      SignalSample s;
-      if (guard_->accept(msg_, *spec_, s)) ring_[slot(s.step)].sample = s;
+    while (const void* m = sub_.take()) {
+      if (guard_->accept(wire_, m, scratch_)) ring_[slot(scratch_.step)].sample = scratch_;
     }
   }
 
-  rt::Subscriber<msg::Signal>& subscriber() { return sub_; }
   const SignalSpec& spec() const { return *spec_; }
 
  private:
@@ -65,15 +64,18 @@ class RemoteSignal {
   }
   static constexpr std::size_t kRing = 32;
   const SignalSpec* spec_;
-  rt::Subscriber<msg::Signal> sub_;
+  WireSignal wire_;
+  WireSubscriber sub_;
   detail::InputGuard* guard_;
-  msg::Signal msg_;
+  SignalSample scratch_;
   std::array<Entry, kRing> ring_{};
 };
 
 }  // namespace
 
-std::string signal_topic(const std::string& signal) { return "sig/" + signal; }
+std::string signal_topic(const std::string& signal) { return signal; }
+
+int64_t step_ns(const scenario::Scenario& sc) { return std::llround(sc.step * 1e9); }
 
 // --- host -------------------------------------------------------------------
 
@@ -84,8 +86,8 @@ struct LockstepHost::Impl {
   detail::InputGuard guard{"lockstep host"};
   rt::Subscriber<msg::ClockStep> clock;
   std::vector<std::unique_ptr<RemoteSignal>> remote;  // indexed by signal (null if not remote)
-  std::vector<rt::Publisher<msg::Signal>> out;        // indexed by signal (empty if not local)
-  msg::Signal out_msg;
+  std::vector<std::unique_ptr<WireSignal>> out_wire;   // indexed by signal (null if not local)
+  std::vector<std::unique_ptr<WirePublisher>> out;     // indexed by signal (null if not local)
 
   Impl(scenario::Scenario& s, std::vector<bool> hosted, rt::Participant& p, const rt::QosProfile& qos,
        LockstepOptions o)
@@ -93,11 +95,14 @@ struct LockstepHost::Impl {
     clock = p.subscriber<msg::ClockStep>(kClockTopic, qos);
     const auto& signals = exec.signals();
     remote.resize(signals.size());
+    out_wire.resize(signals.size());
     out.resize(signals.size());
     for (std::size_t i : exec.remote_inputs())
-      remote[i] = std::make_unique<RemoteSignal>(signals[i], p.subscriber<msg::Signal>(signal_topic(signals[i].name), qos),
-                                                 guard);
-    for (std::size_t i : exec.local_outputs()) out[i] = p.publisher<msg::Signal>(signal_topic(signals[i].name), qos);
+      remote[i] = std::make_unique<RemoteSignal>(signals[i], p, qos, step_ns(sc), guard);
+    for (std::size_t i : exec.local_outputs()) {
+      out_wire[i] = std::make_unique<WireSignal>(signals[i], step_ns(sc));
+      out[i] = std::make_unique<WirePublisher>(p, signal_topic(signals[i].name), qos, *out_wire[i]);
+    }
   }
 };
 
@@ -110,13 +115,11 @@ LockstepHost::~LockstepHost() = default;
 int64_t LockstepHost::run(const std::atomic<bool>& stop) {
   Impl& m = *impl_;
   const int64_t timeout = to_ns(m.opt.timeout_s);
-  const int64_t step_ns = to_ns(m.sc.step);
   const scenario::StepExecutor::RemoteInput remote = [&m, timeout](std::size_t signal, int64_t due, SignalSample& s) {
     m.remote[signal]->get(due, timeout, s);
   };
-  const scenario::StepExecutor::OutputSink publish = [&m, step_ns](std::size_t signal, const SignalSample& s) {
-    detail::to_message(s, m.exec.signals()[signal].fields.size(), step_ns, m.out_msg);
-    if (!m.out[signal].publish(m.out_msg))
+  const scenario::StepExecutor::OutputSink publish = [&m](std::size_t signal, const SignalSample& s) {
+    if (!m.out[signal]->publish(s, 0))
       throw LockstepError("lockstep: cannot publish '" + m.exec.signals()[signal].name + "' at " + step_text(s.step));
   };
   // ClockStep k allows steps up to k + lead: a host runs ahead of the clock as far as its
@@ -165,9 +168,9 @@ struct LockstepClock::Impl {
   scenario::StepExecutor exec;  // wiring only (nothing hosted): the signal list, same indices everywhere
   LockstepOptions opt;
   rt::Publisher<msg::ClockStep> clock;
-  std::vector<rt::Subscriber<msg::Signal>> subs;
+  std::vector<std::unique_ptr<WireSignal>> wires;      // by signal
+  std::vector<std::unique_ptr<WireSubscriber>> subs;  // by signal
   detail::InputGuard guard{"lockstep clock"};
-  msg::Signal in;
   // Response times (ns) since the last producer_status(), per producer.
   std::vector<std::string> producers;
   std::vector<std::size_t> producer_of;  // by signal
@@ -180,7 +183,8 @@ struct LockstepClock::Impl {
       : sc(s), exec(s, std::vector<bool>(s.components.size(), false)), opt(o) {
     clock = p.publisher<msg::ClockStep>(kClockTopic, qos);
     for (const auto& spec : exec.signals()) {
-      subs.push_back(p.subscriber<msg::Signal>(signal_topic(spec.name), qos));
+      wires.push_back(std::make_unique<WireSignal>(spec, step_ns(sc)));
+      subs.push_back(std::make_unique<WireSubscriber>(p, signal_topic(spec.name), qos, *wires.back()));
       auto it = std::find(producers.begin(), producers.end(), spec.producer);
       producer_of.push_back(static_cast<std::size_t>(it - producers.begin()));
       if (it == producers.end()) producers.push_back(spec.producer);
@@ -210,7 +214,7 @@ void LockstepClock::wait_ready(int hosts, double timeout_s, const std::atomic<bo
     if (m.clock.matched_count() < hosts)
       missing = std::to_string(hosts - m.clock.matched_count()) + " of " + std::to_string(hosts) + " hosts";
     for (std::size_t i = 0; i < m.subs.size() && missing.empty(); ++i)
-      if (m.subs[i].matched_count() == 0)
+      if (m.subs[i]->matched_count() == 0)
         missing = "the producer of '" + m.exec.signals()[i].name + "' ('" + m.exec.signals()[i].producer + "')";
     if (missing.empty()) return;
     if (stop) throw LockstepError("lockstep: stopped while waiting for " + missing);
@@ -278,14 +282,14 @@ scenario::RunLog LockstepClock::run(const std::atomic<bool>& stop, const scenari
       if (k % signals[s].period_steps != 0) continue;
       const int64_t deadline = monotonic_ns() + timeout;
       for (;;) {
-        if (m.subs[s].take(m.in, &meta)) {
-          m.note_response(s, m.in.header().publish_time_ns() - published);
-          if (tap) tap(s, m.in, meta);
-          if (!m.guard.accept(m.in, signals[s], sample))
+        if (const void* in = m.subs[s]->take(&meta)) {
+          m.note_response(s, m.subs[s]->header().publish_time_ns() - published);
+          if (tap) tap(s, m.wires[s]->support(), in, meta);
+          if (!m.guard.accept(*m.wires[s], in, sample))
             throw LockstepError("lockstep: refused the sample of '" + signals[s].name + "' from '" +
                                 signals[s].producer + "' for " + step_text(k) + " (reason logged above)");
           if (sample.step != k)
-            throw LockstepError("lockstep: '" + signals[s].name + "' sent step " + std::to_string(m.in.step_index()) +
+            throw LockstepError("lockstep: '" + signals[s].name + "' sent step " + std::to_string(sample.step) +
                                 " while the clock is at " + step_text(k));
           log.record(s, sample);
           break;
@@ -294,7 +298,7 @@ scenario::RunLog LockstepClock::run(const std::atomic<bool>& stop, const scenari
         if (now >= deadline || stop.load(std::memory_order_relaxed))
           throw LockstepError("lockstep: no sample of '" + signals[s].name + "' from '" + signals[s].producer +
                               "' for " + step_text(k) + " within " + std::to_string(m.opt.timeout_s) + " s");
-        m.subs[s].wait(std::min<int64_t>(deadline - now, 100'000'000));
+        m.subs[s]->wait(std::min<int64_t>(deadline - now, 100'000'000));
       }
     }
     if (observer && (k % 128 == 0 || k == m.sc.steps)) observer(k, m.sc.steps);

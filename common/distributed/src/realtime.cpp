@@ -13,7 +13,6 @@
 #include "plexus/distributed/lockstep.hpp"
 #include "plexus/scenario/step_executor.hpp"
 #include "input_guard.hpp"
-#include "signal_codec.hpp"
 
 namespace plexus::distributed {
 namespace {
@@ -26,8 +25,12 @@ constexpr int64_t kMaxCatchUpSteps = 10;
 
 /// Latest sample of a signal produced in another process.
 struct RemoteLatest {
-  rt::Subscriber<msg::Signal> sub;
+  RemoteLatest(const scenario::SignalSpec& spec, rt::Participant& p, const rt::QosProfile& qos, int64_t step_ns)
+      : wire(spec, step_ns), sub(p, signal_topic(spec.name), qos, wire) {}
+  WireSignal wire;
+  WireSubscriber sub;
   SignalSample sample;       // step -1 until the first one arrives
+  SignalSample scratch;
   int64_t received_ns = 0;   // monotonic
   int64_t origin_ns = 0;     // header origin time (wall clock)
   int64_t deadline_ns = 0;   // stale after this age
@@ -76,12 +79,12 @@ struct RealtimeHost::Impl {
   RealtimeOptions opt;
   detail::InputGuard guard{opt.service};
   std::vector<std::unique_ptr<RemoteLatest>> remote;  // by signal
-  std::vector<rt::Publisher<msg::Signal>> out;        // by signal
+  std::vector<std::unique_ptr<WireSignal>> out_wire;   // by signal
+  std::vector<std::unique_ptr<WirePublisher>> out;     // by signal
   std::vector<int64_t> local_origin;                  // by signal: origin of the latest local sample
   std::vector<std::vector<std::size_t>> local_inputs;  // by component: the signals it reads from this process
   rt::Subscriber<msg::ClockStep> start;
   rt::Publisher<msg::Heartbeat> heartbeat;
-  msg::Signal in_msg, out_msg;
   msg::Heartbeat hb;
   // Per component being stepped: set while its inputs are read.
   bool stale = false;
@@ -94,6 +97,7 @@ struct RealtimeHost::Impl {
       : sc(s), phase(stage_phase(s, hosted)), exec(s, std::move(hosted)), opt(std::move(o)) {
     const auto& signals = exec.signals();
     remote.resize(signals.size());
+    out_wire.resize(signals.size());
     out.resize(signals.size());
     local_origin.assign(signals.size(), 0);
     const auto produced = exec.local_outputs();
@@ -103,14 +107,16 @@ struct RealtimeHost::Impl {
         for (std::size_t in : exec.inputs_of(c))
           if (std::find(produced.begin(), produced.end(), in) != produced.end()) local_inputs[c].push_back(in);
     for (std::size_t i : exec.remote_inputs()) {
-      auto r = std::make_unique<RemoteLatest>();
-      r->sub = p.subscriber<msg::Signal>(signal_topic(signals[i].name), signal_qos(sc, signals[i].producer, profiles));
+      auto r = std::make_unique<RemoteLatest>(signals[i], p, signal_qos(sc, signals[i].producer, profiles), step_ns(sc));
       r->deadline_ns = static_cast<int64_t>(sc.input_deadline_periods * static_cast<double>(signals[i].period_steps) *
                                             sc.step * 1e9);
       remote[i] = std::move(r);
     }
-    for (std::size_t i : exec.local_outputs())
-      out[i] = p.publisher<msg::Signal>(signal_topic(signals[i].name), signal_qos(sc, signals[i].producer, profiles));
+    for (std::size_t i : exec.local_outputs()) {
+      out_wire[i] = std::make_unique<WireSignal>(signals[i], step_ns(sc));
+      out[i] = std::make_unique<WirePublisher>(p, signal_topic(signals[i].name), signal_qos(sc, signals[i].producer, profiles),
+                                               *out_wire[i]);
+    }
     start = p.subscriber<msg::ClockStep>(kClockTopic, profiles.get("lockstep"));
     heartbeat = p.publisher<msg::Heartbeat>(health_topic(opt.service), profiles.get("health"));
     copy_name(hb.service(), opt.service);
@@ -119,13 +125,12 @@ struct RealtimeHost::Impl {
 
   void drain(std::size_t signal) {
     RemoteLatest& r = *remote[signal];
-    while (r.sub.take(in_msg)) {
-      SignalSample s;
-      if (!guard.accept(in_msg, exec.signals()[signal], s)) continue;  // refused: counted and logged
-      if (s.step < r.sample.step) continue;                    // older than what we have
-      r.sample = s;
+    while (const void* m = r.sub.take()) {
+      if (!guard.accept(r.wire, m, r.scratch)) continue;  // refused: counted and logged
+      if (r.scratch.step < r.sample.step) continue;       // older than what we have
+      r.sample = r.scratch;
       r.received_ns = monotonic_ns();
-      r.origin_ns = in_msg.header().origin_time_ns();
+      r.origin_ns = r.sub.header().origin_time_ns();
     }
   }
 
@@ -184,7 +189,6 @@ RealtimeReport RealtimeHost::run(const std::atomic<bool>& stop) {
   rt::LoopOptions lo = m.opt.loop;
   lo.rate_hz = 1.0 / m.sc.step;
   rt::PeriodicLoop loop(lo);
-  const auto& signals = m.exec.signals();
   const scenario::StepExecutor::RemoteInput read = [&m](std::size_t signal, int64_t due, SignalSample& s) {
     m.drain(signal);
     const RemoteLatest& r = *m.remote[signal];
@@ -215,10 +219,8 @@ RealtimeReport RealtimeHost::run(const std::atomic<bool>& stop) {
     return !hold;
   };
   const scenario::StepExecutor::OutputSink publish = [&](std::size_t signal, const SignalSample& s) {
-    detail::to_message(s, signals[signal].fields.size(), step_ns, m.out_msg);
-    m.out_msg.header().origin_time_ns(m.component_origin);  // 0: this sample starts a chain (publish sets it)
-    m.out[signal].publish(m.out_msg);
-    m.local_origin[signal] = m.out_msg.header().origin_time_ns();  // for readers in this process
+    m.out[signal]->publish(s, m.component_origin);  // origin 0: this sample starts a chain (stamped now)
+    m.local_origin[signal] = m.out[signal]->last_origin();  // for readers in this process
   };
   const int64_t ticks = m.sc.steps + 1;
   if (k0 >= ticks) return m.report;  // joined after the end of the run

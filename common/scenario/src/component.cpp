@@ -18,7 +18,7 @@ namespace {
 std::string resolve_signal(const std::string& robot, const std::map<std::string, std::string>& remap,
                            const std::string& port) {
   if (auto it = remap.find(port); it != remap.end()) return it->second;
-  if (port.find('/') != std::string::npos || robot.empty()) return port;
+  if (robot.empty() || (port.find('/') != std::string::npos && port.rfind("truth/", 0) != 0)) return port;
   return robot + "/" + port;
 }
 
@@ -33,8 +33,9 @@ InputPort& Component::add_input(const std::string& port, std::vector<std::string
   return *inputs_.back();
 }
 
-OutputPort& Component::add_output(const std::string& port, std::vector<std::string> fields) {
-  outputs_.push_back(std::make_unique<OutputPort>(port, resolve_signal(robot_, remap_, port), std::move(fields)));
+OutputPort& Component::add_output(const std::string& port, std::vector<std::string> fields, std::string message) {
+  outputs_.push_back(
+      std::make_unique<OutputPort>(port, resolve_signal(robot_, remap_, port), std::move(fields), std::move(message)));
   return *outputs_.back();
 }
 

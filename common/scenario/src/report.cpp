@@ -100,7 +100,7 @@ Report write_report(const fs::path& run_dir) {
   gp << "set terminal pngcairo size 1000,600 noenhanced\nset datafile separator ','\nset grid\nset key outside right\n";
   std::map<std::string, const Table*> states;
   for (const auto& t : signals)
-    if (t.stem == robot_of(t.stem) + ".state") states[robot_of(t.stem)] = &t;
+    if (t.stem == robot_of(t.stem) + ".truth.state") states[robot_of(t.stem)] = &t;
 
   for (const auto& t : signals) {
     const std::string png = "plots/" + t.stem + ".png";

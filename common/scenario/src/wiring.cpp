@@ -36,7 +36,7 @@ Wiring wire(const std::vector<ScenarioComponent>& components) {
       by_name[out->signal()] = w.signals.size();
       w.outputs[ci].push_back({out.get(), w.signals.size()});
       w.signals.push_back({out->signal(), out->fields(), c.period_steps, c.component->name(),
-                           c.kind == ComponentKind::plant});
+                           c.kind == ComponentKind::plant, out->message()});
       w.producer_kind.push_back(c.kind);
     }
   }

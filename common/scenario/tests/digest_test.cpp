@@ -16,8 +16,8 @@ TEST(Digest, Fnv1aKnownVectors) {
 TEST(Digest, CoversOnlyPlantStateStepsAndValues) {
   RunLog log;
   log.base_step = 0.1;
-  SignalTrace plant{{"r/state", {"x", "y"}, 1, "r/plant", true}, {0, 1}, {1.0, 2.0, 3.0, 4.0}};
-  SignalTrace other{{"r/gps", {"x"}, 1, "r/gps", false}, {0}, {9.0}};
+  SignalTrace plant{{"r/truth/state", {"x", "y"}, 1, "r/plant", true, ""}, {0, 1}, {1.0, 2.0, 3.0, 4.0}};
+  SignalTrace other{{"r/gps", {"x"}, 1, "r/gps", false, ""}, {0}, {9.0}};
   log.signals = {plant, other};
   // By hand: FNV-1a over step 0, 1.0, 2.0, step 1, 3.0, 4.0 as raw bytes.
   unsigned char bytes[48];

@@ -17,8 +17,8 @@ RunLog two_signals() {
   RunLog log;
   log.base_step = 1.0;
   log.steps = 3;
-  log.signals.push_back({{"r/a", {"x", "y"}, 1, "pa", true}, {0, 1, 2, 3}, {0, 0, 3, 4, 6, 8, 0, 1}});
-  log.signals.push_back({{"r/b", {"y", "x"}, 2, "pb", false}, {0, 2}, {0, 0, 2, 1}});
+  log.signals.push_back({{"r/a", {"x", "y"}, 1, "pa", true, ""}, {0, 1, 2, 3}, {0, 0, 3, 4, 6, 8, 0, 1}});
+  log.signals.push_back({{"r/b", {"y", "x"}, 2, "pb", false, ""}, {0, 2}, {0, 0, 2, 1}});
   return log;
 }
 

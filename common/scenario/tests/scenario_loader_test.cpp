@@ -35,7 +35,7 @@ TEST(ScenarioLoader, LoadsTheValidScenario) {
   EXPECT_EQ(sc.components[1].period_steps, 2);
   EXPECT_EQ(sc.components[2].component->name(), "driver");
   ASSERT_EQ(sc.signals.size(), 3u);
-  EXPECT_EQ(sc.signals[0].name, "r1/state");
+  EXPECT_EQ(sc.signals[0].name, "r1/truth/state");
   EXPECT_TRUE(sc.signals[0].plant_state);
   EXPECT_EQ(sc.signals[1].name, "r1/gps");
   EXPECT_EQ(sc.signals[2].name, "r1/cmd");
@@ -125,27 +125,27 @@ INSTANTIATE_TEST_SUITE_P(
                 "t.yaml:8: robots.r1.plant: input 'r1/cmd' (port 'cmd') is produced by no component; remap the port "
                 "or add its producer"},
         BadCase{"input_field", with("fields: [x, y]", "fields: [x, z]"),
-                "t.yaml:12: robots.r1.sensors.gps: input 'r1/state' has no field 'z' (it has: x, y, theta)"},
-        BadCase{"output_twice", with("robot: r1", "robot: r1\n    remap: {cmd: r1/state}"),
-                "t.yaml:18: services.driver: output 'r1/state' is already produced by r1/plant"},
+                "t.yaml:12: robots.r1.sensors.gps: input 'r1/truth/state' has no field 'z' (it has: x, y, theta)"},
+        BadCase{"output_twice", with("robot: r1", "robot: r1\n    remap: {cmd: r1/truth/state}"),
+                "t.yaml:18: services.driver: output 'r1/truth/state' is already produced by r1/plant"},
         BadCase{"sensor_name", with("      gps:", "      g.ps:"),
                 "t.yaml:12: robots.r1.sensors.g.ps: invalid sensor name (letters, digits, '_' and '-', at most 64)"},
-        BadCase{"metrics_not_list", with("metrics:\n  - {name: final_x, type: value_final, signal: r1/state, field: x}",
+        BadCase{"metrics_not_list", with("metrics:\n  - {name: final_x, type: value_final, signal: r1/truth/state, field: x}",
                                          "metrics: {a: 1}"),
                 "t.yaml:22: metrics: expected a list, got a mapping"},
         BadCase{"metric_type", with("type: value_final", "type: value_last"),
                 "t.yaml:23: metrics.0.type: unknown metric type 'value_last' (known: "},
-        BadCase{"metric_signal", with("signal: r1/state", "signal: r1/pose"),
-                "t.yaml:23: metrics.0.signal: no signal 'r1/pose' in this scenario (signals: r1/state, r1/gps, r1/cmd)"},
-        BadCase{"metric_field", with("field: x}", "field: q}"), "t.yaml:23: metrics.0.field: signal 'r1/state' has no field 'q'"},
+        BadCase{"metric_signal", with("signal: r1/truth/state", "signal: r1/pose"),
+                "t.yaml:23: metrics.0.signal: no signal 'r1/pose' in this scenario (signals: r1/truth/state, r1/gps, r1/cmd)"},
+        BadCase{"metric_field", with("field: x}", "field: q}"), "t.yaml:23: metrics.0.field: signal 'r1/truth/state' has no field 'q'"},
         BadCase{"metric_window", with("field: x}", "field: x, from: 2}"), "t.yaml:23: metrics.0.from: must be in [0, duration]"},
         BadCase{"metric_unknown_key", with("field: x}", "field: x, form: 0}"), "t.yaml:23: metrics.0.form: unknown key"},
-        BadCase{"metric_twice", with("metrics:\n", "metrics:\n  - {name: final_x, type: value_max, signal: r1/state, field: x}\n"),
+        BadCase{"metric_twice", with("metrics:\n", "metrics:\n  - {name: final_x, type: value_max, signal: r1/truth/state, field: x}\n"),
                 "t.yaml:24: metrics.1.name: metric 'final_x' is defined twice (or is 'digest')"},
         BadCase{"metric_digest", with("name: final_x, type", "name: digest, type"),
                 "t.yaml:23: metrics.0.name: metric 'digest' is defined twice (or is 'digest')"},
         BadCase{"error_fields", with("  - {name: final_x",
-                                     "  - {name: e, type: error_max, signal: r1/gps, reference: r1/state, fields: [x, "
+                                     "  - {name: e, type: error_max, signal: r1/gps, reference: r1/truth/state, fields: [x, "
                                      "theta]}\n  - {name: final_x"),
                 "t.yaml:23: metrics.0.fields: signal 'r1/gps' has no field 'theta'"},
         BadCase{"expectation_metric", with("final_x: \"<= 2\"", "final_y: \"<= 2\""),

@@ -24,10 +24,10 @@ RunLog switching_run() {
   RunLog log;
   log.base_step = kStep;
   log.steps = kSteps;
-  SignalTrace state{{"r/state", {"x", "y", "y_l", "y_r", "x_G"}, 1, "plant", true}, {}, {}};
-  SignalTrace est{{"r/estimate", {"y_l", "y_r", "x_G"}, 1, "ekf", false}, {}, {}};
-  SignalTrace odo_a{{"r/odo_a", {"x", "y"}, 1, "a", false}, {}, {}};
-  SignalTrace odo_b{{"r/odo_b", {"x", "y"}, 1, "b", false}, {}, {}};
+  SignalTrace state{{"r/truth/state", {"x", "y", "y_l", "y_r", "x_G"}, 1, "plant", true, ""}, {}, {}};
+  SignalTrace est{{"r/icr", {"y_l", "y_r", "x_G"}, 1, "ekf", false, ""}, {}, {}};
+  SignalTrace odo_a{{"r/odo_a", {"x", "y"}, 1, "a", false, ""}, {}, {}};
+  SignalTrace odo_b{{"r/odo_b", {"x", "y"}, 1, "b", false, ""}, {}, {}};
   const double a[3] = {0.3, -0.5, -0.1}, b[3] = {0.5, -0.7, -0.3}, c[3] = {0.5, -0.6, -0.3};
   for (int64_t k = 0; k <= kSteps; ++k) {
     const double t = static_cast<double>(k) * kStep;
@@ -59,7 +59,7 @@ constexpr double kTol = 2.5 * kStep;
 
 TEST(SkidSteerMetrics, ReconvergenceTimeIsTheTimeToEnterTheBandForGood) {
   const RunLog log = switching_run();
-  const std::string m = "{type: icr_reconvergence_time, estimate: r/estimate, truth: r/state, tolerance: 0.02";
+  const std::string m = "{type: icr_reconvergence_time, estimate: r/icr, truth: r/truth/state, tolerance: 0.02";
   // Switch 1: steps of 0.2 m, tau 0.5 s -> 0.5 ln(10); switch 2: 0.1 m, tau 1.5 s -> 1.5 ln(5).
   const double t1 = kTau1 * std::log(0.2 / 0.02), t2 = kTau2 * std::log(0.1 / 0.02);
   EXPECT_NEAR(compute(log, m + ", switch: 1}").value, t1, kTol);
@@ -70,7 +70,7 @@ TEST(SkidSteerMetrics, ReconvergenceTimeIsTheTimeToEnterTheBandForGood) {
 
 TEST(SkidSteerMetrics, ReconvergenceRiseTimeIsTheTimeToCoverNinetyPercentOfTheStep) {
   const RunLog log = switching_run();
-  const std::string m = "{type: icr_reconvergence_rise_time, estimate: r/estimate, truth: r/state";
+  const std::string m = "{type: icr_reconvergence_rise_time, estimate: r/icr, truth: r/truth/state";
   // 90 % of an exponential step after tau ln(10), whatever the step's size; the fields that
   // do not change at the second switch (y_l, x_G) are skipped.
   EXPECT_NEAR(compute(log, m + ", switch: 1}").value, kTau1 * std::log(10.0), kTol);
@@ -88,15 +88,15 @@ TEST(SkidSteerMetrics, ReconvergenceIsTheRunLengthWhenTheEstimateNeverGetsThere)
     }
   }
   const double run = kStep * kSteps;
-  EXPECT_EQ(compute(log, "{type: icr_reconvergence_time, estimate: r/estimate, truth: r/state}").value, run);
-  EXPECT_EQ(compute(log, "{type: icr_reconvergence_rise_time, estimate: r/estimate, truth: r/state}").value, run);
+  EXPECT_EQ(compute(log, "{type: icr_reconvergence_time, estimate: r/icr, truth: r/truth/state}").value, run);
+  EXPECT_EQ(compute(log, "{type: icr_reconvergence_rise_time, estimate: r/icr, truth: r/truth/state}").value, run);
 }
 
 TEST(SkidSteerMetrics, OdometryErrorRatioDividesTheFinalPositionErrors) {
   const RunLog log = switching_run();
-  EXPECT_NEAR(compute(log, "{type: odometry_error_ratio, signal: r/odo_a, other: r/odo_b, reference: r/state}").value,
+  EXPECT_NEAR(compute(log, "{type: odometry_error_ratio, signal: r/odo_a, other: r/odo_b, reference: r/truth/state}").value,
               0.5, 1e-12);
-  EXPECT_NEAR(compute(log, "{type: odometry_error_ratio, signal: r/odo_b, other: r/odo_a, reference: r/state}").value,
+  EXPECT_NEAR(compute(log, "{type: odometry_error_ratio, signal: r/odo_b, other: r/odo_a, reference: r/truth/state}").value,
               2.0, 1e-12);
 }
 

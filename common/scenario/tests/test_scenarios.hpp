@@ -30,7 +30,7 @@ services:
     v: 1.0
     omega: 0.0
 metrics:
-  - {name: final_x, type: value_final, signal: r1/state, field: x}
+  - {name: final_x, type: value_final, signal: r1/truth/state, field: x}
 expectations:
   final_x: "<= 2"
 )";

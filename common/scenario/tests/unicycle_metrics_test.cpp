@@ -20,10 +20,10 @@ RunLog observer_run(double L, double v0, double v1) {
   RunLog log;
   log.base_step = kStep;
   log.steps = kSteps;
-  SignalTrace state{{"r/state", {"x", "y", "theta"}, 1, "plant", true}, {}, {}};
-  SignalTrace cmd{{"r/cmd", {"v", "omega"}, 1, "ctl", false}, {}, {}};
-  SignalTrace est{{"r/estimate", {"theta", "z3", "z4", "L"}, 1, "obs", false}, {}, {}};
-  SignalTrace path{{"r/path", {"h", "hx"}, 1, "path", false}, {}, {}};
+  SignalTrace state{{"r/truth/state", {"x", "y", "theta"}, 1, "plant", true, ""}, {}, {}};
+  SignalTrace cmd{{"r/cmd", {"v", "omega"}, 1, "ctl", false, ""}, {}, {}};
+  SignalTrace est{{"r/heading", {"theta", "z3", "z4", "L"}, 1, "obs", false, ""}, {}, {}};
+  SignalTrace path{{"r/path", {"h", "hx"}, 1, "path", false, ""}, {}, {}};
   double integral = 0.0;  // int_0^t v
   for (int64_t k = 0; k <= kSteps; ++k) {
     const double t = static_cast<double>(k) * kStep;
@@ -53,9 +53,9 @@ MetricResult compute(const RunLog& log, const std::string& yaml) {
   return f(log);
 }
 
-const char* kDecay = "{type: observer_decay_rate, state: r/state, estimate: r/estimate}";
-const char* kBound = "{type: observer_rate_bound, estimate: r/estimate, cmd: r/cmd}";
-const char* kRatio = "{type: observer_decay_ratio, state: r/state, estimate: r/estimate, cmd: r/cmd}";
+const char* kDecay = "{type: observer_decay_rate, state: r/truth/state, estimate: r/heading}";
+const char* kBound = "{type: observer_rate_bound, estimate: r/heading, cmd: r/cmd}";
+const char* kRatio = "{type: observer_decay_ratio, state: r/truth/state, estimate: r/heading, cmd: r/cmd}";
 
 TEST(UnicycleMetrics, DecayRateOfAnExactExponentialIsItsRate) {
   const RunLog log = observer_run(1.5, 0.2, 0.0);  // V_o ~ exp(-2 * 1.5 * 0.2 t)
@@ -81,7 +81,7 @@ TEST(UnicycleMetrics, RatioIsAtLeastOneForAVaryingSpeed) {
 TEST(UnicycleMetrics, WindowRestrictsTheFit) {
   const RunLog log = observer_run(1.0, 0.3, 0.0);
   const MetricResult r =
-      compute(log, "{type: observer_decay_rate, state: r/state, estimate: r/estimate, from: 10, to: 15}");
+      compute(log, "{type: observer_decay_rate, state: r/truth/state, estimate: r/heading, from: 10, to: 15}");
   EXPECT_NEAR(r.value, 0.6, 1e-9);
   EXPECT_EQ(r.series.size(), 51u);
 }
@@ -91,9 +91,9 @@ TEST(UnicycleMetrics, VelocityObserverErrorAndNormFinal) {
   RunLog log;
   log.base_step = kStep;
   log.steps = kSteps;
-  SignalTrace state{{"r/state", {"theta"}, 1, "plant", true}, {}, {}};
-  SignalTrace cmd{{"r/cmd", {"v"}, 2, "ctl", false}, {}, {}};  // every other step: held
-  SignalTrace est{{"r/estimate", {"z2", "z4"}, 1, "obs", false}, {}, {}};
+  SignalTrace state{{"r/truth/state", {"theta"}, 1, "plant", true, ""}, {}, {}};
+  SignalTrace cmd{{"r/cmd", {"v"}, 2, "ctl", false, ""}, {}, {}};  // every other step: held
+  SignalTrace est{{"r/heading", {"z2", "z4"}, 1, "obs", false, ""}, {}, {}};
   for (int64_t k = 0; k <= kSteps; ++k) {
     const double t = static_cast<double>(k) * kStep, th = 0.3 * t;
     state.steps.push_back(k);
@@ -107,7 +107,7 @@ TEST(UnicycleMetrics, VelocityObserverErrorAndNormFinal) {
   }
   log.signals = {state, cmd, est};
   const MetricResult r = compute(
-      log, "{type: velocity_observer_error_final, state: r/state, cmd: r/cmd, estimate: r/estimate}");
+      log, "{type: velocity_observer_error_final, state: r/truth/state, cmd: r/cmd, estimate: r/heading}");
   EXPECT_NEAR(r.value, std::sqrt(0.05) * std::exp(-20.0), 1e-15);
   ASSERT_EQ(r.series.size(), static_cast<std::size_t>(kSteps + 1));
   EXPECT_NEAR(r.series.front().second, std::sqrt(0.05), 1e-12);
@@ -122,8 +122,8 @@ TEST(UnicycleMetrics, NormFinal) {
 
 TEST(UnicycleMetrics, MissingFieldsAreConfigurationErrors) {
   const RunLog log = observer_run(1.0, 0.3, 0.0);
-  EXPECT_THROW(compute(log, "{type: observer_decay_rate, state: r/cmd, estimate: r/estimate}"), InputError);
-  EXPECT_THROW(compute(log, "{type: observer_rate_bound, estimate: r/state, cmd: r/cmd}"), InputError);
+  EXPECT_THROW(compute(log, "{type: observer_decay_rate, state: r/cmd, estimate: r/heading}"), InputError);
+  EXPECT_THROW(compute(log, "{type: observer_rate_bound, estimate: r/truth/state, cmd: r/cmd}"), InputError);
   EXPECT_THROW(compute(log, "{type: value_norm_final, signal: r/path, fields: [z]}"), InputError);
 }
 

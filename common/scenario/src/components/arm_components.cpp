@@ -12,20 +12,24 @@
 //   flexible_joint_arm (plant): + q0 (list, default 0), dq0 (list, default 0: at rest): the
 //       arm starts in steady motion at (q0, dq0), motors at dq0, springs holding C q' + G;
 //       max_substep (s, default 1e-4: RK4 sub-step inside each plant period).
-//       in cmd {u1..un}; out state {q1..qn, dq1..dqn} (link side, truth for metrics),
-//       motor {phi1..phin, dphi1..dphin}, torque {tau1..taun}.
+//       in cmd {u1..un} (JointCommand); out truth/state {q1..qn, dq1..dqn, phi1..phin,
+//       dphi1..dphin, tau1..taun} (FlexibleJointTruth: link side, motor side, joint torque;
+//       for metrics).
+//   joint_encoders (sensor): dof (2), position_noise_std (rad, 0), velocity_noise_std
+//       (rad/s, 0). in truth/state {phi.., dphi..}; out <sensor name> {phi1.., dphi1..}
+//       (JointState, motor side: the scenarios name it joint_states).
 //   arm_sine_reference (reference): amplitude, frequency_hz, offset, phase (lists; default
-//       eq. (59)), dof (default 2). out reference {q1.., dq1.., ddq1.., dddq1..}.
+//       eq. (59)), dof (default 2). out reference {q1.., dq1.., ddq1.., dddq1..} (JointReference).
 //   arm_ekf (estimator): model keys + q (4), r (0.1), p0 (1), substeps (1), jacobian
 //       (full | paper), acceleration (model | differentiator), accel_filter_hz (50).
-//       in encoder_position {phi1..}, encoder_velocity {dphi1..}, cmd {u1..};
-//       out estimate {q1.., dq1.., ddq1.., dddq1..}, joint_estimate {tau1.., dtau1.., phi1.., dphi1..}.
+//       in joint_states {phi1.., dphi1..}, cmd {u1..};
+//       out estimate {q1.., dq1.., ddq1.., dddq1.., tau1.., dtau1.., phi1.., dphi1..} (LinkJointState).
 //       At its first step it assumes steady motion: x^ = [C(phi, phi') phi' + G(phi), 0, phi, phi'].
 //   arm_vdc (controller): model keys + k_b, rho, lambda, k_p, k_i, ts_min, ts_max, lambda_q,
 //       lambda_phi, lambda_tau, k_phi, k_tau (lists; default Table 3), theta_lower (0.6),
-//       theta_upper (1.8), theta_initial (1.0). in reference, estimate, joint_estimate; out cmd.
+//       theta_upper (1.8), theta_initial (1.0). in reference, estimate; out cmd.
 //   arm_ct_pd (controller): model keys + k_p, k_v, k_d (lists; default eq. (60)'s gains),
-//       velocity (motor | link, default motor). in reference, estimate, joint_estimate; out cmd.
+//       velocity (motor | link, default motor). in reference, estimate; out cmd.
 #include <memory>
 #include <string>
 #include <vector>
@@ -35,6 +39,8 @@
 #include "plexus/algorithms/arm/flexible_joint_plant.hpp"
 #include "plexus/algorithms/arm/sine_reference.hpp"
 #include "plexus/algorithms/arm/vdc_controller.hpp"
+#include "plexus/algorithms/core/random.hpp"
+#include "plexus/scenario/params.hpp"
 #include "plexus/scenario/registry.hpp"
 
 namespace plexus::scenario {
@@ -42,9 +48,14 @@ namespace {
 
 namespace alg = plexus::algorithms;
 
-// Scenario signals hold at most 16 fields: the reference (4n) and joint estimate (4n) limit
-// the scenario arm to 4 joints; the algorithms themselves take any n.
-constexpr int kMaxScenarioDof = 4;
+// The joint messages hold 16 joints (idl/plexus/msg/joint.idl, MAX_JOINTS), and the estimate
+// (8 fields per joint) fills a signal of kMaxSignalFields; the algorithms take any n.
+constexpr int kMaxScenarioDof = 16;
+static_assert(8 * kMaxScenarioDof <= static_cast<int>(kMaxSignalFields));
+
+/// The estimate's fields (LinkJointState): link motion to the jerk, joint torque and rate,
+/// motor side.
+std::vector<std::string> estimate_fields(int n);
 
 std::vector<std::string> names(const std::string& prefix, int n) {
   std::vector<std::string> out;
@@ -56,6 +67,11 @@ std::vector<std::string> concat(std::initializer_list<std::vector<std::string>> 
   std::vector<std::string> out;
   for (const auto& p : parts) out.insert(out.end(), p.begin(), p.end());
   return out;
+}
+
+std::vector<std::string> estimate_fields(int n) {
+  return concat({names("q", n), names("dq", n), names("ddq", n), names("dddq", n), names("tau", n), names("dtau", n),
+                 names("phi", n), names("dphi", n)});
 }
 
 /// Optional list of `n` numbers; `fallback` when absent.
@@ -121,9 +137,10 @@ class FlexibleJointArmComponent final : public Component {
         u_(Eigen::VectorXd::Zero(n_)),
         tau_(Eigen::VectorXd::Zero(n_)),
         cmd_(add_input("cmd", names("u", n_))),
-        state_(add_output("state", concat({names("q", n_), names("dq", n_)}))),
-        motor_(add_output("motor", concat({names("phi", n_), names("dphi", n_)}))),
-        torque_(add_output("torque", names("tau", n_))) {
+        state_(add_output("truth/state",
+                          concat({names("q", n_), names("dq", n_), names("phi", n_), names("dphi", n_), names("tau", n_)}),
+                          "FlexibleJointTruth")) {
+    if (n_ > kMaxScenarioDof) c.params().fail("model", "has " + std::to_string(n_) + " joints; at most " + std::to_string(kMaxScenarioDof));
     const Eigen::VectorXd zero = Eigen::VectorXd::Zero(n_);
     plant_.reset_in_motion(number_list(c.params(), "q0", n_, zero), number_list(c.params(), "dq0", n_, zero));
   }
@@ -138,11 +155,12 @@ class FlexibleJointArmComponent final : public Component {
     }
     const alg::FlexibleJointArmState& s = plant_.state();
     plant_.spring_torque(tau_);
+    const auto n = static_cast<std::size_t>(n_);
     for (int i = 0; i < n_; ++i) {
-      const auto a = static_cast<std::size_t>(i), b = static_cast<std::size_t>(n_ + i);
-      state_[a] = s.q(i), state_[b] = s.qd(i);
-      motor_[a] = s.phi(i), motor_[b] = s.phid(i);
-      torque_[a] = tau_(i);
+      const auto a = static_cast<std::size_t>(i);
+      state_[a] = s.q(i), state_[n + a] = s.qd(i);
+      state_[2 * n + a] = s.phi(i), state_[3 * n + a] = s.phid(i);
+      state_[4 * n + a] = tau_(i);
     }
   }
 
@@ -153,8 +171,40 @@ class FlexibleJointArmComponent final : public Component {
   Eigen::VectorXd u_, tau_;
   InputPort& cmd_;
   OutputPort& state_;
-  OutputPort& motor_;
-  OutputPort& torque_;
+};
+
+// ---------------------------------------------------------------------------------------
+/// The motor encoders: phi and phi' of every joint, with optional Gaussian noise (position
+/// noises drawn first, then velocity, from the sensor's own seed).
+class JointEncodersComponent final : public Component {
+ public:
+  explicit JointEncodersComponent(const ComponentConfig& c)
+      : Component(c),
+        n_(dof(c.params())),
+        position_std_(optional_non_negative(c.params(), "position_noise_std")),
+        velocity_std_(optional_non_negative(c.params(), "velocity_noise_std")),
+        rng_(c.seed),
+        in_(add_input("truth/state", concat({names("phi", n_), names("dphi", n_)}))),
+        out_(add_output(c.key, concat({names("phi", n_), names("dphi", n_)}), "JointState")) {}
+
+  void step(int64_t /*k*/, double /*t*/) override {
+    const auto n = static_cast<std::size_t>(n_);
+    for (std::size_t i = 0; i < n; ++i) out_[i] = position_std_ > 0.0 ? in_[i] + position_std_ * rng_.normal() : in_[i];
+    for (std::size_t i = n; i < 2 * n; ++i)
+      out_[i] = velocity_std_ > 0.0 ? in_[i] + velocity_std_ * rng_.normal() : in_[i];
+  }
+
+ private:
+  static int dof(const YamlMap& p) {
+    const int n = p.optional<int>("dof", 2);
+    if (n < 1 || n > kMaxScenarioDof) p.fail("dof", "must be in 1.." + std::to_string(kMaxScenarioDof));
+    return n;
+  }
+  int n_;
+  double position_std_, velocity_std_;
+  alg::Rng rng_;
+  InputPort& in_;
+  OutputPort& out_;
 };
 
 // ---------------------------------------------------------------------------------------
@@ -175,7 +225,8 @@ class ArmSineReferenceComponent final : public Component {
       : Component(c),
         ref_(read_reference(c.params())),
         n_(ref_.dof()),
-        out_(add_output("reference", concat({names("q", n_), names("dq", n_), names("ddq", n_), names("dddq", n_)}))) {
+        out_(add_output("reference", concat({names("q", n_), names("dq", n_), names("ddq", n_), names("dddq", n_)}),
+                        "JointReference")) {
     ref_.sample(0.0, sample_);
   }
 
@@ -228,18 +279,15 @@ class ArmEkfComponent final : public Component {
         y_(Eigen::VectorXd::Zero(2 * n_)),
         x0_(Eigen::VectorXd::Zero(4 * n_)),
         g_(Eigen::VectorXd::Zero(n_)),
-        pos_(add_input("encoder_position", names("phi", n_))),
-        vel_(add_input("encoder_velocity", names("dphi", n_))),
+        enc_(add_input("joint_states", concat({names("phi", n_), names("dphi", n_)}))),
         cmd_(add_input("cmd", names("u", n_))),
-        estimate_(add_output("estimate", concat({names("q", n_), names("dq", n_), names("ddq", n_), names("dddq", n_)}))),
-        joint_(add_output("joint_estimate", concat({names("tau", n_), names("dtau", n_), names("phi", n_), names("dphi", n_)}))) {}
+        estimate_(add_output("estimate", estimate_fields(n_), "LinkJointState")) {
+    if (n_ > kMaxScenarioDof) c.params().fail("model", "has " + std::to_string(n_) + " joints; at most " + std::to_string(kMaxScenarioDof));
+  }
 
   void step(int64_t /*k*/, double /*t*/) override {
-    if (!pos_.valid() || !vel_.valid()) return;
-    for (int i = 0; i < n_; ++i) {
-      y_(i) = pos_[static_cast<std::size_t>(i)];
-      y_(n_ + i) = vel_[static_cast<std::size_t>(i)];
-    }
+    if (!enc_.valid()) return;
+    for (int i = 0; i < 2 * n_; ++i) y_(i) = enc_[static_cast<std::size_t>(i)];
     if (!started_) {
       // Steady motion (at rest when phi' = 0): q ~ phi, q' ~ phi', q'' = 0, so
       // tau = C(q, q') q' + G(q) and tau' = 0 (the springs hold the arm).
@@ -257,7 +305,8 @@ class ArmEkfComponent final : public Component {
       const auto a = static_cast<std::size_t>(i);
       const auto n = static_cast<std::size_t>(n_);
       estimate_[a] = fb.q(i), estimate_[n + a] = fb.qd(i), estimate_[2 * n + a] = fb.qdd(i), estimate_[3 * n + a] = fb.qddd(i);
-      joint_[a] = fb.tau(i), joint_[n + a] = fb.taud(i), joint_[2 * n + a] = fb.phi(i), joint_[3 * n + a] = fb.phid(i);
+      estimate_[4 * n + a] = fb.tau(i), estimate_[5 * n + a] = fb.taud(i), estimate_[6 * n + a] = fb.phi(i),
+                        estimate_[7 * n + a] = fb.phid(i);
     }
   }
 
@@ -270,11 +319,9 @@ class ArmEkfComponent final : public Component {
   double h_;
   Eigen::VectorXd u_, y_, x0_, g_;
   bool started_ = false;
-  InputPort& pos_;
-  InputPort& vel_;
+  InputPort& enc_;
   InputPort& cmd_;
   OutputPort& estimate_;
-  OutputPort& joint_;
 };
 
 // ---------------------------------------------------------------------------------------
@@ -285,9 +332,9 @@ class ArmControllerBase : public Component {
       : Component(c),
         n_(n),
         ref_(add_input("reference", concat({names("q", n), names("dq", n), names("ddq", n), names("dddq", n)}))),
-        est_(add_input("estimate", concat({names("q", n), names("dq", n), names("ddq", n), names("dddq", n)}))),
-        joint_(add_input("joint_estimate", concat({names("tau", n), names("dtau", n), names("phi", n), names("dphi", n)}))),
-        cmd_(add_output("cmd", names("u", n))) {
+        est_(add_input("estimate", estimate_fields(n))),
+        cmd_(add_output("cmd", names("u", n), "JointCommand")) {
+    if (n > kMaxScenarioDof) c.params().fail("model", "has " + std::to_string(n) + " joints; at most " + std::to_string(kMaxScenarioDof));
     const Eigen::VectorXd z = Eigen::VectorXd::Zero(n);
     sample_ = {z, z, z, z};
     fb_ = alg::ArmFeedback::zero(n);
@@ -295,13 +342,13 @@ class ArmControllerBase : public Component {
 
   /// Reads the inputs; false until all of them have been produced.
   bool read() {
-    if (!ref_.valid() || !est_.valid() || !joint_.valid()) return false;
+    if (!ref_.valid() || !est_.valid()) return false;
     for (int i = 0; i < n_; ++i) {
       const auto a = static_cast<std::size_t>(i);
       const auto n = static_cast<std::size_t>(n_);
       sample_.q(i) = ref_[a], sample_.qd(i) = ref_[n + a], sample_.qdd(i) = ref_[2 * n + a], sample_.qddd(i) = ref_[3 * n + a];
       fb_.q(i) = est_[a], fb_.qd(i) = est_[n + a], fb_.qdd(i) = est_[2 * n + a], fb_.qddd(i) = est_[3 * n + a];
-      fb_.tau(i) = joint_[a], fb_.taud(i) = joint_[n + a], fb_.phi(i) = joint_[2 * n + a], fb_.phid(i) = joint_[3 * n + a];
+      fb_.tau(i) = est_[4 * n + a], fb_.taud(i) = est_[5 * n + a], fb_.phi(i) = est_[6 * n + a], fb_.phid(i) = est_[7 * n + a];
     }
     return true;
   }
@@ -314,7 +361,6 @@ class ArmControllerBase : public Component {
   alg::ArmFeedback fb_;
   InputPort& ref_;
   InputPort& est_;
-  InputPort& joint_;
   OutputPort& cmd_;
 };
 
@@ -377,8 +423,11 @@ class ArmCtPdComponent final : public ArmControllerBase {
 
 const ComponentRegistration kArmPlant{
     "flexible_joint_arm", ComponentKind::plant,
-    "n-DoF flexible-joint arm (paper 004), KDL dynamics, RK4 sub-steps; in cmd, out state, motor, torque",
+    "n-DoF flexible-joint arm (paper 004), KDL dynamics, RK4 sub-steps; in cmd, out truth/state",
     [](const ComponentConfig& c) { return std::make_unique<FlexibleJointArmComponent>(c); }};
+const ComponentRegistration kJointEncoders{
+    "joint_encoders", ComponentKind::sensor, "motor encoders: phi and phi' per joint with optional noise",
+    [](const ComponentConfig& c) { return std::make_unique<JointEncodersComponent>(c); }};
 const ComponentRegistration kArmReference{
     "arm_sine_reference", ComponentKind::reference, "joint sinusoids q_d with 3 derivatives (paper 004 eq. (59))",
     [](const ComponentConfig& c) { return std::make_unique<ArmSineReferenceComponent>(c); }};

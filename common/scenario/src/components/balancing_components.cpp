@@ -2,17 +2,22 @@
 // Angles travel in rad and rad/s; YAML keys with _deg / _degps are in degrees, as in the
 // paper's Table 1.
 //
-//   wheeled_inverted_pendulum (plant)  in cmd {torque}; out state {x, v, theta, theta_dot,
-//     x_ddot, theta_ddot}. body_mass, com_height, body_inertia, wheel_mass, wheel_radius,
+//   wheeled_inverted_pendulum (plant)  in cmd {torque} (WheelTorqueCommand); out truth/state
+//     {x, v, theta, theta_dot, x_ddot, theta_ddot} (BalancingTruth). body_mass, com_height, body_inertia, wheel_mass, wheel_radius,
 //     wheel_inertia, gravity, max_torque (WheeledPendulumParams defaults), theta0_deg (0),
 //     torque_noise_std (N m, 0: actuation noise drawn from the plant's seed), substeps (4, RK4)
-//   balancing_imu (sensor)  in state; out <sensor name> {gyro, acc_x, acc_z, acc_tilt, drift}
+//   balancing_imu (sensor)  in truth/state; out <sensor name> {gyro, acc_x, acc_z} (Imu: gyro
+//     about the wheel axis y, accelerometer x and z)
 //     gyro_noise_degps (0.5), gyro_range_degps (150), gamma1 (1/s, -0.01), gamma2_degps2 (0),
 //     drift_noise_psd (rad^2/s^3, 1e-6), initial_drift_degps (0.5), accel_noise (m/s^2,
 //     0.0343), accel_height (m, 0.12), accel_range (m/s^2, 19.62)
-//   motion_profile (reference)  out reference {x, v}: hold_time (1), ramp_time (1.5), speed (0.3)
-//   attitude_filter (estimator)  in imu {acc_tilt, gyro}, cmd {torque}; out <service name>
-//     {theta, theta_dot, drift, theta_std}. filter: ukf_augmented | ukf_additive | ekf;
+//   wheel_odometry (sensor)  in truth/state {x, v}; out <sensor name> {x, v} (TravelState: the
+//     wheel encoders' travel and speed); noise_std (m and m/s, 0)
+//   motion_profile (reference)  out reference {x, v} (TravelState): hold_time (1), ramp_time
+//     (1.5), speed (0.3)
+//   attitude_filter (estimator)  in imu {acc_x, acc_z, gyro}, cmd {torque}; out attitude
+//     {theta, theta_dot, drift, theta_std} (AttitudeEstimate; remap `attitude` to run a
+//     second filter beside it). filter: ukf_augmented | ukf_additive | ekf;
 //     measurement: observable (default) | paper; process_model: nonlinear (default) | linear;
 //     q_theta_deg (0.2), q_rate_degps (0.05), q_drift_degps (0.3), r_tilt_deg (0.2),
 //     r_gyro_degps (0.5), initial_theta_std_deg (0.5), initial_rate_std_degps (1),
@@ -20,9 +25,9 @@
 //     It runs one cycle per new IMU sample with dt = the IMU's period (run it at the IMU's
 //     rate or faster). Its model is the robot's plant parameters and the IMU's drift model, range and
 //     mounting height (the plant and the sensor it reads must be declared in the scenario).
-//   balancing_controller (controller)  in state {x, v} (wheel encoders), estimate {theta,
-//     theta_dot}, reference {x, v}; out cmd {torque}. poles (list of 4, [-2, -3, -9, -10]).
-//     Remap `estimate` to the designated filter's output (balance_ukf_ekf: r1/ukf).
+//   balancing_controller (controller)  in odometry {x, v} (wheel encoders), attitude {theta,
+//     theta_dot}, reference {x, v}; out cmd {torque} (WheelTorqueCommand). poles (list of 4,
+//     [-2, -3, -9, -10]).
 #include <cmath>
 #include <map>
 #include <memory>
@@ -113,7 +118,7 @@ class PendulumPlantComponent final : public Component {
         substeps_(c.params().optional<int>("substeps", 4)),
         rng_(c.seed),
         cmd_(add_input("cmd", {"torque"})),
-        out_(add_output("state", {"x", "v", "theta", "theta_dot", "x_ddot", "theta_ddot"})) {
+        out_(add_output("truth/state", {"x", "v", "theta", "theta_dot", "x_ddot", "theta_ddot"}, "BalancingTruth")) {
     if (substeps_ < 1) c.params().fail("substeps", "must be >= 1");
     state_.theta = degrees(c.params(), "theta0_deg", 0.0);
     acc_ = plant_.accelerations(state_, 0.0);
@@ -169,8 +174,8 @@ class BalancingImuComponent final : public Component {
         info_(imu_params(c.params())),
         imu_(info_.gyro, info_.acc, plant_of(c).gravity, c.seed),
         dt_(c.period()),
-        in_(add_input("state", {"theta", "theta_dot", "x_ddot", "theta_ddot"})),
-        out_(add_output(c.key, {"gyro", "acc_x", "acc_z", "acc_tilt", "drift"})) {
+        in_(add_input("truth/state", {"theta", "theta_dot", "x_ddot", "theta_ddot"})),
+        out_(add_output(c.key, {"gyro", "acc_x", "acc_z"}, "Imu")) {
     info_.period = dt_;
     imu_table()[out_.signal()] = info_;
   }
@@ -183,8 +188,6 @@ class BalancingImuComponent final : public Component {
     out_[0] = m.gyro;
     out_[1] = m.acc_x;
     out_[2] = m.acc_z;
-    out_[3] = m.acc_tilt;
-    out_[4] = m.drift;
   }
 
  private:
@@ -197,10 +200,31 @@ class BalancingImuComponent final : public Component {
 
 // ------------------------------------------------------------------------------ reference
 
+/// The wheel encoders: travel x and speed v, with optional Gaussian noise.
+class WheelOdometryComponent final : public Component {
+ public:
+  explicit WheelOdometryComponent(const ComponentConfig& c)
+      : Component(c),
+        noise_std_(optional_non_negative(c.params(), "noise_std")),
+        rng_(c.seed),
+        in_(add_input("truth/state", {"x", "v"})),
+        out_(add_output(c.key, {"x", "v"}, "TravelState")) {}
+
+  void step(int64_t /*k*/, double /*t*/) override {
+    for (std::size_t i = 0; i < 2; ++i) out_[i] = noise_std_ > 0.0 ? in_[i] + noise_std_ * rng_.normal() : in_[i];
+  }
+
+ private:
+  double noise_std_;
+  alg::Rng rng_;
+  InputPort& in_;
+  OutputPort& out_;
+};
+
 class MotionProfileComponent final : public Component {
  public:
   explicit MotionProfileComponent(const ComponentConfig& c)
-      : Component(c), profile_(params(c.params())), out_(add_output("reference", {"x", "v"})) {}
+      : Component(c), profile_(params(c.params())), out_(add_output("reference", {"x", "v"}, "TravelState")) {}
 
   void step(int64_t /*k*/, double t) override {
     const alg::MotionReference r = profile_.sample(t);
@@ -227,16 +251,17 @@ class AttitudeFilterComponent final : public Component {
  public:
   explicit AttitudeFilterComponent(const ComponentConfig& c)
       : Component(c),
-        imu_(add_input("imu", {"acc_tilt", "gyro"})),
+        imu_(add_input("imu", {"acc_x", "acc_z", "gyro"})),
         cmd_(add_input("cmd", {"torque"})),
-        out_(add_output(c.key, {"theta", "theta_dot", "drift", "theta_std"})),
+        out_(add_output("attitude", {"theta", "theta_dot", "drift", "theta_std"}, "AttitudeEstimate")),
         filter_(params(c, imu_.signal())) {}
 
   void step(int64_t /*k*/, double /*t*/) override {
     // Runs at its own rate; the torque is the command held since the previous step (k-1).
     if (imu_.valid() && imu_.sample().step != last_imu_step_) {
       last_imu_step_ = imu_.sample().step;
-      filter_.step(cmd_.valid() ? cmd_[0] : 0.0, imu_[0], imu_[1]);
+      // The accelerometer's tilt, atan2(-f_x, f_z), as ImuSensor defines it (paper 002 section 4.1).
+      filter_.step(cmd_.valid() ? cmd_[0] : 0.0, std::atan2(-imu_[0], imu_[1]), imu_[2]);
     }
     const auto& x = filter_.state();
     out_[0] = x(0);
@@ -308,10 +333,10 @@ class BalancingControllerComponent final : public Component {
       : Component(c),
         plant_(plant_of(c)),
         ctl_(controller_params(c.params()), plant_),
-        state_(add_input("state", {"x", "v"})),
-        est_(add_input("estimate", {"theta", "theta_dot"})),
+        state_(add_input("odometry", {"x", "v"})),
+        est_(add_input("attitude", {"theta", "theta_dot"})),
         ref_(add_input("reference", {"x", "v"})),
-        out_(add_output("cmd", {"torque"})) {}
+        out_(add_output("cmd", {"torque"}, "WheelTorqueCommand")) {}
 
   void step(int64_t /*k*/, double /*t*/) override {
     const alg::MotionReference r{ref_[0], ref_[1]};
@@ -329,18 +354,21 @@ class BalancingControllerComponent final : public Component {
 
 const ComponentRegistration kPlant{
     "wheeled_inverted_pendulum", ComponentKind::plant,
-    "two-wheeled balancing robot (paper 002 eq. (10)); in cmd {torque}, out state {x, v, theta, theta_dot, x_ddot, theta_ddot}",
+    "two-wheeled balancing robot (paper 002 eq. (10)); in cmd {torque}, out truth/state {x, v, theta, theta_dot, x_ddot, theta_ddot}",
     [](const ComponentConfig& c) { return std::make_unique<PendulumPlantComponent>(c); }};
 const ComponentRegistration kImu{
     "balancing_imu", ComponentKind::sensor,
-    "gyro with drift and saturation + 2-axis accelerometer tilt (paper 002 section 4.1); out {gyro, acc_x, acc_z, acc_tilt, drift}",
+    "gyro with drift and saturation + 2-axis accelerometer tilt (paper 002 section 4.1); out {gyro, acc_x, acc_z}",
     [](const ComponentConfig& c) { return std::make_unique<BalancingImuComponent>(c); }};
+const ComponentRegistration kOdometry{
+    "wheel_odometry", ComponentKind::sensor, "wheel encoders: travel and speed {x, v} with optional noise",
+    [](const ComponentConfig& c) { return std::make_unique<WheelOdometryComponent>(c); }};
 const ComponentRegistration kProfile{
     "motion_profile", ComponentKind::reference, "balance, then ramp to a speed; out reference {x, v}",
     [](const ComponentConfig& c) { return std::make_unique<MotionProfileComponent>(c); }};
 const ComponentRegistration kFilter{
     "attitude_filter", ComponentKind::estimator,
-    "tilt / rate / gyro-drift UKF (augmented, additive) or EKF (paper 002); out <name> {theta, theta_dot, drift, theta_std}",
+    "tilt / rate / gyro-drift UKF (augmented, additive) or EKF (paper 002); out attitude {theta, theta_dot, drift, theta_std}",
     [](const ComponentConfig& c) { return std::make_unique<AttitudeFilterComponent>(c); }};
 const ComponentRegistration kController{
     "balancing_controller", ComponentKind::controller,

@@ -1,10 +1,12 @@
 // Registry entries that fit any family: a measurement sensor, a constant command and a
 // circle reference. Parameters are documented in docs/scenarios.md.
 //
-//   measurement (sensor): reads `fields` of signal `source` (default: the robot's state),
-//     adds N(0, noise_std^2) to each field (Box-Muller on the sensor's own seed), then
-//     rounds each field to the nearest multiple of `quantum` (0: no quantisation).
-//     Output: `<robot>/<sensor name>` with the same fields.
+//   measurement (sensor): reads `fields` of signal `source` (default: the robot's
+//     truth/state), adds N(0, noise_std^2) to each field (Box-Muller on the sensor's own
+//     seed), then rounds each field to the nearest multiple of `quantum` (0: no
+//     quantisation). Output: `<robot>/<sensor name>` with the same fields, carried between
+//     processes as the IDL type `message` (for example PositionMeasurement: the fields must
+//     be members of it, docs/topics.md); without `message` it runs in `plexus sim` only.
 //   constant_command (controller): output cmd {v, omega} = the parameters v, omega.
 //   circle_reference (reference): output reference {x, y, dx, dy, ddx, ddy}: the circle of
 //     `radius` around (center_x, center_y), run at `speed` m/s (negative: clockwise)
@@ -26,8 +28,8 @@ class Measurement final : public Component {
         noise_std_(optional_non_negative(c.params(), "noise_std")),
         quantum_(optional_non_negative(c.params(), "quantum")),
         rng_(c.seed),
-        in_(add_input(c.params().optional<std::string>("source", "state"), required_names(c.params(), "fields", kMaxSignalFields))),
-        out_(add_output(c.key, in_.fields())) {}
+        in_(add_input(c.params().optional<std::string>("source", "truth/state"), required_names(c.params(), "fields", kMaxSignalFields))),
+        out_(add_output(c.key, in_.fields(), c.params().optional<std::string>("message", ""))) {}
 
   void step(int64_t /*k*/, double /*t*/) override {
     for (std::size_t i = 0; i < in_.fields().size(); ++i) {
@@ -52,7 +54,7 @@ class ConstantCommand final : public Component {
       : Component(c),
         v_(c.params().required<double>("v")),
         omega_(c.params().required<double>("omega")),
-        out_(add_output("cmd", {"v", "omega"})) {}
+        out_(add_output("cmd", {"v", "omega"}, "UnicycleCommand")) {}
 
   void step(int64_t /*k*/, double /*t*/) override {
     out_[0] = v_;
@@ -74,7 +76,7 @@ class CircleReference final : public Component {
         radius_(c.params().required<double>("radius")),
         speed_(c.params().required<double>("speed")),
         phase0_(c.params().optional<double>("phase0", 0.0)),
-        out_(add_output("reference", {"x", "y", "dx", "dy", "ddx", "ddy"})) {
+        out_(add_output("reference", {"x", "y", "dx", "dy", "ddx", "ddy"}, "PlanarReference")) {
     if (radius_ <= 0.0) c.params().fail("radius", "must be > 0 m");
     if (speed_ == 0.0) c.params().fail("speed", "must not be 0");
   }

@@ -1,36 +1,42 @@
 // Registry entries of the skid-steer family (paper 001; docs/algorithms/skid_steer.md has
 // every parameter with its default and the paper's value). Ports bind to <robot>/<port>
-// unless remapped.
+// unless remapped; each output names its IDL type (docs/topics.md).
 //
-//   skid_steer (plant)            in cmd {v_l, v_r}; out state {x, y, theta, y_l, y_r, x_G,
-//     terrain, a_z, v_l, v_r} (true ICRs, terrain id, body z-acceleration, applied track speeds)
+//   skid_steer (plant)            in cmd {v_l, v_r}; out truth/state {x, y, theta, y_l, y_r, x_G,
+//     terrain, a_z, v_l, v_r} (SkidSteerTruth: true ICRs, terrain id, body z-acceleration,
+//     applied track speeds)
 //     terrains: {name: {y_l, y_r, x_G, floor_rms, resonances: [[f_hz, zeta, rms], ...]}}
 //       (default: the paper's A concrete, B tile, C grass; ids in the order given)
 //     schedule: [[start_s, terrain name], ...] (default: the first terrain throughout)
 //     x0, y0, theta0 (0), vibration_reference_speed (0.5), vibration_speed_exponent (1), gravity (9.81)
-//   skid_steer_driver (controller) out cmd {v_l, v_r}
+//   skid_steer_driver (controller) out cmd {v_l, v_r} (TrackCommand)
 //     pattern: straight | circle | figure_eight | segments; speed (0.5), turn_rate (0.5),
 //     period (20), phase (0), track_width (0.4), segments: [[duration_s, v_l, v_r], ...], repeat (true)
-//   pose_sensor (sensor)          in state {x, y, theta}; out <sensor name> {x, y, theta}
+//   pose_sensor (sensor)          in truth/state {x, y, theta}; out <sensor name> {x, y, theta} (Pose2D)
 //     position_std (0.01 m), heading_std_deg (1), wrap_heading (true)
-//   track_speed_sensor (sensor)   in state {v_l, v_r}; out <sensor name> {v_l, v_r}; noise_std (0)
-//   imu_z_sensor (sensor)         in state {a_z}; out <sensor name> {a_z}; noise_std (0.02), bias (0)
-//   terrain_classifier (estimator) in imu {a_z}; out terrain_class {class, confidence, windows, votes}
+//   track_speed_sensor (sensor)   in truth/state {v_l, v_r}; out <sensor name> {v_l, v_r}
+//     (TrackSpeeds); noise_std (0)
+//   imu_z_sensor (sensor)         in truth/state {a_z}; out <sensor name> {a_z} (Imu, z axis);
+//     noise_std (0.02), bias (0)
+//   terrain_classifier (estimator) in imu {a_z}; out terrain {class, confidence, windows, votes}
+//     (TerrainClass)
 //     training_file (required; relative paths from the scenario file's folder), k (5),
 //     tie_rule (nearest), scaling (standardize), + the feature keys below. Run it at the IMU rate.
-//   terrain_recorder (estimator)  in imu {a_z}, state {terrain}; out recorder {written}
+//   terrain_recorder (estimator)  in imu {a_z}, truth/state {terrain}; out recorder {written}
+//     (in process only: it writes a training file under `plexus sim`)
 //     output (required; relative to the scenario file's folder), label (default: the plant's
 //     true terrain id), windows_per_class (15), class_names ([]), + the feature keys below
 //   feature keys: window_s (1.0), hop_s (= window_s), min_hz (1), max_hz (50), taper
 //     (rectangular), log10 (true)
 //   icr_ekf (estimator)           in wheels {v_l, v_r}, gps {x, y, theta}, and with
-//     adaptive_reset: terrain_class {class, windows}; out estimate {x, y, theta, y_l, y_r,
-//     x_G, resets, sd_y_l, sd_y_r, sd_x_G}
+//     adaptive_reset: terrain {class, windows}; out icr {x, y, theta, y_l, y_r,
+//     x_G, resets, sd_y_l, sd_y_r, sd_x_G} (IcrEstimate)
 //     q_diag, r_diag, p0_diag, p_b_diag (lists; paper eq. (21)-(22)), initial_icr ([1, -1, 1]),
 //     process_noise (dt_squared), enforce_track_sides (true), track_side_margin (0.01),
 //     adaptive_reset (false), consecutive_windows (2)
-//   icr_odometry (estimator)      in wheels {v_l, v_r}, truth {x, y, theta} (state; read once,
-//     at `start`), with model estimated: estimate {y_l, y_r, x_G}; out <service name> {x, y, theta}
+//   icr_odometry (estimator)      in wheels {v_l, v_r}, truth/state {x, y, theta} (read once,
+//     at `start`), with model estimated: icr {y_l, y_r, x_G}; out <service name> {x, y, theta}
+//     (Pose2D)
 //     model: no_slip (track_width 0.4) | fixed (y_l, y_r, x_G) | estimated; start (0 s)
 #include <cmath>
 #include <filesystem>
@@ -167,7 +173,7 @@ class SkidSteerPlantComponent final : public Component {
  public:
   explicit SkidSteerPlantComponent(const ComponentConfig& c)
       : Component(c), plant_(plant_params(c)), rng_(c.seed), cmd_(add_input("cmd", {"v_l", "v_r"})),
-        out_(add_output("state", {"x", "y", "theta", "y_l", "y_r", "x_G", "terrain", "a_z", "v_l", "v_r"})) {}
+        out_(add_output("truth/state", {"x", "y", "theta", "y_l", "y_r", "x_G", "terrain", "a_z", "v_l", "v_r"}, "SkidSteerTruth")) {}
 
   void step(int64_t k, double t) override {
     if (k > 0) {
@@ -217,7 +223,7 @@ alg::DrivingPatternParams driver_params(const YamlMap& p) {
 class DriverComponent final : public Component {
  public:
   explicit DriverComponent(const ComponentConfig& c)
-      : Component(c), pattern_(driver_params(c.params())), out_(add_output("cmd", {"v_l", "v_r"})) {}
+      : Component(c), pattern_(driver_params(c.params())), out_(add_output("cmd", {"v_l", "v_r"}, "TrackCommand")) {}
   void step(int64_t /*k*/, double t) override {
     const alg::TrackSpeeds u = pattern_.at(t);
     out_[0] = u.v_l;
@@ -234,8 +240,8 @@ class DriverComponent final : public Component {
 class PoseSensorComponent final : public Component {
  public:
   explicit PoseSensorComponent(const ComponentConfig& c)
-      : Component(c), sensor_(params(c.params())), rng_(c.seed), in_(add_input("state", {"x", "y", "theta"})),
-        out_(add_output(c.key, {"x", "y", "theta"})) {}
+      : Component(c), sensor_(params(c.params())), rng_(c.seed), in_(add_input("truth/state", {"x", "y", "theta"})),
+        out_(add_output(c.key, {"x", "y", "theta"}, "Pose2D")) {}
   void step(int64_t /*k*/, double /*t*/) override {
     const alg::Pose2 m = sensor_.measure(pose_of(in_), rng_);
     out_[0] = m.x;
@@ -261,7 +267,7 @@ class TrackSpeedSensorComponent final : public Component {
  public:
   explicit TrackSpeedSensorComponent(const ComponentConfig& c)
       : Component(c), sensor_(optional_non_negative(c.params(), "noise_std")), rng_(c.seed),
-        in_(add_input("state", {"v_l", "v_r"})), out_(add_output(c.key, {"v_l", "v_r"})) {}
+        in_(add_input("truth/state", {"v_l", "v_r"})), out_(add_output(c.key, {"v_l", "v_r"}, "TrackSpeeds")) {}
   void step(int64_t /*k*/, double /*t*/) override {
     const alg::TrackSpeeds m = sensor_.measure({in_[0], in_[1]}, rng_);
     out_[0] = m.v_l;
@@ -279,7 +285,7 @@ class ImuZSensorComponent final : public Component {
  public:
   explicit ImuZSensorComponent(const ComponentConfig& c)
       : Component(c), sensor_(optional_non_negative(c.params(), "noise_std", 0.02), c.params().optional<double>("bias", 0.0)),
-        rng_(c.seed), in_(add_input("state", {"a_z"})), out_(add_output(c.key, {"a_z"})) {}
+        rng_(c.seed), in_(add_input("truth/state", {"a_z"})), out_(add_output(c.key, {"a_z"}, "Imu")) {}
   void step(int64_t /*k*/, double /*t*/) override { out_[0] = sensor_.measure(in_[0], rng_); }
 
  private:
@@ -381,7 +387,7 @@ class TerrainClassifierComponent final : public Component {
  public:
   explicit TerrainClassifierComponent(const ComponentConfig& c)
       : Component(c), windows_(c), knn_(make_classifier(c, windows_.extractor)), in_(add_input("imu", {"a_z"})),
-        out_(add_output("terrain_class", {"class", "confidence", "windows", "votes"})) {
+        out_(add_output("terrain", {"class", "confidence", "windows", "votes"}, "TerrainClass")) {
     out_[0] = -1.0;  // no decision yet
   }
   void step(int64_t /*k*/, double /*t*/) override {
@@ -408,8 +414,8 @@ class TerrainRecorderComponent final : public Component {
   explicit TerrainRecorderComponent(const ComponentConfig& c)
       : Component(c), windows_(c), label_(c.params().optional<int>("label", -1)),
         per_class_(c.params().optional<int>("windows_per_class", 15)),
-        writer_(open(c, windows_.extractor)), in_(add_input("imu", {"a_z"})), truth_(add_input("state", {"terrain"})),
-        out_(add_output("recorder", {"written"})) {
+        writer_(open(c, windows_.extractor)), in_(add_input("imu", {"a_z"})), truth_(add_input("truth/state", {"terrain"})),
+        out_(add_output("recorder", {"written"}, "")) {  // writes a file: `plexus sim` only
     if (c.params().has("label") && label_ < 0) c.params().fail("label", "must be >= 0");
     if (per_class_ < 1) c.params().fail("windows_per_class", "must be >= 1");
     labels_.assign(windows_.window.window().size(), -1);
@@ -490,8 +496,9 @@ class IcrEkfComponent final : public Component {
       : Component(c), ekf_(ekf_params(c.params())), adaptive_(c.params().optional<bool>("adaptive_reset", false)),
         detector_(c.params().optional<int>("consecutive_windows", 2)), dt_(c.period()),
         wheels_(add_input("wheels", {"v_l", "v_r"})), gps_(add_input("gps", {"x", "y", "theta"})),
-        classes_(adaptive_ ? &add_input("terrain_class", {"class", "windows"}) : nullptr),
-        out_(add_output("estimate", {"x", "y", "theta", "y_l", "y_r", "x_G", "resets", "sd_y_l", "sd_y_r", "sd_x_G"})) {
+        classes_(adaptive_ ? &add_input("terrain", {"class", "windows"}) : nullptr),
+        out_(add_output("icr", {"x", "y", "theta", "y_l", "y_r", "x_G", "resets", "sd_y_l", "sd_y_r", "sd_x_G"},
+                        "IcrEstimate")) {
     write();
   }
 
@@ -545,9 +552,9 @@ class IcrOdometryComponent final : public Component {
  public:
   explicit IcrOdometryComponent(const ComponentConfig& c)
       : Component(c), model_(model(c.params())), start_(c.params().optional<double>("start", 0.0)), h_(c.period()),
-        wheels_(add_input("wheels", {"v_l", "v_r"})), truth_(add_input("truth", {"x", "y", "theta"})),
-        estimate_(model_ == Model::kEstimated ? &add_input("estimate", {"y_l", "y_r", "x_G"}) : nullptr),
-        out_(add_output(c.key, {"x", "y", "theta"})) {
+        wheels_(add_input("wheels", {"v_l", "v_r"})), truth_(add_input("truth/state", {"x", "y", "theta"})),
+        estimate_(model_ == Model::kEstimated ? &add_input("icr", {"y_l", "y_r", "x_G"}) : nullptr),
+        out_(add_output(c.key, {"x", "y", "theta"}, "Pose2D")) {
     const YamlMap& p = c.params();
     if (!(start_ >= 0.0)) p.fail("start", "must be >= 0 s");
     if (model_ == Model::kNoSlip) fixed_ = alg::no_slip_icr(p.optional<double>("track_width", 0.4));

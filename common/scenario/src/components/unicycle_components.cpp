@@ -122,7 +122,7 @@ class PositionSensorComponent final : public Component {
  public:
   explicit PositionSensorComponent(const ComponentConfig& c)
       : Component(c), sensor_(params(c)), rng_(sensor_.make_rng()),
-        in_(add_input("state", {"x", "y"})), out_(add_output(c.key, {"x", "y"})) {}
+        in_(add_input("truth/state", {"x", "y"})), out_(add_output(c.key, {"x", "y"}, "PositionMeasurement")) {}
 
   void step(int64_t /*k*/, double /*t*/) override {
     const Eigen::Vector2d m = sensor_.measure(vec2(in_), rng_);
@@ -161,7 +161,7 @@ class PositionSensorComponent final : public Component {
 class FigureEightComponent final : public Component {
  public:
   explicit FigureEightComponent(const ComponentConfig& c)
-      : Component(c), ref_(params(c.params())), out_(add_output("reference", {"x", "y", "dx", "dy", "ddx", "ddy"})) {
+      : Component(c), ref_(params(c.params())), out_(add_output("reference", {"x", "y", "dx", "dy", "ddx", "ddy"}, "PlanarReference")) {
     reference_min_speeds()[out_.signal()] = ref_.min_speed();
   }
 
@@ -193,7 +193,7 @@ class GeometricPathComponent final : public Component {
  public:
   explicit GeometricPathComponent(const ComponentConfig& c)
       : Component(c), path_(shape(c.params())), in_(add_input("position", {"x", "y"})),
-        out_(add_output("path", {"x", "y", "h", "hx", "hy", "hxx", "hxy", "hyy"})) {}
+        out_(add_output("path", {"x", "y", "h", "hx", "hy", "hxx", "hxy", "hyy"}, "PathSample")) {}
 
   void step(int64_t /*k*/, double /*t*/) override {
     const Eigen::Vector2d p = vec2(in_);
@@ -251,7 +251,7 @@ class HeadingObserverComponent final : public Component {
         base_step_(c.base_step),
         pos_(add_input("position", {"x", "y"})),
         cmd_(add_input("cmd", {"v", "omega"})),
-        out_(add_output("estimate", {"theta", "z3", "z4", "L"})) {}
+        out_(add_output("heading", {"theta", "z3", "z4", "L"}, "HeadingEstimate")) {}
 
   void step(int64_t /*k*/, double /*t*/) override {
     const double dt = clock_.advance(pos_, base_step_);
@@ -284,7 +284,7 @@ class VelocityHeadingObserverComponent final : public Component {
         base_step_(c.base_step),
         pos_(add_input("position", {"x", "y"})),
         cmd_(add_input("cmd", {"omega"})),
-        out_(add_output("estimate", {"theta", "speed", "z2", "z4"})) {}
+        out_(add_output("heading", {"theta", "speed", "z2", "z4"}, "HeadingEstimate")) {}
 
   void step(int64_t /*k*/, double /*t*/) override {
     const double dt = clock_.advance(pos_, base_step_);
@@ -325,7 +325,7 @@ const std::vector<std::string> kReferenceFields{"x", "y", "dx", "dy", "ddx", "dd
 class ReferenceFeedforward final : public Component {
  public:
   explicit ReferenceFeedforward(const ComponentConfig& c)
-      : Component(c), ref_(add_input("reference", kReferenceFields)), out_(add_output("cmd", {"v", "omega"})) {}
+      : Component(c), ref_(add_input("reference", kReferenceFields)), out_(add_output("cmd", {"v", "omega"}, "UnicycleCommand")) {}
 
   void step(int64_t /*k*/, double /*t*/) override {
     const alg::ReferenceSample r = reference_sample(ref_);
@@ -346,11 +346,11 @@ class TrajectoryTrackingComponent final : public Component {
         output_feedback_(is_second(c.params(), "feedback", "state", "output")),
         ctl_(params(c.params())),
         ref_(add_input("reference", kReferenceFields)),
-        pos_(add_input(output_feedback_ ? "position" : "state",
+        pos_(add_input(output_feedback_ ? "position" : "truth/state",
                        output_feedback_ ? std::vector<std::string>{"x", "y"}
                                         : std::vector<std::string>{"x", "y", "theta"})),
-        est_(output_feedback_ ? &add_input("estimate", {"z3", "z4"}) : nullptr),
-        out_(add_output("cmd", {"v", "omega"})) {
+        est_(output_feedback_ ? &add_input("heading", {"z3", "z4"}) : nullptr),
+        out_(add_output("cmd", {"v", "omega"}, "UnicycleCommand")) {
     check_gain_condition(c);
   }
 
@@ -411,8 +411,8 @@ class PathFollowingComponent final : public Component {
         u1_(c.params().required<double>("u1")),
         ctl_(params(c.params())),
         path_(add_input("path", {"h", "hx", "hy", "hxx", "hxy", "hyy"})),
-        vel_(observer_ ? add_input("estimate", {"z2", "z4"}) : add_input("state", {"theta"})),
-        out_(add_output("cmd", {"v", "omega"})) {
+        vel_(observer_ ? add_input("heading", {"z2", "z4"}) : add_input("truth/state", {"theta"})),
+        out_(add_output("cmd", {"v", "omega"}, "UnicycleCommand")) {
     if (!(std::isfinite(u1_) && u1_ != 0.0)) c.params().fail("u1", "must be finite and != 0 m/s");
   }
 

@@ -28,7 +28,7 @@ class UnicyclePlantComponent final : public Component {
         omega_noise_(optional_non_negative(c.params(), "omega_noise_std")),
         rng_(c.seed),
         cmd_(add_input("cmd", {"v", "omega"})),
-        out_(add_output("state", {"x", "y", "theta"})) {}
+        out_(add_output("truth/state", {"x", "y", "theta"}, "Pose2D")) {}
 
   void step(int64_t k, double /*t*/) override {
     if (k > 0 && cmd_.valid()) {

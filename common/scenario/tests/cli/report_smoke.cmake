@@ -5,7 +5,7 @@ execute_process(COMMAND ${PLEXUS} sim ${SCENARIO} --quiet --out ${OUT} RESULT_VA
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "plexus sim: exit ${rc}: ${err}")
 endif()
-foreach(f scenario.resolved.yaml metrics.json summary.md signals/r1.state.csv)
+foreach(f scenario.resolved.yaml metrics.json summary.md signals/r1.truth.state.csv)
   if(NOT EXISTS ${OUT}/${f})
     message(FATAL_ERROR "run folder lacks ${f}")
   endif()

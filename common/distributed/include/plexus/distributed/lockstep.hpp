@@ -5,11 +5,13 @@
 //  - the clock (in `plexus launch`) publishes ClockStep k on `lockstep/clock`;
 //  - every host runs base step k of its components (StepExecutor) once the clock has
 //    published a step >= k - lead_steps (it may run ahead of the clock by that much). An
-//    input produced in another process is read from `sig/<signal>` (plexus::msg::Signal,
-//    bit-exact): the host waits for exactly the sample the in-process executor would use
+//    input produced in another process is read from the topic named like the signal
+//    (`<robot>/<topic>`), as the IDL message type its producer declares (wire.hpp; doubles
+//    carried bit-exact, the step in the header's data time): the host waits for exactly the
+//    sample the in-process executor would use
 //    (the latest one due at step k, or k-1 for a delayed input), so the lead changes the
 //    speed, never the result;
-//  - every output sample is published on `sig/<signal>`;
+//  - every output sample is published on its topic;
 //  - the clock records every signal; when all samples due at step k have arrived, it
 //    publishes ClockStep k+1. After the last step it publishes the end-of-run step.
 // The same scenario and seed therefore give the same log and digest as `plexus sim`,
@@ -28,6 +30,7 @@
 #include "plexus/runtime/participant.hpp"
 #include "plexus/scenario/executor.hpp"
 #include "plexus/scenario/scenario.hpp"
+#include "plexus/distributed/wire.hpp"
 #include "plexus/scenario/step_executor.hpp"
 
 namespace plexus::distributed {
@@ -35,8 +38,11 @@ namespace plexus::distributed {
 /// ClockStep::step_index that ends the run.
 inline constexpr uint64_t kEndOfRun = ~uint64_t{0};
 
-/// DDS topic carrying a scenario signal (both clock modes): "sig/<signal>".
+/// DDS topic carrying a scenario signal (both clock modes): the signal's name,
+/// `<robot>/<topic>` (docs/topics.md).
 std::string signal_topic(const std::string& signal);
+/// The scenario's base step in ns, as every host converts step <-> header data time.
+int64_t step_ns(const scenario::Scenario& sc);
 inline const char* const kClockTopic = "lockstep/clock";
 
 /// Largest lead_steps: a producer can then be at most this many steps ahead of a consumer,
@@ -86,9 +92,10 @@ class LockstepClock {
   /// LockstepError naming what is missing after `timeout_s`.
   void wait_ready(int hosts, double timeout_s, const std::atomic<bool>& stop);
 
-  /// Called with every signal sample the clock takes (signal index, the message as received,
-  /// its metadata), for `plexus launch --record`.
-  using SampleTap = std::function<void(std::size_t signal, const msg::Signal&, const rt::SampleMeta&)>;
+  /// Called with every signal sample the clock takes (signal index, the message type, the
+  /// message as received, its metadata), for `plexus launch --record`.
+  using SampleTap = std::function<void(std::size_t signal, const msg::TypeSupport& type, const void* message,
+                                       const rt::SampleMeta&)>;
   /// Runs every step and returns the log (the same as `plexus sim`'s). Throws LockstepError.
   scenario::RunLog run(const std::atomic<bool>& stop, const scenario::StepObserver& observer = {},
                        const SampleTap& tap = {});

@@ -8,9 +8,14 @@
 // service in lockstep mode: the runner fills the inputs before `step` and publishes the
 // outputs after it, so the component never knows where its data comes from.
 //
-// Ports are named relative to the component's robot: port `state` of a component on
-// robot `r1` is the signal `r1/state`, unless the scenario remaps it (`remap: {state:
-// other/state}`) or the port name already contains a '/'.
+// Ports are named relative to the component's robot: port `position` of a component on
+// robot `r1` is the signal `r1/position`, and port `truth/state` is `r1/truth/state`,
+// unless the scenario remaps it (`remap: {position: other/position}`). A port name with a
+// '/' that does not start with `truth/` names a signal of its own (`other/state`).
+//
+// Every output names the IDL message type that carries it between processes (the topic's
+// type, docs/topics.md); its fields are matched to that type's members by name
+// (common/distributed/src/wire_types.cpp).
 #pragma once
 
 #include <cstdint>
@@ -86,8 +91,14 @@ class InputPort : public Port {
 /// An output: the component writes every field at each of its steps.
 class OutputPort : public Port {
  public:
-  using Port::Port;
+  OutputPort(std::string port, std::string signal, std::vector<std::string> fields, std::string message)
+      : Port(std::move(port), std::move(signal), std::move(fields)), message_(std::move(message)) {}
   double& operator[](std::size_t i) { return sample_.values[i]; }
+  /// The IDL message type that carries it between processes; empty: in process only.
+  const std::string& message() const { return message_; }
+
+ private:
+  std::string message_;
 };
 
 class Component {
@@ -114,8 +125,9 @@ class Component {
  protected:
   /// Declares an input port that reads `fields` (by name) of the signal the port binds to.
   InputPort& add_input(const std::string& port, std::vector<std::string> fields);
-  /// Declares an output port producing a signal with these fields.
-  OutputPort& add_output(const std::string& port, std::vector<std::string> fields);
+  /// Declares an output port producing a signal with these fields, carried between
+  /// processes as the IDL message type `message` ("Pose2D"; empty: in process only).
+  OutputPort& add_output(const std::string& port, std::vector<std::string> fields, std::string message);
 
  private:
   std::string name_;

@@ -3,8 +3,8 @@
 // A scenario lists its metrics:
 //
 //   metrics:
-//     - {name: final_error_m, type: error_final, signal: r1/state, reference: r1/reference}
-//     - {name: steady_max_error_m, type: error_max, signal: r1/state, reference: r1/reference, from: 100}
+//     - {name: final_error_m, type: error_final, signal: r1/truth/state, reference: r1/reference}
+//     - {name: steady_max_error_m, type: error_max, signal: r1/truth/state, reference: r1/reference, from: 100}
 //
 // `name` is what metrics.json and expectations call it (default: the type); the other
 // keys are the type's parameters. A family adds a metric type in one file under

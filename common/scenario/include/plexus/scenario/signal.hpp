@@ -1,10 +1,11 @@
 // Signals: the named, fixed-size numeric records that components exchange.
 //
-// A signal is named `<robot>/<topic>` (for example `r1/state`), has an ordered list of
+// A signal is named `<robot>/<topic>` (for example `r1/truth/state`), has an ordered list of
 // field names (for example x, y, theta) and is produced by exactly one component at
 // that component's rate. Its value at one step is a SignalSample: at most
 // kMaxSignalFields doubles plus the base step at which it was produced. These are
-// plain records, not DDS types: the distributed runtime maps them onto its messages.
+// plain records, not DDS types: the distributed runtime maps each one onto the typed IDL
+// message its producer names (SignalSpec::message, docs/topics.md).
 #pragma once
 
 #include <array>
@@ -15,8 +16,9 @@
 
 namespace plexus::scenario {
 
-/// Largest number of fields in one signal.
-inline constexpr std::size_t kMaxSignalFields = 16;
+/// Largest number of fields in one signal: an arm estimate of 16 joints has 8 per joint
+/// (plexus::msg::LinkJointState).
+inline constexpr std::size_t kMaxSignalFields = 128;
 
 /// The value of a signal at one base step.
 struct SignalSample {
@@ -31,6 +33,9 @@ struct SignalSpec {
   int64_t period_steps = 1;         ///< produced every period_steps base steps
   std::string producer;             ///< name of the component that produces it
   bool plant_state = false;         ///< produced by a plant: part of the run digest
+  /// The IDL message type that carries it between processes ("PositionMeasurement", see
+  /// idl/plexus/msg/); empty for a signal that can only run in process (`plexus sim`).
+  std::string message;
 };
 
 }  // namespace plexus::scenario

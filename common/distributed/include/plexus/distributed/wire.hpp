@@ -1,0 +1,133 @@
+// The wire contract: how a scenario signal travels between processes as its typed IDL
+// message (docs/topics.md).
+//
+// Every output port names an IDL message type (SignalSpec::message, "PositionMeasurement").
+// Each type is described once (wire_types.cpp) as a list of slots: the name of a signal
+// field and the message member (and array element) it occupies, with the member's physical
+// range. A signal binds its fields to slots by name, so one description serves every
+// component that produces or reads that type, and a program written against idl/ alone
+// sees ordinary named members (x, y; position[i]), never a positional array.
+//
+// The step a sample belongs to travels in its header: data_time_ns = step * step_ns (sim
+// time in lockstep; a native producer in realtime sets its own clock there, and consumers
+// use only differences). Members the signal does not use are zero.
+//
+// Decoding is the edge check of every input (DESIGN.md "Bad input"): a sample with a
+// negative time, a non-finite or out-of-range member or a wrong joint count is refused
+// whole and the destination left untouched, so estimator state never sees it.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "plexus/msg/messages.hpp"
+#include "plexus/runtime/participant.hpp"
+#include "plexus/scenario/signal.hpp"
+
+namespace plexus::distributed {
+
+/// The message member one signal field occupies.
+struct WireSlot {
+  enum class Kind : uint8_t { f64, i32, u32, u16 };
+  std::string field;              ///< the field name components use ("x", "q3")
+  Kind kind = Kind::f64;
+  void* (*member)(void* message) = nullptr;  ///< the member's address (an array's first element)
+  std::size_t index = 0;          ///< element within an array member
+  double min = 0.0, max = 0.0;    ///< physical range, inclusive (the edge check)
+  const char* unit = "";          ///< for docs and errors
+};
+
+/// One IDL message type as signals see it.
+struct WireType {
+  const char* name = "";                          ///< short IDL name ("Pose2D")
+  const msg::TypeSupport* support = nullptr;
+  std::vector<WireSlot> slots;
+  /// Joint messages: the member holding the number of valid array entries.
+  uint16_t* (*count)(void* message) = nullptr;
+};
+
+/// Every message type a signal can travel as.
+const std::vector<WireType>& wire_types();
+/// A type by short ("Pose2D") or scoped ("plexus::msg::Pose2D") name; nullptr if none.
+const WireType* find_wire_type(std::string_view name);
+
+/// Why a received sample was refused.
+enum class Rejection { none, negative_time, non_finite, out_of_range, wrong_count };
+const char* to_string(Rejection r);
+
+/// Owning pointer to a message object of a type chosen at run time.
+using MessagePtr = std::unique_ptr<void, void (*)(void*)>;
+
+/// A signal's fields bound to the members of its message type.
+class WireSignal {
+ public:
+  /// Throws InputError naming the signal and its producer when it has no message type, the
+  /// type is unknown, or a field is not a member of it.
+  WireSignal(const scenario::SignalSpec& spec, int64_t step_ns);
+
+  const scenario::SignalSpec& spec() const { return *spec_; }
+  const WireType& type() const { return *type_; }
+  const msg::TypeSupport& support() const { return *type_->support; }
+  MessagePtr make_message() const;
+
+  /// Writes the sample into `message`: fields, joint count, header data time. Leaves the
+  /// header's origin, sequence number and publish time alone.
+  void encode(const scenario::SignalSample& s, void* message) const;
+  /// Reads `message` into `s`, or says why not (then `s` is untouched); `bad_field` is the
+  /// index of the offending field for non_finite and out_of_range.
+  Rejection decode(const void* message, scenario::SignalSample& s, std::size_t& bad_field) const;
+  /// The value of field i in `message` (for error messages).
+  double value(const void* message, std::size_t field) const;
+
+ private:
+  const scenario::SignalSpec* spec_;
+  const WireType* type_;
+  std::vector<const WireSlot*> slots_;  // by field
+  uint16_t count_ = 0;                  // joint messages: entries used
+  int64_t step_ns_;
+};
+
+/// Publishes one signal as its message type. publish() stamps the header as
+/// rt::Publisher<T> does (sequence number, publish time, origin if 0).
+class WirePublisher {
+ public:
+  WirePublisher(rt::Participant& p, const std::string& topic, const rt::QosProfile& qos, const WireSignal& wire);
+  /// `origin_ns`: the header's origin time (0: this sample starts a chain, stamped now).
+  /// False if the vendor refused the sample.
+  bool publish(const scenario::SignalSample& s, int64_t origin_ns);
+  /// The origin time written into the last published sample.
+  int64_t last_origin() const { return last_origin_; }
+  int matched_count() const { return writer_->matched_count(); }
+
+ private:
+  const WireSignal* wire_;
+  std::unique_ptr<rt::WriterBackend> writer_;
+  MessagePtr msg_;
+  uint64_t seq_ = 0;
+  int64_t last_origin_ = 0;
+};
+
+/// Takes one signal's messages. take() returns the raw message; the caller decodes it
+/// through an InputGuard (counted refusals) or WireSignal::decode.
+class WireSubscriber {
+ public:
+  WireSubscriber(rt::Participant& p, const std::string& topic, const rt::QosProfile& qos, const WireSignal& wire);
+  /// Oldest unread message, or nullptr. Valid until the next take().
+  const void* take(rt::SampleMeta* meta = nullptr);
+  bool wait(int64_t timeout_ns) { return reader_->wait(timeout_ns); }
+  int matched_count() const { return reader_->matched_count(); }
+  const WireSignal& wire() const { return *wire_; }
+  /// The header of the message take() returned.
+  const msg::StampHeader& header() const;
+
+ private:
+  const WireSignal* wire_;
+  std::unique_ptr<rt::ReaderBackend> reader_;
+  MessagePtr msg_;
+};
+
+}  // namespace plexus::distributed

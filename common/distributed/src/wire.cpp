@@ -1,0 +1,150 @@
+#include "plexus/distributed/wire.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "plexus/base/clock.hpp"
+#include "plexus/base/input_error.hpp"
+
+namespace plexus::distributed {
+namespace {
+
+double read(const WireSlot& slot, void* message) {
+  void* m = slot.member(message);
+  switch (slot.kind) {
+    case WireSlot::Kind::f64: return static_cast<double*>(m)[slot.index];
+    case WireSlot::Kind::i32: return static_cast<double>(static_cast<int32_t*>(m)[slot.index]);
+    case WireSlot::Kind::u32: return static_cast<double>(static_cast<uint32_t*>(m)[slot.index]);
+    case WireSlot::Kind::u16: return static_cast<double>(static_cast<uint16_t*>(m)[slot.index]);
+  }
+  return 0.0;
+}
+
+void write(const WireSlot& slot, void* message, double v) {
+  void* m = slot.member(message);
+  switch (slot.kind) {
+    case WireSlot::Kind::f64: static_cast<double*>(m)[slot.index] = v; break;
+    case WireSlot::Kind::i32: static_cast<int32_t*>(m)[slot.index] = static_cast<int32_t>(v); break;
+    case WireSlot::Kind::u32: static_cast<uint32_t*>(m)[slot.index] = static_cast<uint32_t>(v); break;
+    case WireSlot::Kind::u16: static_cast<uint16_t*>(m)[slot.index] = static_cast<uint16_t>(v); break;
+  }
+}
+
+/// The field names a type accepts, for errors ("q1.." stands for q1 to q16).
+std::string join_fields(const WireType& t) {
+  std::string out;
+  for (const auto& s : t.slots) {
+    if (s.index > 0 && t.count) continue;
+    out += (out.empty() ? "" : ", ") + s.field + (t.count && s.kind == WireSlot::Kind::f64 ? ".." : "");
+  }
+  return out;
+}
+
+}  // namespace
+
+const char* to_string(Rejection r) {
+  switch (r) {
+    case Rejection::none: return "accepted";
+    case Rejection::negative_time: return "negative data time";
+    case Rejection::non_finite: return "non-finite field";
+    case Rejection::out_of_range: return "field out of its physical range";
+    case Rejection::wrong_count: return "wrong joint count";
+  }
+  return "?";
+}
+
+const WireType* find_wire_type(std::string_view name) {
+  constexpr std::string_view scope = "plexus::msg::";
+  if (name.substr(0, scope.size()) == scope) name.remove_prefix(scope.size());
+  for (const auto& t : wire_types())
+    if (name == t.name) return &t;
+  return nullptr;
+}
+
+WireSignal::WireSignal(const scenario::SignalSpec& spec, int64_t step_ns) : spec_(&spec), step_ns_(step_ns) {
+  const std::string who = "signal '" + spec.name + "' (produced by '" + spec.producer + "')";
+  if (spec.message.empty())
+    throw InputError(who + " has no IDL message type, so it cannot cross a process boundary; run its producer and "
+                           "its consumers in one process (a `process` group) or use `plexus sim`");
+  type_ = find_wire_type(spec.message);
+  if (!type_) throw InputError(who + ": '" + spec.message + "' is not a message type of idl/plexus/msg");
+  // Where each field lands in a message, to refuse two fields filling one member (aliases
+  // such as z2 and z3, which both name HeadingEstimate.direction[0]).
+  const MessagePtr probe = make_message();
+  std::vector<const void*> places;
+  std::size_t joints = 0;
+  for (const auto& f : spec.fields) {
+    const auto it = std::find_if(type_->slots.begin(), type_->slots.end(), [&](const WireSlot& s) { return s.field == f; });
+    if (it == type_->slots.end())
+      throw InputError(who + ": field '" + f + "' is not a member of " + type_->name + " (its fields: " +
+                       join_fields(*type_) + "; docs/topics.md)");
+    const void* place = static_cast<const char*>(it->member(probe.get())) + it->index * sizeof(double);
+    if (std::find(places.begin(), places.end(), place) != places.end())
+      throw InputError(who + ": field '" + f + "' fills a member of " + type_->name + " that another of its fields fills");
+    places.push_back(place);
+    slots_.push_back(&*it);
+    joints = std::max(joints, it->index + 1);
+  }
+  if (type_->count) count_ = static_cast<uint16_t>(joints);
+}
+
+MessagePtr WireSignal::make_message() const { return {support().create(), support().destroy}; }
+
+void WireSignal::encode(const scenario::SignalSample& s, void* message) const {
+  for (std::size_t i = 0; i < slots_.size(); ++i) write(*slots_[i], message, s.values[i]);
+  if (type_->count) *type_->count(message) = count_;
+  support().header(message)->data_time_ns(s.step * step_ns_);
+}
+
+Rejection WireSignal::decode(const void* message, scenario::SignalSample& s, std::size_t& bad_field) const {
+  void* m = const_cast<void*>(message);  // the accessors are the generated non-const ones; nothing is written
+  const int64_t t = support().header(m)->data_time_ns();
+  if (t < 0) return Rejection::negative_time;
+  if (type_->count && *type_->count(m) != count_) return Rejection::wrong_count;
+  for (std::size_t i = 0; i < slots_.size(); ++i) {
+    const double v = read(*slots_[i], m);
+    if (!std::isfinite(v)) {
+      bad_field = i;
+      return Rejection::non_finite;
+    }
+    if (v < slots_[i]->min || v > slots_[i]->max) {
+      bad_field = i;
+      return Rejection::out_of_range;
+    }
+  }
+  s.step = t / step_ns_;
+  for (std::size_t i = 0; i < slots_.size(); ++i) s.values[i] = read(*slots_[i], m);
+  std::fill(s.values.begin() + static_cast<std::ptrdiff_t>(slots_.size()), s.values.end(), 0.0);
+  return Rejection::none;
+}
+
+double WireSignal::value(const void* message, std::size_t field) const {
+  return read(*slots_.at(field), const_cast<void*>(message));
+}
+
+// --- endpoints ----------------------------------------------------------------
+
+WirePublisher::WirePublisher(rt::Participant& p, const std::string& topic, const rt::QosProfile& qos,
+                             const WireSignal& wire)
+    : wire_(&wire), writer_(p.make_writer(wire.support(), topic, qos)), msg_(wire.make_message()) {}
+
+bool WirePublisher::publish(const scenario::SignalSample& s, int64_t origin_ns) {
+  wire_->encode(s, msg_.get());
+  msg::StampHeader& h = *wire_->support().header(msg_.get());
+  h.seq_num(++seq_);
+  const int64_t now = wall_time_ns();
+  h.publish_time_ns(now);
+  h.origin_time_ns(origin_ns != 0 ? origin_ns : now);
+  last_origin_ = h.origin_time_ns();
+  return writer_->write(msg_.get());
+}
+
+WireSubscriber::WireSubscriber(rt::Participant& p, const std::string& topic, const rt::QosProfile& qos,
+                               const WireSignal& wire)
+    : wire_(&wire), reader_(p.make_reader(wire.support(), topic, qos)), msg_(wire.make_message()) {}
+
+const void* WireSubscriber::take(rt::SampleMeta* meta) { return reader_->take(msg_.get(), meta) ? msg_.get() : nullptr; }
+
+const msg::StampHeader& WireSubscriber::header() const { return *wire_->support().header(msg_.get()); }
+
+}  // namespace plexus::distributed
