@@ -23,3 +23,17 @@ foreach(variant "fast;203" "cyclone;204")
   set_tests_properties(repro.realtime.arm_vdc_ekf_1khz_${vendor} PROPERTIES
                        LABELS "repro;realtime;multiprocess" TIMEOUT 120 RUN_SERIAL TRUE)
 endforeach()
+
+# Issue 12, the contract on the wire: a native plant built from idl/ alone (Cyclone C with
+# idlc's output; Fast DDS C++ with fastddsgen's type) closes the RFID loop with the plexus
+# observer, controller and reference in realtime, and paper 000's bounds hold.
+foreach(variant "cyclone;cyclone;208" "fast;fast;209")
+  list(POP_FRONT variant native vendor domain)
+  add_test(NAME repro.realtime.native_plant_rfid_${native}
+           COMMAND ${PROJECT_SOURCE_DIR}/tests/scripts/native_plant_loop.sh $<TARGET_FILE:plexus>
+                   $<TARGET_FILE:native_unicycle_plant_${native}> ${vendor} ${domain}
+                   ${CMAKE_BINARY_DIR}/test-runs/realtime/native_plant_rfid_${native}
+                   ${PROJECT_SOURCE_DIR}/deploy/scenarios/wmr_output_feedback_rfid.yaml)
+  set_tests_properties(repro.realtime.native_plant_rfid_${native} PROPERTIES
+                       LABELS "repro;realtime;multiprocess;slow;interop" TIMEOUT 300 RUN_SERIAL TRUE)
+endforeach()

@@ -125,10 +125,9 @@ int run_launch(const LaunchOptions& o) {
   init_logging("launch", "", o.quiet ? "error" : "warn");
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
-  std::vector<std::string> common{o.scenario, "--domain", std::to_string(domain), "--qos-file", qos_file,
+  std::vector<std::string> common{"--domain", std::to_string(domain), "--qos-file", qos_file,
                                   "--timeout", std::to_string(o.timeout), "--interface", net.interface_address,
                                   "--peers", peers};
-  for (const auto& s : o.sets) common.insert(common.end(), {"--set", s});
 
   rt::ParticipantOptions po;
   po.vendor = rt::parse_vendor(vendor);
@@ -171,10 +170,25 @@ int run_launch(const LaunchOptions& o) {
   };
   FaultClock fault;
   std::atomic<bool> run_active{true};
+  // Each process gets its own part of the scenario and builds only that (launch_plan.hpp).
+  const std::filesystem::path parts_dir = std::filesystem::path(run_dir) / "parts";
+  std::error_code ec;
+  std::filesystem::create_directories(parts_dir, ec);
+  if (ec) throw InputError(parts_dir.string() + ": cannot create the folder: " + ec.message());
   for (auto& p : procs) {
-    std::vector<std::string> args = common;
-    args.insert(args.end(), p.select.begin(), p.select.end());
+    std::string file_name = p.name;
+    std::replace(file_name.begin(), file_name.end(), ' ', '_');
+    const std::string part_file = (parts_dir / (file_name + ".yaml")).string();
+    YAML::Emitter yaml;
+    yaml << part_document(sc, p);
+    std::FILE* f = std::fopen(part_file.c_str(), "w");
+    const bool written = f && std::fputs(yaml.c_str(), f) >= 0;
+    if (!(f && std::fclose(f) == 0 && written))
+      throw InputError(part_file + ": cannot write this process's part of the scenario");
+    std::vector<std::string> args{"--part", part_file, "--service", p.service()};
+    args.insert(args.end(), common.begin(), common.end());
     args.insert(args.end(), {"--dds", p.vendor, "--mode", realtime ? "realtime" : "lockstep"});
+    if (realtime) args.push_back("--start-signal");
     p.args = args;
     start_process(p);
   }

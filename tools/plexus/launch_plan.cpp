@@ -2,10 +2,13 @@
 
 #include <algorithm>
 #include <map>
+#include <filesystem>
 #include <set>
+#include <sstream>
 
 #include "plexus/base/input_error.hpp"
 #include "plexus/distributed/service_catalog.hpp"
+#include "plexus/scenario/step_executor.hpp"
 
 namespace plexus::cli {
 namespace {
@@ -91,6 +94,55 @@ std::vector<Process> plan(const scenario::Scenario& sc, const std::string& host)
   }
   procs.insert(procs.begin(), sims.begin(), sims.end());
   return procs;
+}
+
+YAML::Node part_document(const scenario::Scenario& sc, const Process& p) {
+  const YAML::Node& r = sc.resolved;
+  YAML::Node part(YAML::NodeType::Map);
+  for (const char* key : {"name", "description", "duration", "step", "seed", "clock"})
+    if (r[key]) part[key] = YAML::Clone(r[key]);
+  // Relative file parameters (a training file) stay relative to the original scenario.
+  part["base_dir"] = std::filesystem::absolute(sc.base_dir.empty() ? "." : sc.base_dir).lexically_normal().string();
+  const std::set<std::string> selected = [&] {
+    std::set<std::string> out;
+    std::stringstream ss(p.select.back());
+    for (std::string item; std::getline(ss, item, ',');) out.insert(item);
+    return out;
+  }();
+  const bool robots = p.select.front() == "--robots";
+  std::vector<bool> hosted(sc.components.size(), false);
+  for (std::size_t i = 0; i < sc.components.size(); ++i) {
+    const auto& c = sc.components[i];
+    const std::string& name = c.component->name();
+    const bool physical = c.kind == scenario::ComponentKind::plant || c.kind == scenario::ComponentKind::sensor;
+    hosted[i] = robots ? physical && selected.count(name.substr(0, name.find('/'))) : !physical && selected.count(name);
+  }
+  if (robots) {
+    for (const auto& robot : selected) {
+      YAML::Node section = YAML::Clone(r["robots"][robot]);
+      section.remove("host");
+      part["robots"][robot] = section;
+    }
+  } else {
+    for (const auto& service : selected) {
+      YAML::Node section = YAML::Clone(r["services"][service]);
+      section.remove("host");
+      part["services"][service] = section;
+    }
+  }
+  // The inputs other processes produce: their schedule, as the whole scenario has it.
+  const scenario::StepExecutor wiring(const_cast<scenario::Scenario&>(sc), hosted);
+  for (std::size_t s : wiring.remote_inputs()) {
+    const auto& spec = wiring.signals()[s];
+    const auto producer = std::find_if(sc.components.begin(), sc.components.end(),
+                                       [&](const auto& c) { return c.component->name() == spec.producer; });
+    YAML::Node in(YAML::NodeType::Map);
+    in["period_steps"] = spec.period_steps;
+    in["stage"] = scenario::to_string(producer->kind);
+    if (!producer->qos.empty()) in["qos"] = producer->qos;
+    part["inputs"][spec.name] = in;
+  }
+  return part;
 }
 
 nlohmann::ordered_json process_table(const std::vector<Process>& procs) {

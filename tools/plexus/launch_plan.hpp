@@ -5,6 +5,7 @@
 #include <sys/types.h>
 
 #include <nlohmann/json.hpp>
+#include <yaml-cpp/yaml.h>
 #include <string>
 #include <vector>
 
@@ -34,6 +35,12 @@ struct Process {
 /// Throws InputError when the services of a group disagree on host, vendor or restart policy,
 /// or a group takes another service's name.
 std::vector<Process> plan(const scenario::Scenario& sc, const std::string& host);
+
+/// A process's part of the scenario, as a document its executable loads (--part): the
+/// top-level settings, its own robots or services (their resolved sections, derived seeds
+/// written in, `host` left out) and `inputs:`, the schedule (period, stage, QoS profile) of
+/// every signal it reads that another process produces. It builds nothing else.
+YAML::Node part_document(const scenario::Scenario& sc, const Process& p);
 
 /// launch.json's record of what this launcher started: process -> executable and vendor.
 nlohmann::ordered_json process_table(const std::vector<Process>& procs);

@@ -77,6 +77,7 @@ RealtimeResult run_realtime(scenario::Scenario& sc, rt::Participant& participant
   // before tick 0; each host ticks on the grid it defines, a restarted one at the current tick.
   constexpr int64_t kStartLeadNs = 200'000'000;
   start.sim_time_ns(wall_time_ns() + kStartLeadNs);
+  for (auto& w : wires) w->set_epoch(start.sim_time_ns());  // data times: wall clock on the run's grid
   go.publish(start);
   const int64_t t0 = monotonic_ns() + kStartLeadNs;
   fault.run_start_ns = t0;
@@ -139,6 +140,11 @@ RealtimeResult run_realtime(scenario::Scenario& sc, rt::Participant& participant
         any_data = true;
         const int64_t now = wall_time_ns();
         if (wires[s]->decode(m, sample, bad_field) != distributed::Rejection::none) continue;
+        // A producer started before the run (a native plant, a bridge) or running past its end
+        // has samples off the run's steps; a late or repeated step is not a new sample.
+        auto& trace = res.log.signals[s];
+        if (sample.step < 0 || sample.step > sc.steps || (!trace.steps.empty() && sample.step <= trace.steps.back()))
+          continue;
         res.log.record(s, sample);
         const int64_t origin = subs[s]->header().origin_time_ns();
         if (origin > distributed::kNoMeasurementOrigin) latency[s].push_back(now - origin);

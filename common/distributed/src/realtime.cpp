@@ -72,6 +72,14 @@ const rt::QosProfile& signal_qos(const scenario::Scenario& sc, const std::string
   return profiles.get("state");
 }
 
+const rt::QosProfile& input_qos(const scenario::Scenario& sc, const scenario::SignalSpec& spec,
+                                const rt::QosProfiles& profiles) {
+  // Produced in another process: the profile its part of the scenario names (inputs:).
+  if (const auto it = sc.inputs.find(spec.name); it != sc.inputs.end() && !it->second.qos.empty())
+    return profiles.get(it->second.qos);
+  return signal_qos(sc, spec.producer, profiles);
+}
+
 struct RealtimeHost::Impl {
   scenario::Scenario& sc;
   double phase;  // of the base period, on the run's grid (stage_phase)
@@ -107,7 +115,7 @@ struct RealtimeHost::Impl {
         for (std::size_t in : exec.inputs_of(c))
           if (std::find(produced.begin(), produced.end(), in) != produced.end()) local_inputs[c].push_back(in);
     for (std::size_t i : exec.remote_inputs()) {
-      auto r = std::make_unique<RemoteLatest>(signals[i], p, signal_qos(sc, signals[i].producer, profiles), step_ns(sc));
+      auto r = std::make_unique<RemoteLatest>(signals[i], p, input_qos(sc, signals[i], profiles), step_ns(sc));
       r->deadline_ns = static_cast<int64_t>(sc.input_deadline_periods * static_cast<double>(signals[i].period_steps) *
                                             sc.step * 1e9);
       remote[i] = std::move(r);
@@ -163,8 +171,9 @@ RealtimeReport RealtimeHost::run(const std::atomic<bool>& stop) {
   // Wait for the start signal, announcing ourselves with heartbeats meanwhile.
   const int64_t give_up = monotonic_ns() + static_cast<int64_t>(m.opt.start_timeout_s * 1e9);
   msg::ClockStep go;
+  go.sim_time_ns(0);  // alone: the grid starts now
   int64_t next_hb = 0;
-  while (!m.start.take(go)) {
+  while (m.opt.wait_for_start && !m.start.take(go)) {
     if (stop) return m.report;
     const int64_t now = monotonic_ns();
     if (now > give_up) throw InputError(m.opt.service + ": no start signal from the launcher within " +
@@ -186,6 +195,11 @@ RealtimeReport RealtimeHost::run(const std::atomic<bool>& stop) {
   const int64_t late_ns = wall_now - t0 - offset_ns;  // past this host's tick 0 by
   const int64_t k0 = late_ns < 0 ? 0 : late_ns / step_ns + 1;
   const int64_t first_deadline = mono_now + (t0 + k0 * step_ns + offset_ns - wall_now);
+  // Data times are wall-clock times on the run's grid (wire.hpp): step k is at t0 + k periods.
+  for (auto& w : m.out_wire)
+    if (w) w->set_epoch(t0);
+  for (auto& r : m.remote)
+    if (r) r->wire.set_epoch(t0);
   rt::LoopOptions lo = m.opt.loop;
   lo.rate_hz = 1.0 / m.sc.step;
   rt::PeriodicLoop loop(lo);

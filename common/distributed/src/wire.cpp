@@ -64,8 +64,8 @@ const WireType* find_wire_type(std::string_view name) {
 WireSignal::WireSignal(const scenario::SignalSpec& spec, int64_t step_ns) : spec_(&spec), step_ns_(step_ns) {
   const std::string who = "signal '" + spec.name + "' (produced by '" + spec.producer + "')";
   if (spec.message.empty())
-    throw InputError(who + " has no IDL message type, so it cannot cross a process boundary; run its producer and "
-                           "its consumers in one process (a `process` group) or use `plexus sim`");
+    throw InputError(who + " has no IDL message type, so it cannot travel over DDS; run this scenario with "
+                           "`plexus sim`");
   type_ = find_wire_type(spec.message);
   if (!type_) throw InputError(who + ": '" + spec.message + "' is not a message type of idl/plexus/msg");
   // Where each field lands in a message, to refuse two fields filling one member (aliases
@@ -93,7 +93,7 @@ MessagePtr WireSignal::make_message() const { return {support().create(), suppor
 void WireSignal::encode(const scenario::SignalSample& s, void* message) const {
   for (std::size_t i = 0; i < slots_.size(); ++i) write(*slots_[i], message, s.values[i]);
   if (type_->count) *type_->count(message) = count_;
-  support().header(message)->data_time_ns(s.step * step_ns_);
+  support().header(message)->data_time_ns(epoch_ns_ + s.step * step_ns_);
 }
 
 Rejection WireSignal::decode(const void* message, scenario::SignalSample& s, std::size_t& bad_field) const {
@@ -112,7 +112,8 @@ Rejection WireSignal::decode(const void* message, scenario::SignalSample& s, std
       return Rejection::out_of_range;
     }
   }
-  s.step = t / step_ns_;
+  const int64_t since = t - epoch_ns_ + step_ns_ / 2;  // nearest step, floored for times before the epoch
+  s.step = since >= 0 ? since / step_ns_ : -((-since + step_ns_ - 1) / step_ns_);
   for (std::size_t i = 0; i < slots_.size(); ++i) s.values[i] = read(*slots_[i], m);
   std::fill(s.values.begin() + static_cast<std::ptrdiff_t>(slots_.size()), s.values.end(), 0.0);
   return Rejection::none;

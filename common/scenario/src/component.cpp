@@ -28,8 +28,9 @@ std::string ComponentConfig::signal_for(const std::string& port) const { return 
 
 Component::Component(const ComponentConfig& config) : name_(config.name), robot_(config.robot), remap_(config.remap) {}
 
-InputPort& Component::add_input(const std::string& port, std::vector<std::string> fields) {
-  inputs_.push_back(std::make_unique<InputPort>(port, resolve_signal(robot_, remap_, port), std::move(fields)));
+InputPort& Component::add_input(const std::string& port, std::vector<std::string> fields, std::string message) {
+  inputs_.push_back(
+      std::make_unique<InputPort>(port, resolve_signal(robot_, remap_, port), std::move(fields), std::move(message)));
   return *inputs_.back();
 }
 

@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <set>
 #include <stdexcept>
 
@@ -82,6 +83,7 @@ struct Loader {
       section.fail("type", "'" + cfg.type + "' is a " + to_string(cfg.kind) + " and cannot be used in " + place);
     }
     cfg.base_step = sc.step;
+    cfg.base_dir = sc.base_dir;
     cfg.period_steps = period_of(section);
     if (section.has("seed")) {
       const long long seed = section.required<long long>("seed");
@@ -99,7 +101,8 @@ struct Loader {
     if (service) {
       if (section.has("robot")) {
         cfg.robot = section.required<std::string>("robot");
-        if (!robot_names.count(cfg.robot)) section.fail("robot", "no robot '" + cfg.robot + "' in robots");
+        if (sc.partial ? !valid_name(cfg.robot) : !robot_names.count(cfg.robot))
+          section.fail("robot", sc.partial ? "invalid robot name '" + cfg.robot + "'" : "no robot '" + cfg.robot + "' in robots");
       }
       out.host = section.optional<std::string>("host", "");
       if (section.has("host") && !hosts.count(out.host))
@@ -142,17 +145,28 @@ struct Loader {
     sc.name = top.required<std::string>("name");
     if (!valid_name(sc.name)) top.fail("name", "letters, digits, '_' and '-' only, at most 64 characters");
     sc.description = top.optional<std::string>("description", "");
-    sc.duration = top.required<double>("duration");
-    if (sc.duration <= 0.0) top.fail("duration", "must be > 0 s");
+    sc.base_dir = std::filesystem::path(sc.file).parent_path().string();
+    if (top.has("base_dir")) {
+      if (!sc.partial) top.fail("base_dir", "only a part of a scenario names the folder of its relative paths");
+      sc.base_dir = top.required<std::string>("base_dir");
+    }
     sc.step = top.required<double>("step");
-    if (sc.step <= 0.0) top.fail("step", "must be > 0 s");
-    if (sc.step > sc.duration) top.fail("step", "must not exceed the duration");
-    const double steps = sc.duration / sc.step;
-    if (steps > 1e9) top.fail("step", "gives more than 1e9 steps");
-    sc.steps = std::llround(steps);
-    if (std::abs(steps - static_cast<double>(sc.steps)) > 1e-6)
-      top.fail("duration", "must be a whole number of steps (duration / step = " + std::to_string(steps) + ")");
-    const long long seed = top.required<long long>("seed");
+    if (!(sc.step > 0.0) || !std::isfinite(sc.step)) top.fail("step", "must be > 0 s");
+    if (sc.partial && !top.has("duration")) {
+      sc.until_stopped = true;
+      sc.steps = kUntilStopped;
+      sc.duration = static_cast<double>(sc.steps) * sc.step;
+    } else {
+      sc.duration = top.required<double>("duration");
+      if (sc.duration <= 0.0) top.fail("duration", "must be > 0 s");
+      if (sc.step > sc.duration) top.fail("step", "must not exceed the duration");
+      const double steps = sc.duration / sc.step;
+      if (steps > 1e9) top.fail("step", "gives more than 1e9 steps");
+      sc.steps = std::llround(steps);
+      if (std::abs(steps - static_cast<double>(sc.steps)) > 1e-6)
+        top.fail("duration", "must be a whole number of steps (duration / step = " + std::to_string(steps) + ")");
+    }
+    const long long seed = sc.partial ? top.optional<long long>("seed", 0) : top.required<long long>("seed");
     if (seed < 0) top.fail("seed", "must be >= 0");
     sc.seed = static_cast<uint64_t>(seed);
     if (top.has("clock")) {
@@ -187,10 +201,35 @@ struct Loader {
     }
   }
 
+  void load_inputs(const YamlMap& top) {
+    if (!top.has("inputs")) return;
+    if (!sc.partial) top.fail("inputs", "only a part of a scenario (a service's own document) declares inputs");
+    const YamlMap inputs = top.map("inputs");
+    for (const auto& signal : inputs.keys()) {
+      const YamlMap in = inputs.map(signal);
+      ExternalInput e;
+      if (in.has("rate")) e.period_steps = period_of(in);
+      if (in.has("period_steps")) {
+        const long long period = in.required<long long>("period_steps");
+        if (period < 1) in.fail("period_steps", "must be >= 1");
+        e.period_steps = period;
+      }
+      if (in.has("stage")) {
+        e.staged = true;
+        if (!parse_component_kind(in.required<std::string>("stage"), e.stage))
+          in.fail("stage", "expected plant, sensor, reference, estimator or controller");
+      }
+      e.qos = in.optional<std::string>("qos", "");
+      in.reject_unknown();
+      sc.inputs[signal] = e;
+    }
+  }
+
   void load_components(const YamlMap& top) {
     std::vector<ScenarioComponent> all;
+    if (!sc.partial || top.has("robots")) {
     const YamlMap robots = top.map("robots");
-    if (robots.keys().empty()) top.fail("robots", "needs at least one robot");
+    if (robots.keys().empty() && !sc.partial) top.fail("robots", "needs at least one robot");
     for (const auto& r : robots.keys()) {
       const YamlMap robot = robots.map(name_key(robots, r, "robot"));
       robot_names.insert(r);
@@ -213,6 +252,7 @@ struct Loader {
       }
       robot.reject_unknown();
     }
+    }
     if (top.has("services")) {
       const YamlMap services = top.map("services");
       for (const auto& s : services.keys()) {
@@ -224,7 +264,7 @@ struct Loader {
       return static_cast<int>(a.kind) < static_cast<int>(b.kind);
     });
     sc.components = std::move(all);
-    sc.signals = detail::wire(sc.components).signals;
+    sc.signals = detail::wire(sc).signals;
   }
 
   void load_metrics(const YamlMap& top) {
@@ -267,10 +307,13 @@ struct Loader {
 
   void load(const YamlMap& top) {
     // Read every top-level key first, so a misspelt one is reported before anything deeper.
-    for (const char* k : {"robots", "services", "metrics", "expectations"}) top.node(k);
+    for (const char* k : {"robots", "services", "metrics", "expectations", "inputs"}) top.node(k);
     load_top(top);
     top.reject_unknown();
+    load_inputs(top);
     load_components(top);
+    if (sc.partial && (top.has("metrics") || top.has("expectations")))
+      top.fail(top.has("metrics") ? "metrics" : "expectations", "belongs to a whole scenario, not to one service's part");
     load_metrics(top);
     load_expectations(top);
     for (auto& [node, seed] : derived_seeds) {
@@ -280,9 +323,11 @@ struct Loader {
   }
 };
 
-Scenario load_root(YAML::Node root, const std::string& origin, const std::vector<Override>& overrides) {
+Scenario load_root(YAML::Node root, const std::string& origin, const std::vector<Override>& overrides,
+                   LoadOptions options) {
   Scenario sc;
   sc.file = origin;
+  sc.partial = options.partial;
   try {
     apply_overrides(root, overrides);
     sc.resolved = root;
@@ -296,12 +341,28 @@ Scenario load_root(YAML::Node root, const std::string& origin, const std::vector
 
 }  // namespace
 
-Scenario load_scenario(const std::string& path, const std::vector<Override>& overrides) {
-  return load_root(load_yaml_file(path), path, overrides);
+Scenario load_scenario(const std::string& path, const std::vector<Override>& overrides, LoadOptions options) {
+  return load_root(load_yaml_file(path), path, overrides, options);
 }
 
-Scenario load_scenario_text(const std::string& text, const std::string& origin, const std::vector<Override>& overrides) {
-  return load_root(load_yaml_string(text, origin), origin, overrides);
+Scenario load_scenario_text(const std::string& text, const std::string& origin, const std::vector<Override>& overrides,
+                            LoadOptions options) {
+  return load_root(load_yaml_string(text, origin), origin, overrides, options);
+}
+
+Scenario load_scenario_tree(YAML::Node root, const std::string& origin, const std::vector<Override>& overrides,
+                            LoadOptions options) {
+  return load_root(std::move(root), origin, overrides, options);
+}
+
+bool parse_component_kind(const std::string& name, ComponentKind& kind) {
+  for (auto k : {ComponentKind::plant, ComponentKind::sensor, ComponentKind::reference, ComponentKind::estimator,
+                 ComponentKind::controller})
+    if (name == to_string(k)) {
+      kind = k;
+      return true;
+    }
+  return false;
 }
 
 }  // namespace plexus::scenario

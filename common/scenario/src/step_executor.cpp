@@ -24,7 +24,7 @@ struct StepExecutor::Impl {
 };
 
 StepExecutor::StepExecutor(Scenario& scenario, std::vector<bool> hosted)
-    : scenario_(scenario), hosted_(std::move(hosted)), impl_(new Impl{detail::wire(scenario.components), {}, {}, {}}) {
+    : scenario_(scenario), hosted_(std::move(hosted)), impl_(new Impl{detail::wire(scenario), {}, {}, {}}) {
   if (hosted_.empty()) hosted_.assign(scenario_.components.size(), true);
   impl_->bus.resize(impl_->wiring.signals.size());
   impl_->produced_here.assign(impl_->wiring.signals.size(), false);

@@ -1,5 +1,6 @@
 #include "wiring.hpp"
 
+#include <algorithm>
 #include <map>
 
 #include "plexus/base/input_error.hpp"
@@ -21,7 +22,8 @@ void check_width(const ScenarioComponent& c, const Port& p) {
 
 }  // namespace
 
-Wiring wire(const std::vector<ScenarioComponent>& components) {
+Wiring wire(const Scenario& scenario) {
+  const auto& components = scenario.components;
   Wiring w;
   std::map<std::string, std::size_t> by_name;
   w.outputs.resize(components.size());
@@ -45,15 +47,50 @@ Wiring wire(const std::vector<ScenarioComponent>& components) {
     for (const auto& in : c.component->inputs()) {
       check_width(c, *in);
       auto it = by_name.find(in->signal());
+      if (it == by_name.end() && scenario.partial) {
+        // Produced in another process: its spec is what this document knows of it.
+        if (in->message().empty())
+          throw InputError(c.where + ": input '" + in->signal() + "' (port '" + in->port() +
+                           "') must be produced in the same process (it has no IDL message type)");
+        const auto ext = scenario.inputs.find(in->signal());
+        SignalSpec spec;
+        spec.name = in->signal();
+        spec.period_steps = ext != scenario.inputs.end() && ext->second.period_steps > 0 ? ext->second.period_steps
+                                                                                         : c.period_steps;
+        spec.producer = "(another process)";
+        spec.message = in->message();
+        it = by_name.emplace(spec.name, w.signals.size()).first;
+        w.signals.push_back(std::move(spec));
+        // Without a stage the reader reads it as from an earlier stage (no delay).
+        const bool staged = ext != scenario.inputs.end() && ext->second.staged;
+        w.producer_kind.push_back(staged ? ext->second.stage : ComponentKind::plant);
+        w.external.push_back(w.signals.size() - 1);
+      }
       if (it == by_name.end())
         throw InputError(c.where + ": input '" + in->signal() + "' (port '" + in->port() +
                          "') is produced by no component; remap the port or add its producer");
       InputBinding b;
       b.port = in.get();
       b.signal = it->second;
-      b.delayed = static_cast<int>(w.producer_kind[b.signal]) >= static_cast<int>(c.kind);
+      const bool external = std::find(w.external.begin(), w.external.end(), b.signal) != w.external.end();
+      b.delayed = external && scenario.inputs.count(in->signal()) == 0
+                      ? false
+                      : static_cast<int>(w.producer_kind[b.signal]) >= static_cast<int>(c.kind);
       b.width = in->fields().size();
-      const SignalSpec& spec = w.signals[b.signal];
+      SignalSpec& spec = w.signals[b.signal];
+      if (external) {  // the fields of an external signal are those its readers here name
+        if (spec.message != in->message())
+          throw InputError(c.where + ": input '" + in->signal() + "' is read as " + in->message() + " here and as " +
+                           spec.message + " by another component of this process");
+        for (const auto& f : in->fields())
+          if (std::find(spec.fields.begin(), spec.fields.end(), f) == spec.fields.end()) spec.fields.push_back(f);
+        if (spec.fields.size() > kMaxSignalFields)
+          throw InputError(c.where + ": input '" + in->signal() + "' is read with more than " +
+                           std::to_string(kMaxSignalFields) + " fields");
+      } else if (!in->message().empty() && !spec.message.empty() && in->message() != spec.message) {
+        throw InputError(c.where + ": input '" + in->signal() + "' (port '" + in->port() + "') expects " +
+                         in->message() + ", but '" + spec.producer + "' publishes it as " + spec.message);
+      }
       for (std::size_t f = 0; f < b.width; ++f) {
         std::size_t found = spec.fields.size();
         for (std::size_t g = 0; g < spec.fields.size(); ++g)

@@ -27,10 +27,13 @@ struct Wiring {
   std::vector<ComponentKind> producer_kind;             ///< per signal
   std::vector<std::vector<InputBinding>> inputs;        ///< per component
   std::vector<std::vector<OutputBinding>> outputs;      ///< per component
+  std::vector<std::size_t> external;                    ///< signals produced in another process (partial scenarios)
 };
 
 /// Binds every port; throws InputError naming the component for an output signal produced
-/// twice, an input with no producer, a missing field or a bad field count.
-Wiring wire(const std::vector<ScenarioComponent>& components);
+/// twice, an input with no producer (in a partial scenario: an external input, see
+/// Scenario::inputs), a missing field, a bad field count or a message type the producer
+/// does not publish.
+Wiring wire(const Scenario& scenario);
 
 }  // namespace plexus::scenario::detail

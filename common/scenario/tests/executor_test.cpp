@@ -14,7 +14,7 @@ namespace {
 class ProbePlant final : public Component {
  public:
   explicit ProbePlant(const ComponentConfig& c)
-      : Component(c), cmd_(add_input("cmd", {"k"})), out_(add_output("state", {"k", "cmd_step"}, "")) {}
+      : Component(c), cmd_(add_input("cmd", {"k"}, "")), out_(add_output("state", {"k", "cmd_step"}, "")) {}
   void step(int64_t k, double) override {
     out_[0] = static_cast<double>(k);
     out_[1] = static_cast<double>(cmd_.sample().step);
@@ -28,7 +28,7 @@ class ProbePlant final : public Component {
 class ProbeSensor final : public Component {
  public:
   explicit ProbeSensor(const ComponentConfig& c)
-      : Component(c), in_(add_input("state", {"k"})), out_(add_output(c.key, {"state_k"}, "")) {}
+      : Component(c), in_(add_input("state", {"k"}, "")), out_(add_output(c.key, {"state_k"}, "")) {}
   void step(int64_t, double) override { out_[0] = in_[0]; }
 
  private:
@@ -39,7 +39,7 @@ class ProbeSensor final : public Component {
 class ProbeController final : public Component {
  public:
   explicit ProbeController(const ComponentConfig& c)
-      : Component(c), in_(add_input("probe", {"state_k"})), out_(add_output("cmd", {"k", "probe_k"}, "")) {}
+      : Component(c), in_(add_input("probe", {"state_k"}, "")), out_(add_output("cmd", {"k", "probe_k"}, "")) {}
   void step(int64_t k, double) override {
     out_[0] = static_cast<double>(k);
     out_[1] = in_.valid() ? in_[0] : -1.0;

@@ -136,7 +136,7 @@ class FlexibleJointArmComponent final : public Component {
         h_(c.period()),
         u_(Eigen::VectorXd::Zero(n_)),
         tau_(Eigen::VectorXd::Zero(n_)),
-        cmd_(add_input("cmd", names("u", n_))),
+        cmd_(add_input("cmd", names("u", n_), "JointCommand")),
         state_(add_output("truth/state",
                           concat({names("q", n_), names("dq", n_), names("phi", n_), names("dphi", n_), names("tau", n_)}),
                           "FlexibleJointTruth")) {
@@ -184,7 +184,7 @@ class JointEncodersComponent final : public Component {
         position_std_(optional_non_negative(c.params(), "position_noise_std")),
         velocity_std_(optional_non_negative(c.params(), "velocity_noise_std")),
         rng_(c.seed),
-        in_(add_input("truth/state", concat({names("phi", n_), names("dphi", n_)}))),
+        in_(add_input("truth/state", concat({names("phi", n_), names("dphi", n_)}), "FlexibleJointTruth")),
         out_(add_output(c.key, concat({names("phi", n_), names("dphi", n_)}), "JointState")) {}
 
   void step(int64_t /*k*/, double /*t*/) override {
@@ -279,8 +279,8 @@ class ArmEkfComponent final : public Component {
         y_(Eigen::VectorXd::Zero(2 * n_)),
         x0_(Eigen::VectorXd::Zero(4 * n_)),
         g_(Eigen::VectorXd::Zero(n_)),
-        enc_(add_input("joint_states", concat({names("phi", n_), names("dphi", n_)}))),
-        cmd_(add_input("cmd", names("u", n_))),
+        enc_(add_input("joint_states", concat({names("phi", n_), names("dphi", n_)}), "JointState")),
+        cmd_(add_input("cmd", names("u", n_), "JointCommand")),
         estimate_(add_output("estimate", estimate_fields(n_), "LinkJointState")) {
     if (n_ > kMaxScenarioDof) c.params().fail("model", "has " + std::to_string(n_) + " joints; at most " + std::to_string(kMaxScenarioDof));
   }
@@ -331,8 +331,8 @@ class ArmControllerBase : public Component {
   ArmControllerBase(const ComponentConfig& c, int n)
       : Component(c),
         n_(n),
-        ref_(add_input("reference", concat({names("q", n), names("dq", n), names("ddq", n), names("dddq", n)}))),
-        est_(add_input("estimate", estimate_fields(n))),
+        ref_(add_input("reference", concat({names("q", n), names("dq", n), names("ddq", n), names("dddq", n)}), "JointReference")),
+        est_(add_input("estimate", estimate_fields(n), "LinkJointState")),
         cmd_(add_output("cmd", names("u", n), "JointCommand")) {
     if (n > kMaxScenarioDof) c.params().fail("model", "has " + std::to_string(n) + " joints; at most " + std::to_string(kMaxScenarioDof));
     const Eigen::VectorXd z = Eigen::VectorXd::Zero(n);

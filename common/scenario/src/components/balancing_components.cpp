@@ -7,7 +7,7 @@
 //     wheel_inertia, gravity, max_torque (WheeledPendulumParams defaults), theta0_deg (0),
 //     torque_noise_std (N m, 0: actuation noise drawn from the plant's seed), substeps (4, RK4)
 //   balancing_imu (sensor)  in truth/state; out <sensor name> {gyro, acc_x, acc_z} (Imu: gyro
-//     about the wheel axis y, accelerometer x and z)
+//     about the wheel axis y, accelerometer x and z); gravity (9.81, as the plant's)
 //     gyro_noise_degps (0.5), gyro_range_degps (150), gamma1 (1/s, -0.01), gamma2_degps2 (0),
 //     drift_noise_psd (rad^2/s^3, 1e-6), initial_drift_degps (0.5), accel_noise (m/s^2,
 //     0.0343), accel_height (m, 0.12), accel_range (m/s^2, 19.62)
@@ -22,12 +22,14 @@
 //     q_theta_deg (0.2), q_rate_degps (0.05), q_drift_degps (0.3), r_tilt_deg (0.2),
 //     r_gyro_degps (0.5), initial_theta_std_deg (0.5), initial_rate_std_degps (1),
 //     initial_drift_std_degps (1), alpha (1), beta (2), kappa (0).
-//     It runs one cycle per new IMU sample with dt = the IMU's period (run it at the IMU's
-//     rate or faster). Its model is the robot's plant parameters and the IMU's drift model, range and
-//     mounting height (the plant and the sensor it reads must be declared in the scenario).
+//     It runs one cycle per new IMU sample with dt = the IMU's period, imu_rate (Hz, default
+//     its own rate; run it at the IMU's rate or faster). Its model is its own parameters, with
+//     the plant's and the sensor's key names and defaults: body_mass, com_height,
+//     body_inertia, wheel_mass, wheel_radius, wheel_inertia, gravity, max_torque, and the
+//     IMU's gamma1, gamma2_degps2, gyro_range_degps, accel_height.
 //   balancing_controller (controller)  in odometry {x, v} (wheel encoders), attitude {theta,
 //     theta_dot}, reference {x, v}; out cmd {torque} (WheelTorqueCommand). poles (list of 4,
-//     [-2, -3, -9, -10]).
+//     [-2, -3, -9, -10]); its model: the plant's keys (body_mass .. max_torque), same defaults.
 #include <cmath>
 #include <map>
 #include <memory>
@@ -48,35 +50,16 @@ namespace {
 namespace alg = plexus::algorithms;
 constexpr double kRad = std::numbers::pi / 180.0;
 
-/// Plant parameters by robot and IMU parameters by output signal, registered by the plant
-/// and sensor components as they are built (robots come before services), so the filters
-/// and controllers use the same model.
-std::map<std::string, alg::WheeledPendulumParams>& plant_table() {
-  static std::map<std::string, alg::WheeledPendulumParams> t;
-  return t;
-}
 struct ImuInfo {
   alg::GyroParams gyro;
   alg::AccelerometerParams acc;
-  double period = 0.0;  ///< s between samples
 };
-std::map<std::string, ImuInfo>& imu_table() {
-  static std::map<std::string, ImuInfo> t;
-  return t;
-}
-
-const alg::WheeledPendulumParams& plant_of(const ComponentConfig& c) {
-  const auto it = plant_table().find(c.robot);
-  if (it == plant_table().end()) {
-    c.params().fail("type", "needs a wheeled_inverted_pendulum plant on robot '" + c.robot + "' (set robot:)");
-  }
-  return it->second;
-}
 
 /// Optional angle-like key given in degrees (deg, deg/s, deg/s^2), returned in radians;
-/// `fallback_rad` when absent. `min` is "> 0", ">= 0" or "" (any finite value).
+/// exactly `fallback_rad` when absent. `min` is "> 0", ">= 0" or "" (any finite value).
 double degrees(const YamlMap& p, const std::string& key, double fallback_rad, const std::string& min = "") {
-  const double v = p.optional<double>(key, fallback_rad / kRad);
+  if (!p.has(key)) return fallback_rad;
+  const double v = p.required<double>(key);
   const bool ok = std::isfinite(v) && (min == "> 0" ? v > 0.0 : min == ">= 0" ? v >= 0.0 : true);
   if (!ok) p.fail(key, "must be finite" + (min.empty() ? std::string() : " and " + min) + " (got " + std::to_string(v) + ")");
   return v * kRad;
@@ -117,12 +100,11 @@ class PendulumPlantComponent final : public Component {
         torque_noise_(optional_non_negative(c.params(), "torque_noise_std")),
         substeps_(c.params().optional<int>("substeps", 4)),
         rng_(c.seed),
-        cmd_(add_input("cmd", {"torque"})),
+        cmd_(add_input("cmd", {"torque"}, "WheelTorqueCommand")),
         out_(add_output("truth/state", {"x", "v", "theta", "theta_dot", "x_ddot", "theta_ddot"}, "BalancingTruth")) {
     if (substeps_ < 1) c.params().fail("substeps", "must be >= 1");
     state_.theta = degrees(c.params(), "theta0_deg", 0.0);
     acc_ = plant_.accelerations(state_, 0.0);
-    plant_table()[c.robot] = plant_.params();
   }
 
   void step(int64_t k, double /*t*/) override {
@@ -167,18 +149,26 @@ ImuInfo imu_params(const YamlMap& p) {
   return i;
 }
 
+/// The IMU's sample period as a filter sees it: `imu_rate` (Hz, a divisor of the base rate),
+/// default the filter's own rate. Computed as the sensor computes its period (whole base steps).
+double imu_period(const ComponentConfig& c) {
+  if (!c.params().has("imu_rate")) return c.period();
+  const double rate = c.params().required<double>("imu_rate");
+  const double steps = std::round(1.0 / (rate * c.base_step));
+  if (!(rate > 0.0) || steps < 1.0 || std::abs(1.0 / (rate * c.base_step) - steps) > 1e-6 * steps)
+    c.params().fail("imu_rate", "must be > 0 Hz and divide the base rate");
+  return static_cast<double>(static_cast<int64_t>(steps)) * c.base_step;
+}
+
 class BalancingImuComponent final : public Component {
  public:
   explicit BalancingImuComponent(const ComponentConfig& c)
       : Component(c),
         info_(imu_params(c.params())),
-        imu_(info_.gyro, info_.acc, plant_of(c).gravity, c.seed),
+        imu_(info_.gyro, info_.acc, c.params().optional<double>("gravity", alg::WheeledPendulumParams{}.gravity), c.seed),
         dt_(c.period()),
-        in_(add_input("truth/state", {"theta", "theta_dot", "x_ddot", "theta_ddot"})),
-        out_(add_output(c.key, {"gyro", "acc_x", "acc_z"}, "Imu")) {
-    info_.period = dt_;
-    imu_table()[out_.signal()] = info_;
-  }
+        in_(add_input("truth/state", {"theta", "theta_dot", "x_ddot", "theta_ddot"}, "BalancingTruth")),
+        out_(add_output(c.key, {"gyro", "acc_x", "acc_z"}, "Imu")) {}
 
   void step(int64_t /*k*/, double /*t*/) override {
     alg::WheeledPendulumState s;
@@ -207,7 +197,7 @@ class WheelOdometryComponent final : public Component {
       : Component(c),
         noise_std_(optional_non_negative(c.params(), "noise_std")),
         rng_(c.seed),
-        in_(add_input("truth/state", {"x", "v"})),
+        in_(add_input("truth/state", {"x", "v"}, "BalancingTruth")),
         out_(add_output(c.key, {"x", "v"}, "TravelState")) {}
 
   void step(int64_t /*k*/, double /*t*/) override {
@@ -251,10 +241,10 @@ class AttitudeFilterComponent final : public Component {
  public:
   explicit AttitudeFilterComponent(const ComponentConfig& c)
       : Component(c),
-        imu_(add_input("imu", {"acc_x", "acc_z", "gyro"})),
-        cmd_(add_input("cmd", {"torque"})),
+        imu_(add_input("imu", {"acc_x", "acc_z", "gyro"}, "Imu")),
+        cmd_(add_input("cmd", {"torque"}, "WheelTorqueCommand")),
         out_(add_output("attitude", {"theta", "theta_dot", "drift", "theta_std"}, "AttitudeEstimate")),
-        filter_(params(c, imu_.signal())) {}
+        filter_(params(c)) {}
 
   void step(int64_t /*k*/, double /*t*/) override {
     // Runs at its own rate; the torque is the command held since the previous step (k-1).
@@ -271,7 +261,7 @@ class AttitudeFilterComponent final : public Component {
   }
 
  private:
-  static alg::AttitudeFilterParams params(const ComponentConfig& c, const std::string& imu_signal) {
+  static alg::AttitudeFilterParams params(const ComponentConfig& c) {
     const YamlMap& p = c.params();
     alg::AttitudeFilterParams f;
     const auto kind = choice(p, "filter", "ukf_augmented", {"ukf_augmented", "ukf_additive", "ekf"});
@@ -284,16 +274,18 @@ class AttitudeFilterComponent final : public Component {
     f.model.process = choice(p, "process_model", "nonlinear", {"nonlinear", "linear"}) == "linear"
                           ? alg::AttitudeProcessModel::kLinear
                           : alg::AttitudeProcessModel::kNonlinear;
-    const alg::WheeledPendulumParams& plant = plant_of(c);
+    // The filter's model is its own parameters (the robot's and the IMU's keys, same names
+    // and defaults as the plant and the balancing_imu sensor): it runs without them.
+    const alg::WheeledPendulumParams plant = pendulum_params(p);
     f.model.coefficients = alg::WheeledInvertedPendulum(plant).coefficients();
     f.model.gravity = plant.gravity;
-    const auto imu = imu_table().find(imu_signal);
-    if (imu == imu_table().end()) p.fail("type", "needs the balancing_imu sensor that writes " + imu_signal);
-    f.model.gamma1 = imu->second.gyro.gamma1;
-    f.model.gamma2 = imu->second.gyro.gamma2;
-    f.model.gyro_range = imu->second.gyro.range;
-    f.model.accelerometer_height = imu->second.acc.height;
-    f.model.dt = imu->second.period;  // one filter cycle per IMU sample
+    const alg::GyroParams gyro;
+    const alg::AccelerometerParams acc;
+    f.model.gamma1 = p.optional<double>("gamma1", gyro.gamma1);
+    f.model.gamma2 = degrees(p, "gamma2_degps2", gyro.gamma2);
+    f.model.gyro_range = degrees(p, "gyro_range_degps", gyro.range, "> 0");
+    f.model.accelerometer_height = p.optional<double>("accel_height", acc.height);
+    f.model.dt = imu_period(c);  // one filter cycle per IMU sample
     f.q_theta = degrees(p, "q_theta_deg", f.q_theta, ">= 0");
     f.q_rate = degrees(p, "q_rate_degps", f.q_rate, ">= 0");
     f.q_drift = degrees(p, "q_drift_degps", f.q_drift, ">= 0");
@@ -331,11 +323,11 @@ class BalancingControllerComponent final : public Component {
  public:
   explicit BalancingControllerComponent(const ComponentConfig& c)
       : Component(c),
-        plant_(plant_of(c)),
+        plant_(pendulum_params(c.params())),  // its model: the robot's keys, as the plant reads them
         ctl_(controller_params(c.params()), plant_),
-        state_(add_input("odometry", {"x", "v"})),
-        est_(add_input("attitude", {"theta", "theta_dot"})),
-        ref_(add_input("reference", {"x", "v"})),
+        state_(add_input("odometry", {"x", "v"}, "TravelState")),
+        est_(add_input("attitude", {"theta", "theta_dot"}, "AttitudeEstimate")),
+        ref_(add_input("reference", {"x", "v"}, "TravelState")),
         out_(add_output("cmd", {"torque"}, "WheelTorqueCommand")) {}
 
   void step(int64_t /*k*/, double /*t*/) override {

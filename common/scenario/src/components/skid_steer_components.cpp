@@ -93,12 +93,13 @@ Eigen::Matrix<double, N, 1> optional_vector(const YamlMap& p, const std::string&
   return Eigen::Map<const Eigen::Matrix<double, N, 1>>(v.data());
 }
 
-/// A path parameter: absolute, or relative to the folder of the scenario file.
-std::string scenario_relative_path(const YamlMap& p, const std::string& key) {
+/// A path parameter: absolute, or relative to the scenario's folder (ComponentConfig::base_dir).
+std::string scenario_relative_path(const ComponentConfig& c, const std::string& key) {
+  const YamlMap& p = c.params();
   const std::filesystem::path v = p.required<std::string>(key);
   if (v.empty()) p.fail(key, "must name a file");
   if (v.is_absolute()) return v.string();
-  return (std::filesystem::path(p.file()).parent_path() / v).lexically_normal().string();
+  return (std::filesystem::path(c.base_dir) / v).lexically_normal().string();
 }
 
 /// The producer's step of an input's current sample changed since the last call?
@@ -172,7 +173,7 @@ alg::SkidSteerPlantParams plant_params(const ComponentConfig& c) {
 class SkidSteerPlantComponent final : public Component {
  public:
   explicit SkidSteerPlantComponent(const ComponentConfig& c)
-      : Component(c), plant_(plant_params(c)), rng_(c.seed), cmd_(add_input("cmd", {"v_l", "v_r"})),
+      : Component(c), plant_(plant_params(c)), rng_(c.seed), cmd_(add_input("cmd", {"v_l", "v_r"}, "TrackCommand")),
         out_(add_output("truth/state", {"x", "y", "theta", "y_l", "y_r", "x_G", "terrain", "a_z", "v_l", "v_r"}, "SkidSteerTruth")) {}
 
   void step(int64_t k, double t) override {
@@ -240,7 +241,7 @@ class DriverComponent final : public Component {
 class PoseSensorComponent final : public Component {
  public:
   explicit PoseSensorComponent(const ComponentConfig& c)
-      : Component(c), sensor_(params(c.params())), rng_(c.seed), in_(add_input("truth/state", {"x", "y", "theta"})),
+      : Component(c), sensor_(params(c.params())), rng_(c.seed), in_(add_input("truth/state", {"x", "y", "theta"}, "SkidSteerTruth")),
         out_(add_output(c.key, {"x", "y", "theta"}, "Pose2D")) {}
   void step(int64_t /*k*/, double /*t*/) override {
     const alg::Pose2 m = sensor_.measure(pose_of(in_), rng_);
@@ -267,7 +268,7 @@ class TrackSpeedSensorComponent final : public Component {
  public:
   explicit TrackSpeedSensorComponent(const ComponentConfig& c)
       : Component(c), sensor_(optional_non_negative(c.params(), "noise_std")), rng_(c.seed),
-        in_(add_input("truth/state", {"v_l", "v_r"})), out_(add_output(c.key, {"v_l", "v_r"}, "TrackSpeeds")) {}
+        in_(add_input("truth/state", {"v_l", "v_r"}, "SkidSteerTruth")), out_(add_output(c.key, {"v_l", "v_r"}, "TrackSpeeds")) {}
   void step(int64_t /*k*/, double /*t*/) override {
     const alg::TrackSpeeds m = sensor_.measure({in_[0], in_[1]}, rng_);
     out_[0] = m.v_l;
@@ -285,7 +286,7 @@ class ImuZSensorComponent final : public Component {
  public:
   explicit ImuZSensorComponent(const ComponentConfig& c)
       : Component(c), sensor_(optional_non_negative(c.params(), "noise_std", 0.02), c.params().optional<double>("bias", 0.0)),
-        rng_(c.seed), in_(add_input("truth/state", {"a_z"})), out_(add_output(c.key, {"a_z"}, "Imu")) {}
+        rng_(c.seed), in_(add_input("truth/state", {"a_z"}, "SkidSteerTruth")), out_(add_output(c.key, {"a_z"}, "Imu")) {}
   void step(int64_t /*k*/, double /*t*/) override { out_[0] = sensor_.measure(in_[0], rng_); }
 
  private:
@@ -350,7 +351,7 @@ struct WindowedFeatures {
 
 alg::KnnClassifier make_classifier(const ComponentConfig& c, const alg::PsdFeatureExtractor& extractor) {
   const YamlMap& p = c.params();
-  const std::string path = scenario_relative_path(p, "training_file");
+  const std::string path = scenario_relative_path(c, "training_file");
   alg::TrainingSet set;
   try {
     set = alg::load_training_set(path);
@@ -386,7 +387,7 @@ alg::KnnClassifier make_classifier(const ComponentConfig& c, const alg::PsdFeatu
 class TerrainClassifierComponent final : public Component {
  public:
   explicit TerrainClassifierComponent(const ComponentConfig& c)
-      : Component(c), windows_(c), knn_(make_classifier(c, windows_.extractor)), in_(add_input("imu", {"a_z"})),
+      : Component(c), windows_(c), knn_(make_classifier(c, windows_.extractor)), in_(add_input("imu", {"a_z"}, "Imu")),
         out_(add_output("terrain", {"class", "confidence", "windows", "votes"}, "TerrainClass")) {
     out_[0] = -1.0;  // no decision yet
   }
@@ -414,7 +415,8 @@ class TerrainRecorderComponent final : public Component {
   explicit TerrainRecorderComponent(const ComponentConfig& c)
       : Component(c), windows_(c), label_(c.params().optional<int>("label", -1)),
         per_class_(c.params().optional<int>("windows_per_class", 15)),
-        writer_(open(c, windows_.extractor)), in_(add_input("imu", {"a_z"})), truth_(add_input("truth/state", {"terrain"})),
+        writer_(open(c, windows_.extractor)), in_(add_input("imu", {"a_z"}, "Imu")),
+        truth_(add_input("truth/state", {"terrain"}, "SkidSteerTruth")),
         out_(add_output("recorder", {"written"}, "")) {  // writes a file: `plexus sim` only
     if (c.params().has("label") && label_ < 0) c.params().fail("label", "must be >= 0");
     if (per_class_ < 1) c.params().fail("windows_per_class", "must be >= 1");
@@ -449,7 +451,7 @@ class TerrainRecorderComponent final : public Component {
       int i = 0;
       for (const auto& n : p.sequence("class_names")) names[i++] = n.Scalar();
     }
-    const std::string path = scenario_relative_path(p, "output");
+    const std::string path = scenario_relative_path(c, "output");
     try {
       return alg::TrainingSetWriter(path, alg::FeatureLayout::of(e), names, "recorded by service '" + c.name + "'");
     } catch (const alg::TrainingFileError& err) {
@@ -495,8 +497,8 @@ class IcrEkfComponent final : public Component {
   explicit IcrEkfComponent(const ComponentConfig& c)
       : Component(c), ekf_(ekf_params(c.params())), adaptive_(c.params().optional<bool>("adaptive_reset", false)),
         detector_(c.params().optional<int>("consecutive_windows", 2)), dt_(c.period()),
-        wheels_(add_input("wheels", {"v_l", "v_r"})), gps_(add_input("gps", {"x", "y", "theta"})),
-        classes_(adaptive_ ? &add_input("terrain", {"class", "windows"}) : nullptr),
+        wheels_(add_input("wheels", {"v_l", "v_r"}, "TrackSpeeds")), gps_(add_input("gps", {"x", "y", "theta"}, "Pose2D")),
+        classes_(adaptive_ ? &add_input("terrain", {"class", "windows"}, "TerrainClass") : nullptr),
         out_(add_output("icr", {"x", "y", "theta", "y_l", "y_r", "x_G", "resets", "sd_y_l", "sd_y_r", "sd_x_G"},
                         "IcrEstimate")) {
     write();
@@ -552,8 +554,9 @@ class IcrOdometryComponent final : public Component {
  public:
   explicit IcrOdometryComponent(const ComponentConfig& c)
       : Component(c), model_(model(c.params())), start_(c.params().optional<double>("start", 0.0)), h_(c.period()),
-        wheels_(add_input("wheels", {"v_l", "v_r"})), truth_(add_input("truth/state", {"x", "y", "theta"})),
-        estimate_(model_ == Model::kEstimated ? &add_input("icr", {"y_l", "y_r", "x_G"}) : nullptr),
+        wheels_(add_input("wheels", {"v_l", "v_r"}, "TrackSpeeds")),
+        truth_(add_input("truth/state", {"x", "y", "theta"}, "SkidSteerTruth")),
+        estimate_(model_ == Model::kEstimated ? &add_input("icr", {"y_l", "y_r", "x_G"}, "IcrEstimate") : nullptr),
         out_(add_output(c.key, {"x", "y", "theta"}, "Pose2D")) {
     const YamlMap& p = c.params();
     if (!(start_ >= 0.0)) p.fail("start", "must be >= 0 s");

@@ -1,34 +1,36 @@
 // Registry entries of the unicycle family (papers 000 and 003; docs/algorithms/unicycle.md).
 // The plant is `unicycle` (unicycle_plant_component.cpp). Ports bind to `<robot>/<port>`
-// unless remapped; naming the position sensor `position` makes the defaults connect.
+// unless remapped; naming the position sensor `position` makes the defaults connect. Each
+// output names its IDL type (docs/topics.md).
 //
-//   position_sensor (sensor)      in state {x, y}; out <sensor name> {x, y}
+//   position_sensor (sensor)      in truth/state {x, y}; out <sensor name> {x, y} (PositionMeasurement)
 //     kind: exact | gaussian | rfid_grid, sigma (m), grid_spacing (m, 0.1),
 //     grid_origin_x, grid_origin_y (m, 0); rate and seed are the common keys
-//   figure_eight_reference        out reference {x, y, dx, dy, ddx, ddy}
+//   figure_eight_reference        out reference {x, y, dx, dy, ddx, ddy} (PlanarReference)
 //     h1 (m, 5), h2 (rad/s, 0.02), t0 (s, 3 pi / (2 h2): starts at (0, -h1))     000 eq. (51)
-//   geometric_path (reference)    in position {x, y}; out path {x, y, h, hx, hy, hxx, hxy, hyy}:
+//   geometric_path (reference)    in position {x, y}; out path {x, y, h, hx, hy, hxx, hxy, hyy}
+//     (PathSample):
 //     h and its derivatives at the measured position, and (x, y) a nearby point ON the
 //     path (three Gauss-Newton steps p <- p - h grad h / |grad h|^2), for plots and errors
 //     shape: circle (center_x, center_y, radius) | line (point_x, point_y, normal_x,
 //     normal_y) | ellipse (center_x, center_y, a, b, phi) | polynomial (terms: list of
 //     [i, j, c] for c x^i y^j)                                                    003 section 2
 //   heading_observer (estimator)  in position {x, y}, cmd {v, omega};
-//     out estimate {theta, z3, z4, L}                                   000 Thm 1, eqs. (5)-(11)
+//     out heading {theta, z3, z4, L} (HeadingEstimate)                 000 Thm 1, eqs. (5)-(11)
 //     (theta = atan2(z4, z3) made continuous in time, starting in (-pi, pi], so it
 //     overlays the plant's continuous theta; L is the gain, for observer_rate_bound)
 //     L (required), discretisation: exact_arc | held_position, z3_0, z4_0 (0)
 //   velocity_heading_observer     in position {x, y}, cmd {omega};
-//     out estimate {theta, speed, z2, z4}                               003 Thm 1, eqs. (11)-(14)
+//     out heading {theta, speed, z2, z4} (HeadingEstimate)             003 Thm 1, eqs. (11)-(14)
 //     L2, L4 (required), discretisation, z2_0, z4_0 (0)
 //   reference_feedforward (ctl)   in reference; out cmd {v = |p_r'|, omega = heading rate of p_r}
-//   trajectory_tracking (ctl)     in reference, and state {x, y, theta} (feedback: state,
-//     000 eq. (14)) or position {x, y} + estimate {z3, z4} (feedback: output, eqs. (27)-(28));
-//     out cmd {v, omega}. k1, k2, k3 (required), gamma (0.9), min_speed_for_turn (1e-3),
-//     reference_min_speed (m/s; default: the v_rm a figure_eight_reference constructed
-//     earlier in this process published for the signal the reference port reads)
-//   path_following (ctl)          in path, and state {theta} (feedback: state, 003 eq. (5))
-//     or estimate {z2, z4} (feedback: observer, eqs. (15)-(16)); out cmd {v = u1, omega = u2}
+//   trajectory_tracking (ctl)     in reference, and truth/state {x, y, theta} (feedback: state,
+//     000 eq. (14)) or position {x, y} + heading {z3, z4} (feedback: output, eqs. (27)-(28));
+//     out cmd {v, omega} (UnicycleCommand). k1, k2, k3 (required), gamma (0.9), min_speed_for_turn (1e-3),
+//     reference_min_speed (m/s, the reference's lowest speed v_rm: gain condition (15) is
+//     checked against it at start; none: not checked)
+//   path_following (ctl)          in path, and truth/state {theta} (feedback: state, 003 eq. (5))
+//     or heading {z2, z4} (feedback: observer, eqs. (15)-(16)); out cmd {v = u1, omega = u2}
 //     u1 (m/s, != 0), k1, k2 (required), min_abs_g (1e-3), max_turn_rate (inf)
 //
 // Estimators and controllers update when their position input carries a new sample (so a
@@ -66,13 +68,6 @@ spdlog::logger& unicycle_log() {
     return l ? l : spdlog::stderr_color_mt("scenario.unicycle");
   }();
   return *logger;
-}
-
-/// Lower speed bounds v_rm of the references built in this process, by output signal, so a
-/// tracking controller can check gain condition (15) against the reference it reads.
-std::map<std::string, double>& reference_min_speeds() {
-  static std::map<std::string, double> table;
-  return table;
 }
 
 alg::ObserverDiscretisation discretisation(const YamlMap& p) {
@@ -122,7 +117,7 @@ class PositionSensorComponent final : public Component {
  public:
   explicit PositionSensorComponent(const ComponentConfig& c)
       : Component(c), sensor_(params(c)), rng_(sensor_.make_rng()),
-        in_(add_input("truth/state", {"x", "y"})), out_(add_output(c.key, {"x", "y"}, "PositionMeasurement")) {}
+        in_(add_input("truth/state", {"x", "y"}, "Pose2D")), out_(add_output(c.key, {"x", "y"}, "PositionMeasurement")) {}
 
   void step(int64_t /*k*/, double /*t*/) override {
     const Eigen::Vector2d m = sensor_.measure(vec2(in_), rng_);
@@ -161,9 +156,7 @@ class PositionSensorComponent final : public Component {
 class FigureEightComponent final : public Component {
  public:
   explicit FigureEightComponent(const ComponentConfig& c)
-      : Component(c), ref_(params(c.params())), out_(add_output("reference", {"x", "y", "dx", "dy", "ddx", "ddy"}, "PlanarReference")) {
-    reference_min_speeds()[out_.signal()] = ref_.min_speed();
-  }
+      : Component(c), ref_(params(c.params())), out_(add_output("reference", {"x", "y", "dx", "dy", "ddx", "ddy"}, "PlanarReference")) {}
 
   void step(int64_t /*k*/, double t) override {
     const alg::ReferenceSample r = ref_.sample(t);
@@ -192,7 +185,7 @@ class FigureEightComponent final : public Component {
 class GeometricPathComponent final : public Component {
  public:
   explicit GeometricPathComponent(const ComponentConfig& c)
-      : Component(c), path_(shape(c.params())), in_(add_input("position", {"x", "y"})),
+      : Component(c), path_(shape(c.params())), in_(add_input("position", {"x", "y"}, "PositionMeasurement")),
         out_(add_output("path", {"x", "y", "h", "hx", "hy", "hxx", "hxy", "hyy"}, "PathSample")) {}
 
   void step(int64_t /*k*/, double /*t*/) override {
@@ -249,8 +242,8 @@ class HeadingObserverComponent final : public Component {
         obs_({c.params().required<double>("L"), discretisation(c.params())}),
         z0_(c.params().optional<double>("z3_0", 0.0), c.params().optional<double>("z4_0", 0.0)),
         base_step_(c.base_step),
-        pos_(add_input("position", {"x", "y"})),
-        cmd_(add_input("cmd", {"v", "omega"})),
+        pos_(add_input("position", {"x", "y"}, "PositionMeasurement")),
+        cmd_(add_input("cmd", {"v", "omega"}, "UnicycleCommand")),
         out_(add_output("heading", {"theta", "z3", "z4", "L"}, "HeadingEstimate")) {}
 
   void step(int64_t /*k*/, double /*t*/) override {
@@ -282,8 +275,8 @@ class VelocityHeadingObserverComponent final : public Component {
         obs_({c.params().required<double>("L2"), c.params().required<double>("L4"), discretisation(c.params())}),
         z0_(c.params().optional<double>("z2_0", 0.0), c.params().optional<double>("z4_0", 0.0)),
         base_step_(c.base_step),
-        pos_(add_input("position", {"x", "y"})),
-        cmd_(add_input("cmd", {"omega"})),
+        pos_(add_input("position", {"x", "y"}, "PositionMeasurement")),
+        cmd_(add_input("cmd", {"omega"}, "UnicycleCommand")),
         out_(add_output("heading", {"theta", "speed", "z2", "z4"}, "HeadingEstimate")) {}
 
   void step(int64_t /*k*/, double /*t*/) override {
@@ -325,7 +318,7 @@ const std::vector<std::string> kReferenceFields{"x", "y", "dx", "dy", "ddx", "dd
 class ReferenceFeedforward final : public Component {
  public:
   explicit ReferenceFeedforward(const ComponentConfig& c)
-      : Component(c), ref_(add_input("reference", kReferenceFields)), out_(add_output("cmd", {"v", "omega"}, "UnicycleCommand")) {}
+      : Component(c), ref_(add_input("reference", kReferenceFields, "PlanarReference")), out_(add_output("cmd", {"v", "omega"}, "UnicycleCommand")) {}
 
   void step(int64_t /*k*/, double /*t*/) override {
     const alg::ReferenceSample r = reference_sample(ref_);
@@ -345,11 +338,12 @@ class TrajectoryTrackingComponent final : public Component {
       : Component(c),
         output_feedback_(is_second(c.params(), "feedback", "state", "output")),
         ctl_(params(c.params())),
-        ref_(add_input("reference", kReferenceFields)),
+        ref_(add_input("reference", kReferenceFields, "PlanarReference")),
         pos_(add_input(output_feedback_ ? "position" : "truth/state",
                        output_feedback_ ? std::vector<std::string>{"x", "y"}
-                                        : std::vector<std::string>{"x", "y", "theta"})),
-        est_(output_feedback_ ? &add_input("heading", {"z3", "z4"}) : nullptr),
+                                        : std::vector<std::string>{"x", "y", "theta"},
+                       output_feedback_ ? "PositionMeasurement" : "Pose2D")),
+        est_(output_feedback_ ? &add_input("heading", {"z3", "z4"}, "HeadingEstimate") : nullptr),
         out_(add_output("cmd", {"v", "omega"}, "UnicycleCommand")) {
     check_gain_condition(c);
   }
@@ -382,13 +376,11 @@ class TrajectoryTrackingComponent final : public Component {
     if (c.params().has("reference_min_speed")) {
       v_rm = c.params().required<double>("reference_min_speed");
       if (!(*v_rm > 0.0)) c.params().fail("reference_min_speed", "must be > 0 m/s");
-    } else if (auto it = reference_min_speeds().find(ref_.signal()); it != reference_min_speeds().end()) {
-      v_rm = it->second;
     }
     if (!v_rm) {
-      unicycle_log().warn("{}: gain condition (15) of paper 000 not checked: no lower speed bound known for {} "
-                 "(set reference_min_speed, or declare a figure_eight_reference before this controller)",
-                 c.name, ref_.signal());
+      unicycle_log().info("{}: gain condition (15) of paper 000 not checked: set reference_min_speed (m/s), the "
+                          "lowest speed of the reference {} (a figure-eight's: h1 h2 sqrt(31) / 8)",
+                          c.name, ref_.signal());
       return;
     }
     if (const auto warning = alg::check_gain_condition(ctl_.params(), *v_rm))
@@ -410,8 +402,8 @@ class PathFollowingComponent final : public Component {
         observer_(is_second(c.params(), "feedback", "state", "observer")),
         u1_(c.params().required<double>("u1")),
         ctl_(params(c.params())),
-        path_(add_input("path", {"h", "hx", "hy", "hxx", "hxy", "hyy"})),
-        vel_(observer_ ? add_input("heading", {"z2", "z4"}) : add_input("truth/state", {"theta"})),
+        path_(add_input("path", {"h", "hx", "hy", "hxx", "hxy", "hyy"}, "PathSample")),
+        vel_(observer_ ? add_input("heading", {"z2", "z4"}, "HeadingEstimate") : add_input("truth/state", {"theta"}, "Pose2D")),
         out_(add_output("cmd", {"v", "omega"}, "UnicycleCommand")) {
     if (!(std::isfinite(u1_) && u1_ != 0.0)) c.params().fail("u1", "must be finite and != 0 m/s");
   }

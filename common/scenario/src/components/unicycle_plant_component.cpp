@@ -6,7 +6,7 @@
 //   omega_noise_std        v + N(0, v_noise_std^2), omega + N(0, omega_noise_std^2), drawn
 //                          from the plant's own seed (v first, then omega)
 //   input  cmd   {v, omega}     held over each plant period (the latest command before the step)
-//   output state {x, y, theta}  theta continuous (not wrapped)
+//   output truth/state {x, y, theta} (Pose2D)  theta continuous (not wrapped)
 #include <memory>
 
 #include "plexus/algorithms/core/random.hpp"
@@ -27,7 +27,7 @@ class UnicyclePlantComponent final : public Component {
         v_noise_(optional_non_negative(c.params(), "v_noise_std")),
         omega_noise_(optional_non_negative(c.params(), "omega_noise_std")),
         rng_(c.seed),
-        cmd_(add_input("cmd", {"v", "omega"})),
+        cmd_(add_input("cmd", {"v", "omega"}, "UnicycleCommand")),
         out_(add_output("truth/state", {"x", "y", "theta"}, "Pose2D")) {}
 
   void step(int64_t k, double /*t*/) override {
@@ -53,7 +53,7 @@ class UnicyclePlantComponent final : public Component {
 };
 
 const ComponentRegistration kUnicycle{
-    "unicycle", ComponentKind::plant, "unicycle kinematics, exact integration; in cmd {v, omega}, out state {x, y, theta}",
+    "unicycle", ComponentKind::plant, "unicycle kinematics, exact integration; in cmd {v, omega}, out truth/state {x, y, theta}",
     [](const ComponentConfig& c) { return std::make_unique<UnicyclePlantComponent>(c); }};
 
 }  // namespace

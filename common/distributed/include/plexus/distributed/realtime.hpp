@@ -2,7 +2,8 @@
 //
 //  - Each host runs its components in one absolute-deadline loop at the base rate
 //    (PeriodicLoop); a component runs at the ticks its period divides.
-//  - An input from another process is the latest sample received on `sig/<signal>`; a read
+//  - An input from another process is the latest sample received on its typed topic
+//    `<signal>` (wire.hpp: data times are wall-clock times on the run's grid); a read
 //    that finds an older sample than the step the sim would read is counted as late. It is
 //    stale when it is older than `input_deadline_periods` periods of its producer (scenario
 //    `clock.input_deadline_periods`, default 3), or has never arrived.
@@ -22,8 +23,10 @@
 //    costs that input one period. Hosts on different machines share the grid as well as
 //    their clocks agree.
 //  - Every host publishes a Heartbeat with its loop statistics on `health/<service>` once a
-//    second, and starts only when the launcher's start signal (ClockStep 0 on
-//    `lockstep/clock`) arrives, so all processes begin together.
+//    second. Under `plexus launch` it starts when the launcher's start signal (ClockStep 0
+//    on `lockstep/clock`) arrives, so all processes begin together; a service started on its
+//    own starts at once and runs until it is stopped (its controllers hold their safe output
+//    until their inputs arrive).
 #pragma once
 
 #include <atomic>
@@ -58,10 +61,17 @@ double stage_phase(const scenario::Scenario& sc, const std::vector<bool>& hosted
 
 /// The QoS profile of a signal: its producer's `qos` key, else "state".
 const rt::QosProfile& signal_qos(const scenario::Scenario& sc, const std::string& producer, const rt::QosProfiles& profiles);
+/// The QoS profile a reader uses for a signal: its producer's, from the part's `inputs:` when
+/// the producer runs in another process.
+const rt::QosProfile& input_qos(const scenario::Scenario& sc, const scenario::SignalSpec& spec,
+                                const rt::QosProfiles& profiles);
 
 struct RealtimeOptions {
   std::string service;           ///< name in heartbeats and logs
   rt::LoopOptions loop;          ///< rate_hz is set from the scenario's base step
+  /// Under `plexus launch`: wait for the launcher's start signal (the run's common grid).
+  /// Alone: start at once, on a grid of its own.
+  bool wait_for_start = false;
   double start_timeout_s = 30;   ///< longest wait for the launcher's start signal
 };
 
@@ -81,7 +91,7 @@ class RealtimeHost {
                const rt::QosProfiles& profiles, RealtimeOptions options);
   ~RealtimeHost();
 
-  /// Waits for the start signal, then runs scenario.steps + 1 ticks (or until `stop`).
+  /// Waits for the start signal (if asked to), then runs scenario.steps + 1 ticks (or until `stop`).
   RealtimeReport run(const std::atomic<bool>& stop);
 
  private:

@@ -8,9 +8,11 @@
 // component that produces or reads that type, and a program written against idl/ alone
 // sees ordinary named members (x, y; position[i]), never a positional array.
 //
-// The step a sample belongs to travels in its header: data_time_ns = step * step_ns (sim
-// time in lockstep; a native producer in realtime sets its own clock there, and consumers
-// use only differences). Members the signal does not use are zero.
+// The step a sample belongs to travels in its header: data_time_ns = epoch + step * step_ns,
+// where the epoch is 0 in lockstep (sim time) and the run's start on the wall clock in
+// realtime (so data time is the wall-clock time of the sample, and a native producer simply
+// stamps CLOCK_REALTIME there: its samples land on the nearest step of the run's grid).
+// Members the signal does not use are zero.
 //
 // Decoding is the edge check of every input (DESIGN.md "Bad input"): a sample with a
 // negative time, a non-finite or out-of-range member or a wrong joint count is refused
@@ -71,6 +73,8 @@ class WireSignal {
 
   const scenario::SignalSpec& spec() const { return *spec_; }
   const WireType& type() const { return *type_; }
+  /// Realtime: the wall-clock time (ns) of step 0. Lockstep: 0 (the default).
+  void set_epoch(int64_t epoch_ns) { epoch_ns_ = epoch_ns; }
   const msg::TypeSupport& support() const { return *type_->support; }
   MessagePtr make_message() const;
 
@@ -78,7 +82,8 @@ class WireSignal {
   /// header's origin, sequence number and publish time alone.
   void encode(const scenario::SignalSample& s, void* message) const;
   /// Reads `message` into `s`, or says why not (then `s` is untouched); `bad_field` is the
-  /// index of the offending field for non_finite and out_of_range.
+  /// index of the offending field for non_finite and out_of_range. The step is the nearest
+  /// one to the data time (negative for a sample from before the epoch: not yet valid).
   Rejection decode(const void* message, scenario::SignalSample& s, std::size_t& bad_field) const;
   /// The value of field i in `message` (for error messages).
   double value(const void* message, std::size_t field) const;
@@ -89,6 +94,7 @@ class WireSignal {
   std::vector<const WireSlot*> slots_;  // by field
   uint16_t count_ = 0;                  // joint messages: entries used
   int64_t step_ns_;
+  int64_t epoch_ns_ = 0;
 };
 
 /// Publishes one signal as its message type. publish() stamps the header as

@@ -48,6 +48,10 @@ struct ComponentConfig {
   uint64_t seed = 0;       ///< its own seed (given, or derived from the scenario seed and `name`)
   std::map<std::string, std::string> remap;  ///< port -> signal name overrides from the scenario
   const YamlMap* section = nullptr;  ///< its YAML section: read your parameters from here
+  /// Folder that relative file parameters are resolved against: the scenario file's (for a
+  /// launched process, the original scenario's, not its part's; for a service on its own,
+  /// its parameter file's).
+  std::string base_dir;
 
   /// Period in seconds (period_steps * base_step).
   double period() const { return static_cast<double>(period_steps) * base_step; }
@@ -81,11 +85,17 @@ class Port {
 /// An input: the latest sample of its signal that is due at this step (see executor.hpp).
 class InputPort : public Port {
  public:
-  using Port::Port;
+  InputPort(std::string port, std::string signal, std::vector<std::string> fields, std::string message)
+      : Port(std::move(port), std::move(signal), std::move(fields)), message_(std::move(message)) {}
+  /// The IDL message type it expects from another process; empty: only from its own process.
+  const std::string& message() const { return message_; }
   /// Field i, in the order the component declared its fields.
   double operator[](std::size_t i) const { return sample_.values[i]; }
   /// False until the producer has produced its first sample.
   bool valid() const { return sample_.step >= 0; }
+
+ private:
+  std::string message_;
 };
 
 /// An output: the component writes every field at each of its steps.
@@ -123,8 +133,10 @@ class Component {
   const std::vector<std::unique_ptr<OutputPort>>& outputs() const { return outputs_; }
 
  protected:
-  /// Declares an input port that reads `fields` (by name) of the signal the port binds to.
-  InputPort& add_input(const std::string& port, std::vector<std::string> fields);
+  /// Declares an input port that reads `fields` (by name) of the signal the port binds to,
+  /// which arrives from another process as the IDL type `message` (empty: it must be
+  /// produced in the same process).
+  InputPort& add_input(const std::string& port, std::vector<std::string> fields, std::string message);
   /// Declares an output port producing a signal with these fields, carried between
   /// processes as the IDL message type `message` ("Pose2D"; empty: in process only).
   OutputPort& add_output(const std::string& port, std::vector<std::string> fields, std::string message);

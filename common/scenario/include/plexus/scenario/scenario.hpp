@@ -40,6 +40,15 @@ struct ScenarioComponent {
   std::string restart = "on_failure";
 };
 
+/// A signal this document reads but does not produce: a part of a scenario (one process's
+/// share, written by `plexus launch`) or a service run on its own. Top-level `inputs:` key.
+struct ExternalInput {
+  int64_t period_steps = 0;  ///< the producer's period (0: the reading component's own)
+  ComponentKind stage = ComponentKind::plant;  ///< the producer's stage: a reader in the same or an earlier stage reads it one step late
+  bool staged = false;       ///< stage given (else: read without delay)
+  std::string qos;           ///< the producer's QoS profile (empty: "state")
+};
+
 struct ScenarioMetric {
   std::string name;
   std::string type;
@@ -48,6 +57,8 @@ struct ScenarioMetric {
 
 struct Scenario {
   std::string file;
+  /// Folder of relative file parameters: the file's, or a part's top-level `base_dir`.
+  std::string base_dir;
   YAML::Node resolved;  ///< the tree after overrides, with derived seeds written in
   std::string name;
   std::string description;
@@ -64,16 +75,40 @@ struct Scenario {
   std::map<std::string, std::string> host_address;  ///< host -> address ("" if not given)
   /// In execution order: by stage (ComponentKind), then in document order.
   std::vector<ScenarioComponent> components;
-  std::vector<SignalSpec> signals;  ///< every signal, in component order
+  std::vector<SignalSpec> signals;  ///< every signal, in component order (then external inputs)
+  /// A part of a scenario (one process's components, or one service on its own): inputs no
+  /// component produces are read from other processes, scheduled by `inputs` (else at the
+  /// reader's own rate), and `robots` may be absent. A whole scenario (false) refuses them.
+  bool partial = false;
+  std::map<std::string, ExternalInput> inputs;  ///< by signal name
+  /// Runs until stopped (a service on its own: no `duration`); steps is then kUntilStopped.
+  bool until_stopped = false;
   std::vector<ScenarioMetric> metrics;
   std::vector<Expectation> expectations;
 };
 
+/// Steps of a run that goes on until it is stopped (Scenario::until_stopped).
+inline constexpr int64_t kUntilStopped = int64_t{1} << 60;
+
+struct LoadOptions {
+  /// A part of a scenario (Scenario::partial): `robots` optional, services' `robot` any name,
+  /// top-level `inputs:` allowed, `duration` optional (absent: until stopped), `seed`
+  /// optional (0), no metrics or expectations.
+  bool partial = false;
+};
+
 /// Loads, overrides and validates a scenario file; throws InputError (exit 2) for any problem.
-Scenario load_scenario(const std::string& path, const std::vector<Override>& overrides = {});
+Scenario load_scenario(const std::string& path, const std::vector<Override>& overrides = {}, LoadOptions options = {});
 
 /// Same, from YAML text; `origin` names it in errors.
 Scenario load_scenario_text(const std::string& text, const std::string& origin,
-                            const std::vector<Override>& overrides = {});
+                            const std::vector<Override>& overrides = {}, LoadOptions options = {});
+
+/// Same, from a YAML tree (a service's parameters embedded in a document it builds).
+Scenario load_scenario_tree(YAML::Node root, const std::string& origin, const std::vector<Override>& overrides = {},
+                            LoadOptions options = {});
+
+/// Parses a stage name ("plant" .. "controller"); false if unknown.
+bool parse_component_kind(const std::string& name, ComponentKind& kind);
 
 }  // namespace plexus::scenario

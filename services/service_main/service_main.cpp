@@ -1,0 +1,212 @@
+// The one main() of every plexus service executable (plant_simulator, localisation_observer,
+// motion_controller, terrain_classifier, icr_estimator, attitude_filter, joint_controller,
+// component_host): it builds the components this process hosts, and only those, from its
+// own parameters, then runs them on DDS in realtime (the default) or lockstep.
+//
+// On its own, from its parameters (a service is a program a stranger can deploy):
+//   localisation_observer --robot r1 --params observer.yaml --set L=0.6
+//   plant_simulator --robot r1 --params robot.yaml --step 0.001
+// It starts at once, publishes its heartbeat on health/<service>, holds its safe output
+// while an input is stale, and runs until SIGINT/SIGTERM, then exits 0. Its topics are the
+// typed topics of docs/topics.md, so anything that speaks idl/ can feed and read it.
+//
+// Under `plexus launch`: --part FILE, this process's part of the scenario (its components
+// and the schedule of the inputs other processes produce), --start-signal to tick on the
+// run's common grid, --mode lockstep to step with the launcher's clock.
+//
+// Bad parameters: one line naming file, line and key, exit 2.
+#include <sys/prctl.h>
+
+#include <CLI/CLI.hpp>
+
+#include <csignal>
+#include <cstdio>
+#include <set>
+#include <sstream>
+
+#include "plexus/base/input_error.hpp"
+#include "plexus/base/logging.hpp"
+#include "plexus/base/yaml_reader.hpp"
+#include "plexus/distributed/lockstep.hpp"
+#include "plexus/distributed/realtime.hpp"
+#include "plexus/distributed/service_catalog.hpp"
+#include "plexus/scenario/overrides.hpp"
+
+namespace {
+
+std::atomic<bool> g_stop{false};
+void on_signal(int) { g_stop = true; }
+
+constexpr const char* kName = PLEXUS_SERVICE_NAME;
+constexpr bool kPlant = std::string_view(kName) == "plant_simulator";
+
+std::set<std::string> split(const std::string& csv) {
+  std::set<std::string> out;
+  std::stringstream ss(csv);
+  for (std::string item; std::getline(ss, item, ',');)
+    if (!item.empty()) out.insert(item);
+  return out;
+}
+
+/// What a service started on its own runs: its parameters as the one component of a part
+/// document (a robot's plant and sensors for the plant simulator).
+struct Standalone {
+  std::string robot = "r1";
+  std::string name;
+  std::string type;
+  std::string params_file;
+  double step = 0.0;
+  std::vector<std::string> input_rates;  ///< PORT=HZ: an input's producer rate (default: its own)
+};
+
+plexus::scenario::Scenario load_standalone(const Standalone& s, const std::vector<std::string>& sets, bool realtime) {
+  using namespace plexus;
+  YAML::Node params = s.params_file.empty() ? YAML::Node(YAML::NodeType::Map) : load_yaml_file(s.params_file);
+  const std::string origin = s.params_file.empty() ? std::string(kName) + " (command line)" : s.params_file;
+  if (!params.IsMap()) throw InputError(origin + ": expected a map of parameters");
+  YAML::Node root(YAML::NodeType::Map);
+  root["name"] = s.name;
+  if (!realtime) root["clock"]["mode"] = "lockstep";
+  else root["clock"]["mode"] = "realtime";
+  std::string prefix;
+  double step = s.step;
+  if (kPlant) {
+    root["robots"][s.robot] = params;
+    prefix = "robots." + s.robot + ".";
+    if (step <= 0.0) step = 0.001;
+  } else {
+    if (!params["type"] && !s.type.empty()) params["type"] = s.type;
+    if (!params["robot"]) params["robot"] = s.robot;
+    root["services"][s.name] = params;
+    prefix = "services." + s.name + ".";
+    // One base step per period of its own rate, unless given.
+    if (step <= 0.0) step = params["rate"] && params["rate"].IsScalar() ? 1.0 / params["rate"].as<double>(100.0) : 0.01;
+  }
+  root["step"] = step;
+  for (const auto& in : s.input_rates) {
+    const auto eq = in.find('=');
+    if (eq == std::string::npos || eq == 0) throw InputError("--input-rate " + in + ": expected PORT=HZ");
+    const std::string port = in.substr(0, eq);
+    root["inputs"][port.find('/') == std::string::npos ? s.robot + "/" + port : port]["rate"] = in.substr(eq + 1);
+  }
+  std::vector<scenario::Override> overrides;
+  for (const auto& a : sets) overrides.push_back(scenario::parse_override(prefix + a));  // --set L=0.6: its own key
+  return scenario::load_scenario_tree(root, origin, overrides, {.partial = true});
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace plexus;
+  const std::string about = std::string(kName) +
+                            ": a plexus service over DDS, on its own (--robot, --params, --set) or as part of `plexus "
+                            "launch` (--part). Topics: docs/topics.md";
+  CLI::App app{about};
+  std::string part_file, dds = "fast", qos_file, profile = "lockstep", log_level = "warn", mode = "realtime", service;
+  int priority = 0, cpu = -1;
+  std::string interface_address = "127.0.0.1", peers = "127.0.0.1";
+  std::vector<std::string> sets;
+  int domain = 0;
+  double timeout = 10.0;
+  bool start_signal = false;
+  Standalone alone;
+  alone.name = kName;
+  const auto& catalog = distributed::service_catalog();
+  for (const auto& entry : catalog)
+    if (entry.name == std::string_view(kName)) alone.type = std::string(entry.types.front());
+  app.add_option("--part", part_file, "This process's part of a scenario (written by plexus launch)");
+  app.add_option("--robot", alone.robot, "Robot whose topics it uses (<robot>/<topic>; default r1)");
+  app.add_option("--name", alone.name, "Service name (default: the executable's)");
+  app.add_option("--params", alone.params_file,
+                 kPlant ? "YAML robot section: plant and sensors (docs/scenarios.md)"
+                        : "YAML parameters of the service (the keys of its scenario section, docs/scenarios.md)");
+  if (!kPlant) app.add_option("--type", alone.type, "Component type (default: " + alone.type + ")");
+  app.add_option("--step", alone.step, "Base step in s (default: 1 / its rate; plant_simulator 0.001)");
+  app.add_option("--input-rate", alone.input_rates,
+                 "PORT=HZ: the rate an input is produced at, when not its own (staleness: 3 of its periods)");
+  app.add_option("--set", sets, "Parameter override key=value (with --part: dotted.key=value of the part)");
+  app.add_option("--dds", dds, "DDS vendor: fast or cyclone");
+  app.add_option("--domain", domain, "DDS domain id");
+  app.add_option("--qos-file", qos_file, "QoS profiles (default deploy/qos.yaml)");
+  app.add_option("--profile", profile, "QoS profile of the lockstep topics");
+  app.add_option("--timeout", timeout, "Lockstep: seconds to wait for one input before failing");
+  app.add_option("--mode", mode, "realtime (default) or lockstep (steps with a plexus launch clock)")
+      ->check(CLI::IsMember({"lockstep", "realtime"}));
+  app.add_flag("--start-signal", start_signal, "Realtime: wait for the launcher's start signal (plexus launch)");
+  app.add_option("--service", service, "Name in heartbeats and logs (default: executable and service name)");
+  app.add_option("--priority", priority, "Realtime: SCHED_FIFO priority (0: normal scheduling)");
+  app.add_option("--cpu", cpu, "Realtime: pin the loop to this CPU");
+  app.add_option("--interface", interface_address, "Address of the one interface DDS uses (default 127.0.0.1)");
+  app.add_option("--peers", peers, "Comma-separated unicast discovery peers (default 127.0.0.1)");
+  app.add_option("--log-level", log_level, "trace, debug, info, warn, error");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? 0 : kExitBadInput;
+  }
+  if (!part_file.empty()) prctl(PR_SET_PDEATHSIG, SIGTERM);  // under the launcher: never outlive it
+  std::signal(SIGINT, on_signal);
+  std::signal(SIGTERM, on_signal);
+  try {
+    init_logging(kName, "", log_level);
+    const bool realtime = mode == "realtime";
+    scenario::Scenario sc;
+    if (!part_file.empty()) {
+      std::vector<scenario::Override> overrides;
+      for (const auto& s : sets) overrides.push_back(scenario::parse_override(s));
+      sc = scenario::load_scenario(part_file, overrides, {.partial = true});
+    } else {
+      sc = load_standalone(alone, sets, realtime);
+    }
+    // Each executable hosts its own component types (component_host: any).
+    std::string hosted_names;
+    for (const auto& c : sc.components) {
+      hosted_names += (hosted_names.empty() ? "" : ",") + c.component->name();
+      const bool physical = c.kind == scenario::ComponentKind::plant || c.kind == scenario::ComponentKind::sensor;
+      if (kPlant != physical && std::string_view(kName) != "component_host")
+        throw InputError(c.where + ": '" + c.component->name() + "' is a " + c.type + ", which " + kName +
+                         " does not host (it runs in " + (physical ? "plant_simulator" : distributed::executable_for(c.type)) + ")");
+      if (!kPlant && std::string_view(kName) != "component_host" && distributed::executable_for(c.type) != kName)
+        throw InputError(c.where + ": '" + c.component->name() + "' is a " + c.type + ", which " + kName +
+                         " does not host (it runs in " + distributed::executable_for(c.type) + ")");
+    }
+    if (sc.components.empty()) throw InputError(sc.file + ": no component to run");
+    const std::vector<bool> hosted(sc.components.size(), true);
+
+    rt::ParticipantOptions po;
+    po.vendor = rt::parse_vendor(dds);
+    po.domain_id = domain;
+    po.name = !service.empty() ? service : std::string(kName) + " " + hosted_names;
+    po.network.interface_address = interface_address;
+    const auto peer_set = split(peers);
+    po.network.peers.assign(peer_set.begin(), peer_set.end());
+    const auto profiles = rt::QosProfiles::load(qos_file.empty() ? rt::default_qos_file() : qos_file);
+    auto participant = rt::Participant::create(po);
+    if (realtime) {
+      distributed::RealtimeOptions ro;
+      ro.service = po.name;
+      ro.loop.priority = priority;
+      ro.loop.cpu = cpu;
+      ro.wait_for_start = start_signal;
+      distributed::RealtimeHost host(sc, hosted, *participant, profiles, ro);
+      const auto r = host.run(g_stop);
+      spdlog::info("ran {} ticks: {} holds, {} stale and {} late input reads, {} refused samples, jitter p99 {:.1f} us, "
+                   "{} overruns",
+                   r.ticks, r.holds, r.stale_inputs, r.late_inputs, r.rejected_inputs, r.loop.jitter_p99_us, r.loop.overruns);
+      return 0;
+    }
+    distributed::LockstepHost host(sc, hosted, *participant, profiles.get(profile), {.timeout_s = timeout});
+    const int64_t steps = host.run(g_stop);
+    spdlog::info("ran {} steps", steps);
+    return 0;
+  } catch (const InputError& e) {
+    std::fprintf(stderr, "%s: error: %s\n", kName, e.what());
+    return kExitBadInput;
+  } catch (const distributed::LockstepError& e) {
+    std::fprintf(stderr, "%s: %s\n", kName, e.what());
+    return 1;
+  } catch (const std::exception& e) {  // a DDS entity that cannot be created, for one
+    std::fprintf(stderr, "%s: failed: %s\n", kName, e.what());
+    return 1;
+  }
+}
