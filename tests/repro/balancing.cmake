@@ -26,8 +26,18 @@ balance_variant(rate_200hz --set step=0.005 --set robots.r1.sensors.imu.rate=200
 balance_variant(imu_50hz --set robots.r1.sensors.imu.rate=50)
 balance_variant(noisier_sensors --set robots.r1.sensors.imu.gyro_noise_degps=1.0
                 --set robots.r1.sensors.imu.accel_noise=0.05)
-balance_variant(heavier_taller_robot --set robots.r1.plant.body_mass=6 --set robots.r1.plant.com_height=0.25
+# Another robot: the filters and the controller carry the robot's model as their own
+# parameters (a service runs alone), so the variant sets it on each of them as on the plant.
+set(BAL_HEAVIER --set robots.r1.plant.body_mass=6 --set robots.r1.plant.com_height=0.25
                 --set robots.r1.plant.body_inertia=0.1 --set robots.r1.sensors.imu.accel_height=0.25)
+foreach(f ukf ukf_additive ekf paper_ukf paper_ukf_additive paper_ekf balance)
+  list(APPEND BAL_HEAVIER --set services.${f}.body_mass=6 --set services.${f}.com_height=0.25
+                          --set services.${f}.body_inertia=0.1)
+endforeach()
+foreach(f ukf ukf_additive ekf paper_ukf paper_ukf_additive paper_ekf)
+  list(APPEND BAL_HEAVIER --set services.${f}.accel_height=0.25)
+endforeach()
+balance_variant(heavier_taller_robot ${BAL_HEAVIER})
 balance_variant(small_alpha --set services.ukf.alpha=0.1 --set services.ukf_additive.alpha=0.1)
 
 # Bad balancing parameters are input errors (exit 2) naming the file, line and key.

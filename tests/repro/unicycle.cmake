@@ -44,9 +44,10 @@ add_test(NAME repro.wmr_gain_condition_warning
                  "-DEXPECT_STDERR=^[^\n]*warning[^\n]*gain condition \\(15\\) of paper 000 violated: k1\\^2 \\+ k2\\^2 = 0\\.0242 [^\n]*v_rm = 0\\.0695[^\n]*15\\.2[0-9]*x over[^\n]*\n$"
                  -P ${PROJECT_SOURCE_DIR}/common/scenario/tests/cli/expect_cli.cmake)
 set_tests_properties(repro.wmr_gain_condition_warning PROPERTIES LABELS "repro")
-# ... and the check follows the configured reference: 10x faster, v_rm = 0.696 m/s, no warning.
+# ... and the check follows the controller's reference_min_speed (its own parameter: the
+# reference runs in another process): the reference 10x faster, v_rm = 0.696 m/s, no warning.
 unicycle_repro(wmr_gain_condition_follows_reference wmr_state_feedback --set services.reference.h2=0.2
-               --set step=0.001)
+               --set services.controller.reference_min_speed=0.696 --set step=0.001)
 set_tests_properties(repro.wmr_gain_condition_follows_reference PROPERTIES FAIL_REGULAR_EXPRESSION "gain condition")
 
 # ---- paper 000 section 6.3.1: output feedback, exact positions; final_error_m <= 1e-3

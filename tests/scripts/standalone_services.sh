@@ -28,6 +28,16 @@ run_family() {
     i=$((i + 1))
   done
   sleep "$seconds"
+  if [ "$family" = unicycle ]; then
+    # The contract seen from outside: the observer's topic read by name, on both vendors
+    # (the services run on Fast DDS).
+    for v in fast cyclone; do
+      echo_out=$("$bin/plexus" topic echo r1/heading --dds "$v" --domain "$domain" --count 1 --wait 5 --json 2>&1)
+      echo "topic echo r1/heading ($v): $echo_out"
+      echo "$echo_out" | grep -q '"heading":' && echo "$echo_out" | grep -q '"direction":' ||
+        { echo "FAIL: topic echo r1/heading on $v shows no named fields"; fail=1; }
+    done
+  fi
   kill -TERM "${pids[@]}" 2>/dev/null
   for j in "${!pids[@]}"; do
     wait "${pids[$j]}"

@@ -6,6 +6,9 @@
 #include <set>
 #include <stdexcept>
 
+#include <spdlog/sinks/stdout_color_sinks.h>
+#include <spdlog/spdlog.h>
+
 #include "plexus/base/input_error.hpp"
 #include "plexus/base/yaml_reader.hpp"
 #include "plexus/scenario/digest.hpp"
@@ -46,6 +49,7 @@ struct Loader {
   std::set<std::string> hosts;
   std::set<std::string> robot_names;
   std::vector<std::pair<YAML::Node, uint64_t>> derived_seeds;  // written into the resolved tree
+  std::vector<std::string> warnings;                            // components' warnings, logged once valid
 
   int64_t period_of(const YamlMap& section) const {
     if (!section.has("rate")) return 1;
@@ -84,6 +88,7 @@ struct Loader {
     }
     cfg.base_step = sc.step;
     cfg.base_dir = sc.base_dir;
+    cfg.warnings = &warnings;
     cfg.period_steps = period_of(section);
     if (section.has("seed")) {
       const long long seed = section.required<long long>("seed");
@@ -331,8 +336,14 @@ Scenario load_root(YAML::Node root, const std::string& origin, const std::vector
   try {
     apply_overrides(root, overrides);
     sc.resolved = root;
-    Loader loader{sc, {}, {}, {}};
+    Loader loader{sc, {}, {}, {}, {}};
     loader.load(YamlMap(root, origin));
+    // Valid: now the components' warnings (on stderr: stdout carries `plexus sim --json`).
+    static const std::shared_ptr<spdlog::logger> log = [] {
+      auto l = spdlog::get("scenario");
+      return l ? l : spdlog::stderr_color_mt("scenario");
+    }();
+    for (const auto& w : loader.warnings) log->warn("{}", w);
   } catch (const InputError& e) {
     throw InputError(attribute_to_override(e.what(), origin, overrides));
   }

@@ -384,7 +384,7 @@ class TrajectoryTrackingComponent final : public Component {
       return;
     }
     if (const auto warning = alg::check_gain_condition(ctl_.params(), *v_rm))
-      unicycle_log().warn("{} (reference {}): {}", c.name, ref_.signal(), *warning);
+      c.warn(c.name + " (reference " + ref_.signal() + "): " + *warning);  // logged once the scenario is valid
   }
 
   bool output_feedback_;

@@ -52,6 +52,13 @@ struct ComponentConfig {
   /// launched process, the original scenario's, not its part's; for a service on its own,
   /// its parameter file's).
   std::string base_dir;
+  /// Where warn() collects: the loader logs them once the whole scenario is valid, so a bad
+  /// parameter gives its one-line error and nothing else.
+  std::vector<std::string>* warnings = nullptr;
+
+  /// A warning about the configuration (a gain condition the parameters violate), logged on
+  /// stderr after validation.
+  void warn(std::string text) const;
 
   /// Period in seconds (period_steps * base_step).
   double period() const { return static_cast<double>(period_steps) * base_step; }
