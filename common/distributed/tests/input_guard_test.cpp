@@ -170,3 +170,47 @@ TEST(WireTypes, EveryTypeHasItsTypeSupportAndDistinctFieldNames) {
 
 }  // namespace
 }  // namespace plexus::distributed::detail
+
+namespace plexus::distributed::detail {
+namespace {
+
+// Every member of every message type a service reads: a non-finite value, or one beyond its
+// physical range, refuses the whole sample and leaves the destination untouched.
+TEST(WireTypes, EveryMemberOfEveryTypeIsCheckedAtTheEdge) {
+  for (const auto& t : wire_types()) {
+    for (const auto& slot : t.slots) {
+      scenario::SignalSpec s = spec("r1/x", {slot.field}, t.name);
+      const WireSignal wire(s, kStepNs);
+      scenario::SignalSample good;
+      good.step = 5;
+      good.values[0] = std::max(slot.min, std::min(slot.max, 0.0));  // in range
+      const MessagePtr m = wire.make_message();
+      wire.encode(good, m.get());
+      scenario::SignalSample out;
+      out.step = 1;
+      out.values[0] = 42.0;
+      std::size_t bad = 99;
+      ASSERT_EQ(wire.decode(m.get(), out, bad), Rejection::none) << t.name << "." << slot.field;
+      out.step = 1;
+      out.values[0] = 42.0;
+      if (slot.kind == WireSlot::Kind::f64) {
+        scenario::SignalSample nan = good;
+        nan.values[0] = std::numeric_limits<double>::quiet_NaN();
+        wire.encode(nan, m.get());
+        EXPECT_EQ(wire.decode(m.get(), out, bad), Rejection::non_finite) << t.name << "." << slot.field;
+      }
+      if (slot.kind != WireSlot::Kind::u16 && slot.kind != WireSlot::Kind::u32) {
+        // Beyond the top of its range (integers: within what their type can hold).
+        scenario::SignalSample far = good;
+        far.values[0] = slot.kind == WireSlot::Kind::i32 ? std::min(slot.max * 2 + 1, 2e9) : slot.max * 2 + 1;
+        wire.encode(far, m.get());
+        EXPECT_EQ(wire.decode(m.get(), out, bad), Rejection::out_of_range) << t.name << "." << slot.field;
+      }
+      EXPECT_EQ(out.step, 1) << t.name << "." << slot.field;  // a refusal writes nothing
+      EXPECT_EQ(out.values[0], 42.0) << t.name << "." << slot.field;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace plexus::distributed::detail
