@@ -2,7 +2,7 @@
 // signal field fills, and the member's physical range (the subscriber's edge check).
 // docs/topics.md lists the same table for users; a new type is one entry here.
 //
-// Field names are the ones components declare (common/scenario/src/components); a member
+// Field names are the ones components declare (services/<executable>/*.cpp); a member
 // may answer to several names where two components call the same quantity differently
 // (HeadingEstimate.direction[0] is paper 000's z3 and paper 003's z2). Joint arrays answer
 // to <prefix>1 .. <prefix>16.

@@ -1,8 +1,9 @@
 // The component registry: component types by name, so a scenario composes plants,
 // sensors, reference generators, estimators and controllers without code changes.
 //
-// An algorithm family adds its components in one file under
-// common/scenario/src/components/, with one static registration per type:
+// A component type lives in the folder of the service executable that hosts it,
+// services/<executable>/<type>.cpp (service_catalog.hpp; plants and sensors in
+// plant_simulator/, other types in component_host/), with one static registration per type:
 //
 //   namespace {
 //   class MyObserver final : public plexus::scenario::Component { ... };

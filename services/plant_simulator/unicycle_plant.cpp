@@ -1,11 +1,14 @@
-// Registry entry for the unicycle plant (plexus/algorithms/unicycle/unicycle_plant.hpp).
+// unicycle (plant; plant_simulator): the unicycle of papers 000 and 003
+// (plexus/algorithms/unicycle/unicycle_plant.hpp; docs/algorithms/unicycle.md), exact
+// integration. Ports bind to `<robot>/<port>` unless remapped; the output names its IDL
+// type (docs/topics.md).
 //
 //   type: unicycle         (plant)
 //   x0, y0, theta0         initial pose, m, m, rad (default 0)
 //   v_noise_std            actuation noise, m/s, >= 0 (default 0): each plant step applies
 //   omega_noise_std        v + N(0, v_noise_std^2), omega + N(0, omega_noise_std^2), drawn
 //                          from the plant's own seed (v first, then omega)
-//   input  cmd   {v, omega}     held over each plant period (the latest command before the step)
+//   input  cmd   {v, omega} (UnicycleCommand)  held over each plant period (the latest command before the step)
 //   output truth/state {x, y, theta} (Pose2D)  theta continuous (not wrapped)
 #include <memory>
 

@@ -1,0 +1,120 @@
+// icr_ekf (estimator; icr_estimator): the 6-state ICR EKF of paper 001 (section 3.1, eqs.
+// (7)-(17), (21)-(22)) with optional classifier-driven covariance reset
+// (docs/algorithms/skid_steer.md has every parameter with its default and the paper's
+// value). Ports bind to `<robot>/<port>` unless remapped; the output names its IDL type
+// (docs/topics.md).
+//
+//   in wheels {v_l, v_r} (TrackSpeeds), gps {x, y, theta} (Pose2D), and with
+//     adaptive_reset: terrain {class, windows} (TerrainClass); out icr {x, y, theta, y_l,
+//     y_r, x_G, resets, sd_y_l, sd_y_r, sd_x_G} (IcrEstimate)
+//   q_diag, r_diag, p0_diag, p_b_diag (lists; paper eq. (21)-(22)), initial_icr ([1, -1, 1]),
+//   process_noise (dt_squared), enforce_track_sides (true), track_side_margin (0.01),
+//   adaptive_reset (false), consecutive_windows (2)
+//
+// It starts (pose from the GPS) at its first GPS sample; from then on it predicts with the
+// track speeds at every step and updates at every new GPS sample.
+#include <cmath>
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include "plexus/algorithms/skid_steer/icr_ekf.hpp"
+#include "plexus/algorithms/skid_steer/terrain_change_detector.hpp"
+#include "plexus/scenario/params.hpp"
+#include "plexus/scenario/registry.hpp"
+#include "services/common/input_values.hpp"
+#include "services/common/new_sample.hpp"
+
+namespace plexus::scenario {
+namespace {
+
+namespace alg = plexus::algorithms;
+
+template <int N>
+Eigen::Matrix<double, N, 1> optional_vector(const YamlMap& p, const std::string& key, const Eigen::Matrix<double, N, 1>& fallback) {
+  if (!p.has(key)) return fallback;
+  const auto v = numbers(p, p.node(key), key, N);
+  return Eigen::Map<const Eigen::Matrix<double, N, 1>>(v.data());
+}
+
+alg::IcrEkfParams ekf_params(const YamlMap& p) {
+  alg::IcrEkfParams e;
+  e.q_diag = optional_vector<6>(p, "q_diag", e.q_diag);
+  e.r_diag = optional_vector<3>(p, "r_diag", e.r_diag);
+  e.p0_diag = optional_vector<6>(p, "p0_diag", e.p0_diag);
+  e.p_b_diag = optional_vector<6>(p, "p_b_diag", e.p_b_diag);
+  const Eigen::Vector3d icr = optional_vector<3>(p, "initial_icr", Eigen::Vector3d(1.0, -1.0, 1.0));
+  e.initial_icr = {icr(0), icr(1), icr(2)};
+  e.enforce_track_sides = p.optional<bool>("enforce_track_sides", e.enforce_track_sides);
+  e.track_side_margin = p.optional<double>("track_side_margin", e.track_side_margin);
+  const auto model = p.optional<std::string>("process_noise", "dt_squared");
+  try {
+    e.process_noise = alg::process_noise_model_from_string(model);
+  } catch (const std::invalid_argument&) {
+    p.fail("process_noise", "expected dt_squared, continuous or per_step, got '" + model + "'");
+  }
+  return e;
+}
+
+class IcrEkfComponent final : public Component {
+ public:
+  explicit IcrEkfComponent(const ComponentConfig& c)
+      : Component(c), ekf_(ekf_params(c.params())), adaptive_(c.params().optional<bool>("adaptive_reset", false)),
+        detector_(c.params().optional<int>("consecutive_windows", 2)), dt_(c.period()),
+        wheels_(add_input("wheels", {"v_l", "v_r"}, "TrackSpeeds")), gps_(add_input("gps", {"x", "y", "theta"}, "Pose2D")),
+        classes_(adaptive_ ? &add_input("terrain", {"class", "windows"}, "TerrainClass") : nullptr),
+        out_(add_output("icr", {"x", "y", "theta", "y_l", "y_r", "x_G", "resets", "sd_y_l", "sd_y_r", "sd_x_G"},
+                        "IcrEstimate")) {
+    write();
+  }
+
+  void step(int64_t /*k*/, double /*t*/) override {
+    if (started_ && wheels_.valid()) ekf_.predict({wheels_[0], wheels_[1]}, dt_);
+    if (new_gps_(gps_)) {
+      if (!started_) {
+        ekf_.reset(pose_of(gps_));
+        started_ = true;
+      } else {
+        ekf_.update(pose_of(gps_));
+      }
+    }
+    // One decision per classifier window: a new `windows` count (the classifier publishes
+    // at every one of its steps, holding its last decision in between).
+    if (classes_ && classes_->valid() && (*classes_)[1] != last_window_ && (*classes_)[0] >= 0.0) {
+      last_window_ = (*classes_)[1];
+      if (detector_.observe(static_cast<int>(std::lround((*classes_)[0])))) {
+        ekf_.reset_covariance_to_p_b();  // paper 001 eq. (22)
+        ++resets_;
+      }
+    }
+    write();
+  }
+
+ private:
+  void write() {
+    const alg::IcrVector& x = ekf_.state();
+    for (int i = 0; i < 6; ++i) out_[static_cast<std::size_t>(i)] = x(i);
+    out_[6] = static_cast<double>(resets_);
+    for (int i = 0; i < 3; ++i) out_[static_cast<std::size_t>(7 + i)] = std::sqrt(ekf_.covariance()(3 + i, 3 + i));
+  }
+
+  alg::IcrEkf ekf_;
+  bool adaptive_;
+  alg::TerrainChangeDetector detector_;
+  double dt_;
+  bool started_ = false;
+  long resets_ = 0;
+  double last_window_ = 0.0;
+  NewSample new_gps_;
+  InputPort& wheels_;
+  InputPort& gps_;
+  InputPort* classes_;
+  OutputPort& out_;
+};
+
+const ComponentRegistration kEkf{"icr_ekf", ComponentKind::estimator,
+                                 "6-state ICR EKF with optional classifier-driven covariance reset (paper 001)",
+                                 [](const ComponentConfig& c) { return std::make_unique<IcrEkfComponent>(c); }};
+
+}  // namespace
+}  // namespace plexus::scenario

@@ -1,0 +1,104 @@
+// arm_ekf (estimator; joint_controller): the indirect continuous EKF of the flexible-joint
+// arm, state [tau, tau', phi, phi'] (paper 004 section 4.2; docs/algorithms/arm.md).
+//
+//   the arm model keys (services/common/arm_model_params.hpp: model, dof, length ..
+//   stiffness, gravity, payload_mass) + q (4), r (0.1), p0 (1), substeps (1), jacobian
+//   (full | paper), acceleration (model | differentiator), accel_filter_hz (50).
+//   in joint_states {phi1.., dphi1..} (JointState), cmd {u1..} (JointCommand);
+//   out estimate {q1.., dq1.., ddq1.., dddq1.., tau1.., dtau1.., phi1.., dphi1..} (LinkJointState).
+//   At its first step it assumes steady motion: x^ = [C(phi, phi') phi' + G(phi), 0, phi, phi'].
+#include <memory>
+#include <string>
+
+#include "plexus/algorithms/arm/flexible_joint_ekf.hpp"
+#include "plexus/scenario/registry.hpp"
+#include "services/common/arm_fields.hpp"
+#include "services/common/arm_model_params.hpp"
+
+namespace plexus::scenario {
+namespace {
+
+namespace alg = plexus::algorithms;
+
+alg::FlexibleJointEkfParams read_ekf(const ComponentConfig& c) {
+  const YamlMap& p = c.params();
+  alg::FlexibleJointEkfParams e;
+  e.model = read_model(p);
+  e.q = p.optional<double>("q", e.q);
+  e.r = p.optional<double>("r", e.r);
+  e.p0 = p.optional<double>("p0", e.p0);
+  e.substeps = p.optional<int>("substeps", 1);
+  e.step = c.period();
+  e.accel_filter_hz = p.optional<double>("accel_filter_hz", e.accel_filter_hz);
+  const std::string jac = p.optional<std::string>("jacobian", "full");
+  if (jac != "full" && jac != "paper") p.fail("jacobian", "must be full or paper");
+  e.jacobian = jac == "full" ? alg::EkfJacobian::kFull : alg::EkfJacobian::kPaper;
+  const std::string acc = p.optional<std::string>("acceleration", "model");
+  if (acc != "model" && acc != "differentiator") p.fail("acceleration", "must be model or differentiator");
+  e.acceleration = acc == "model" ? alg::LinkAcceleration::kModel : alg::LinkAcceleration::kDifferentiator;
+  return e;
+}
+
+class ArmEkfComponent final : public Component {
+ public:
+  explicit ArmEkfComponent(const ComponentConfig& c)
+      : Component(c),
+        ekf_(read_ekf(c)),
+        rest_(ekf_params_model(c)),
+        n_(ekf_.dof()),
+        h_(c.period()),
+        u_(Eigen::VectorXd::Zero(n_)),
+        y_(Eigen::VectorXd::Zero(2 * n_)),
+        x0_(Eigen::VectorXd::Zero(4 * n_)),
+        g_(Eigen::VectorXd::Zero(n_)),
+        enc_(add_input("joint_states", concat({names("phi", n_), names("dphi", n_)}), "JointState")),
+        cmd_(add_input("cmd", names("u", n_), "JointCommand")),
+        estimate_(add_output("estimate", estimate_fields(n_), "LinkJointState")) {
+    if (n_ > kMaxScenarioDof) c.params().fail("model", "has " + std::to_string(n_) + " joints; at most " + std::to_string(kMaxScenarioDof));
+  }
+
+  void step(int64_t /*k*/, double /*t*/) override {
+    if (!enc_.valid()) return;
+    for (int i = 0; i < 2 * n_; ++i) y_(i) = enc_[static_cast<std::size_t>(i)];
+    if (!started_) {
+      // Steady motion (at rest when phi' = 0): q ~ phi, q' ~ phi', q'' = 0, so
+      // tau = C(q, q') q' + G(q) and tau' = 0 (the springs hold the arm).
+      const Eigen::VectorXd zero = Eigen::VectorXd::Zero(n_);
+      rest_.bias(y_.head(n_), y_.tail(n_), g_);
+      x0_ << g_, zero, y_;
+      ekf_.reset(x0_);
+      started_ = true;
+    } else {
+      for (int i = 0; i < n_; ++i) u_(i) = cmd_.valid() ? cmd_[static_cast<std::size_t>(i)] : 0.0;
+      ekf_.update(u_, y_, h_);
+    }
+    const alg::ArmFeedback& fb = ekf_.feedback();
+    for (int i = 0; i < n_; ++i) {
+      const auto a = static_cast<std::size_t>(i);
+      const auto n = static_cast<std::size_t>(n_);
+      estimate_[a] = fb.q(i), estimate_[n + a] = fb.qd(i), estimate_[2 * n + a] = fb.qdd(i), estimate_[3 * n + a] = fb.qddd(i);
+      estimate_[4 * n + a] = fb.tau(i), estimate_[5 * n + a] = fb.taud(i), estimate_[6 * n + a] = fb.phi(i),
+                        estimate_[7 * n + a] = fb.phid(i);
+    }
+  }
+
+ private:
+  static alg::ArmModel ekf_params_model(const ComponentConfig& c) { return read_model(c.params()); }
+
+  alg::FlexibleJointEkf ekf_;
+  alg::ArmRigidBodyDynamics rest_;
+  int n_;
+  double h_;
+  Eigen::VectorXd u_, y_, x0_, g_;
+  bool started_ = false;
+  InputPort& enc_;
+  InputPort& cmd_;
+  OutputPort& estimate_;
+};
+
+const ComponentRegistration kArmEkf{
+    "arm_ekf", ComponentKind::estimator, "indirect continuous EKF [tau, tau', phi, phi'] (paper 004 section 4.2)",
+    [](const ComponentConfig& c) { return std::make_unique<ArmEkfComponent>(c); }};
+
+}  // namespace
+}  // namespace plexus::scenario
