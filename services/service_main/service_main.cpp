@@ -19,6 +19,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <set>
@@ -79,8 +80,17 @@ plexus::scenario::Scenario load_standalone(const Standalone& s, const std::vecto
     if (!params["robot"]) params["robot"] = s.robot;
     root["services"][s.name] = params;
     prefix = "services." + s.name + ".";
-    // One base step per period of its own rate, unless given.
-    if (step <= 0.0) step = params["rate"] && params["rate"].IsScalar() ? 1.0 / params["rate"].as<double>(100.0) : 0.01;
+  }
+  std::vector<scenario::Override> overrides;
+  for (const auto& a : sets) overrides.push_back(scenario::parse_override(prefix + a));  // --set L=0.6: its own key
+  if (step <= 0.0 && !kPlant) {
+    // One base step per period of its own rate (after --set), unless given; a bad rate is
+    // left to the loader, which names it.
+    YAML::Node probe = YAML::Clone(root);
+    scenario::apply_overrides(probe, overrides);
+    const YAML::Node rate = probe["services"][s.name]["rate"];
+    const double hz = rate && rate.IsScalar() ? rate.as<double>(0.0) : 0.0;
+    step = hz > 0.0 && std::isfinite(hz) ? 1.0 / hz : 0.01;
   }
   root["step"] = step;
   for (const auto& in : s.input_rates) {
@@ -89,8 +99,6 @@ plexus::scenario::Scenario load_standalone(const Standalone& s, const std::vecto
     const std::string port = in.substr(0, eq);
     root["inputs"][port.find('/') == std::string::npos ? s.robot + "/" + port : port]["rate"] = in.substr(eq + 1);
   }
-  std::vector<scenario::Override> overrides;
-  for (const auto& a : sets) overrides.push_back(scenario::parse_override(prefix + a));  // --set L=0.6: its own key
   return scenario::load_scenario_tree(root, origin, overrides, {.partial = true});
 }
 
