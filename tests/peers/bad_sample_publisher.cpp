@@ -36,14 +36,13 @@ int main(int argc, char** argv) {
     spec.fields = {field};
     spec.producer = "bad_sample_publisher";
     spec.message = type;
-    const distributed::WireSignal wire(spec, 10'000'000);
     rt::ParticipantOptions po;
     po.vendor = rt::parse_vendor(dds);
     po.domain_id = domain;
     po.name = "bad_sample_publisher";
     auto p = rt::Participant::create(po);
     const auto profiles = rt::QosProfiles::load(rt::default_qos_file());
-    distributed::WirePublisher pub(*p, topic, profiles.get("state"), wire);
+    distributed::WirePublisher pub(*p, spec, 10'000'000, profiles.get("state"));  // the topic is the signal's name
     const int64_t give_up = monotonic_ns() + 10'000'000'000;
     while (pub.matched_count() == 0) {
       if (monotonic_ns() > give_up) throw std::runtime_error("no reader of " + topic + " within 10 s");

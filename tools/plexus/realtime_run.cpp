@@ -37,13 +37,9 @@ RealtimeResult run_realtime(scenario::Scenario& sc, rt::Participant& participant
 
   rt::QosProfile any = profiles.get("sensor");  // best effort, volatile: matches every producer
   any.depth = 256;
-  std::vector<std::unique_ptr<distributed::WireSignal>> wires;
   std::vector<std::unique_ptr<distributed::WireSubscriber>> subs;
-  for (const auto& spec : signals) {
-    wires.push_back(std::make_unique<distributed::WireSignal>(spec, distributed::step_ns(sc)));
-    subs.push_back(std::make_unique<distributed::WireSubscriber>(participant, distributed::signal_topic(spec.name), any,
-                                                                 *wires.back()));
-  }
+  for (const auto& spec : signals)
+    subs.push_back(std::make_unique<distributed::WireSubscriber>(participant, spec, distributed::step_ns(sc), any));
   std::vector<rt::Subscriber<msg::Heartbeat>> beats;
   for (const auto& p : procs) beats.push_back(participant.subscriber<msg::Heartbeat>(distributed::health_topic(p.service()), profiles.get("health")));
   auto go = participant.publisher<msg::ClockStep>(distributed::kClockTopic, profiles.get("lockstep"));
@@ -77,7 +73,7 @@ RealtimeResult run_realtime(scenario::Scenario& sc, rt::Participant& participant
   // before tick 0; each host ticks on the grid it defines, a restarted one at the current tick.
   constexpr int64_t kStartLeadNs = 200'000'000;
   start.sim_time_ns(wall_time_ns() + kStartLeadNs);
-  for (auto& w : wires) w->set_epoch(start.sim_time_ns());  // data times: wall clock on the run's grid
+  for (auto& s : subs) s->wire().set_epoch(start.sim_time_ns());  // data times: wall clock on the run's grid
   go.publish(start);
   const int64_t t0 = monotonic_ns() + kStartLeadNs;
   fault.run_start_ns = t0;
@@ -139,7 +135,7 @@ RealtimeResult run_realtime(scenario::Scenario& sc, rt::Participant& participant
       while (const void* m = subs[s]->take()) {
         any_data = true;
         const int64_t now = wall_time_ns();
-        if (wires[s]->decode(m, sample, bad_field) != distributed::Rejection::none) continue;
+        if (subs[s]->wire().decode(m, sample, bad_field) != distributed::Rejection::none) continue;
         // A producer started before the run (a native plant, a bridge) or running past its end
         // has samples off the run's steps; a late or repeated step is not a new sample.
         auto& trace = res.log.signals[s];

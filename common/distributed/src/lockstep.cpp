@@ -25,7 +25,7 @@ class RemoteSignal {
  public:
   RemoteSignal(const SignalSpec& spec, rt::Participant& p, const rt::QosProfile& qos, int64_t step_ns,
                detail::InputGuard& guard)
-      : spec_(&spec), wire_(spec, step_ns), sub_(p, signal_topic(spec.name), qos, wire_), guard_(&guard) {}
+      : spec_(&spec), sub_(p, spec, step_ns, qos), guard_(&guard) {}
 
   /// Copies the sample produced at step `due` into `out`, waiting for it up to `timeout_ns`.
   void get(int64_t due, int64_t timeout_ns, SignalSample& out) {
@@ -49,7 +49,7 @@ class RemoteSignal {
   /// Takes every received sample into the ring.
   void drain() {
     while (const void* m = sub_.take()) {
-      if (guard_->accept(wire_, m, scratch_)) ring_[slot(scratch_.step)].sample = scratch_;
+      if (guard_->accept(sub_.wire(), m, scratch_)) ring_[slot(scratch_.step)].sample = scratch_;
     }
   }
 
@@ -64,7 +64,6 @@ class RemoteSignal {
   }
   static constexpr std::size_t kRing = 32;
   const SignalSpec* spec_;
-  WireSignal wire_;
   WireSubscriber sub_;
   detail::InputGuard* guard_;
   SignalSample scratch_;
@@ -72,8 +71,6 @@ class RemoteSignal {
 };
 
 }  // namespace
-
-std::string signal_topic(const std::string& signal) { return signal; }
 
 int64_t step_ns(const scenario::Scenario& sc) { return std::llround(sc.step * 1e9); }
 
@@ -86,7 +83,6 @@ struct LockstepHost::Impl {
   detail::InputGuard guard{"lockstep host"};
   rt::Subscriber<msg::ClockStep> clock;
   std::vector<std::unique_ptr<RemoteSignal>> remote;  // indexed by signal (null if not remote)
-  std::vector<std::unique_ptr<WireSignal>> out_wire;   // indexed by signal (null if not local)
   std::vector<std::unique_ptr<WirePublisher>> out;     // indexed by signal (null if not local)
 
   Impl(scenario::Scenario& s, std::vector<bool> hosted, rt::Participant& p, const rt::QosProfile& qos,
@@ -95,14 +91,10 @@ struct LockstepHost::Impl {
     clock = p.subscriber<msg::ClockStep>(kClockTopic, qos);
     const auto& signals = exec.signals();
     remote.resize(signals.size());
-    out_wire.resize(signals.size());
     out.resize(signals.size());
     for (std::size_t i : exec.remote_inputs())
       remote[i] = std::make_unique<RemoteSignal>(signals[i], p, qos, step_ns(sc), guard);
-    for (std::size_t i : exec.local_outputs()) {
-      out_wire[i] = std::make_unique<WireSignal>(signals[i], step_ns(sc));
-      out[i] = std::make_unique<WirePublisher>(p, signal_topic(signals[i].name), qos, *out_wire[i]);
-    }
+    for (std::size_t i : exec.local_outputs()) out[i] = std::make_unique<WirePublisher>(p, signals[i], step_ns(sc), qos);
   }
 };
 
@@ -168,7 +160,6 @@ struct LockstepClock::Impl {
   scenario::StepExecutor exec;  // wiring only (nothing hosted): the signal list, same indices everywhere
   LockstepOptions opt;
   rt::Publisher<msg::ClockStep> clock;
-  std::vector<std::unique_ptr<WireSignal>> wires;      // by signal
   std::vector<std::unique_ptr<WireSubscriber>> subs;  // by signal
   detail::InputGuard guard{"lockstep clock"};
   // Response times (ns) since the last producer_status(), per producer.
@@ -183,8 +174,7 @@ struct LockstepClock::Impl {
       : sc(s), exec(s, std::vector<bool>(s.components.size(), false)), opt(o) {
     clock = p.publisher<msg::ClockStep>(kClockTopic, qos);
     for (const auto& spec : exec.signals()) {
-      wires.push_back(std::make_unique<WireSignal>(spec, step_ns(sc)));
-      subs.push_back(std::make_unique<WireSubscriber>(p, signal_topic(spec.name), qos, *wires.back()));
+      subs.push_back(std::make_unique<WireSubscriber>(p, spec, step_ns(sc), qos));
       auto it = std::find(producers.begin(), producers.end(), spec.producer);
       producer_of.push_back(static_cast<std::size_t>(it - producers.begin()));
       if (it == producers.end()) producers.push_back(spec.producer);
@@ -284,8 +274,8 @@ scenario::RunLog LockstepClock::run(const std::atomic<bool>& stop, const scenari
       for (;;) {
         if (const void* in = m.subs[s]->take(&meta)) {
           m.note_response(s, m.subs[s]->header().publish_time_ns() - published);
-          if (tap) tap(s, m.wires[s]->support(), in, meta);
-          if (!m.guard.accept(*m.wires[s], in, sample))
+          if (tap) tap(s, m.subs[s]->wire().support(), in, meta);
+          if (!m.guard.accept(m.subs[s]->wire(), in, sample))
             throw LockstepError("lockstep: refused the sample of '" + signals[s].name + "' from '" +
                                 signals[s].producer + "' for " + step_text(k) + " (reason logged above)");
           if (sample.step != k)

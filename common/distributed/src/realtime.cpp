@@ -26,8 +26,7 @@ constexpr int64_t kMaxCatchUpSteps = 10;
 /// Latest sample of a signal produced in another process.
 struct RemoteLatest {
   RemoteLatest(const scenario::SignalSpec& spec, rt::Participant& p, const rt::QosProfile& qos, int64_t step_ns)
-      : wire(spec, step_ns), sub(p, signal_topic(spec.name), qos, wire) {}
-  WireSignal wire;
+      : sub(p, spec, step_ns, qos) {}
   WireSubscriber sub;
   SignalSample sample;       // step -1 until the first one arrives
   SignalSample scratch;
@@ -87,7 +86,6 @@ struct RealtimeHost::Impl {
   RealtimeOptions opt;
   detail::InputGuard guard{opt.service};
   std::vector<std::unique_ptr<RemoteLatest>> remote;  // by signal
-  std::vector<std::unique_ptr<WireSignal>> out_wire;   // by signal
   std::vector<std::unique_ptr<WirePublisher>> out;     // by signal
   std::vector<int64_t> local_origin;                  // by signal: origin of the latest local sample
   std::vector<std::vector<std::size_t>> local_inputs;  // by component: the signals it reads from this process
@@ -105,7 +103,6 @@ struct RealtimeHost::Impl {
       : sc(s), phase(stage_phase(s, hosted)), exec(s, std::move(hosted)), opt(std::move(o)) {
     const auto& signals = exec.signals();
     remote.resize(signals.size());
-    out_wire.resize(signals.size());
     out.resize(signals.size());
     local_origin.assign(signals.size(), 0);
     const auto produced = exec.local_outputs();
@@ -120,11 +117,8 @@ struct RealtimeHost::Impl {
                                             sc.step * 1e9);
       remote[i] = std::move(r);
     }
-    for (std::size_t i : exec.local_outputs()) {
-      out_wire[i] = std::make_unique<WireSignal>(signals[i], step_ns(sc));
-      out[i] = std::make_unique<WirePublisher>(p, signal_topic(signals[i].name), signal_qos(sc, signals[i].producer, profiles),
-                                               *out_wire[i]);
-    }
+    for (std::size_t i : exec.local_outputs())
+      out[i] = std::make_unique<WirePublisher>(p, signals[i], step_ns(sc), signal_qos(sc, signals[i].producer, profiles));
     start = p.subscriber<msg::ClockStep>(kClockTopic, profiles.get("lockstep"));
     heartbeat = p.publisher<msg::Heartbeat>(health_topic(opt.service), profiles.get("health"));
     copy_name(hb.service(), opt.service);
@@ -134,7 +128,7 @@ struct RealtimeHost::Impl {
   void drain(std::size_t signal) {
     RemoteLatest& r = *remote[signal];
     while (const void* m = r.sub.take()) {
-      if (!guard.accept(r.wire, m, r.scratch)) continue;  // refused: counted and logged
+      if (!guard.accept(r.sub.wire(), m, r.scratch)) continue;  // refused: counted and logged
       if (r.scratch.step < r.sample.step) continue;       // older than what we have
       r.sample = r.scratch;
       r.received_ns = monotonic_ns();
@@ -196,10 +190,10 @@ RealtimeReport RealtimeHost::run(const std::atomic<bool>& stop) {
   const int64_t k0 = late_ns < 0 ? 0 : late_ns / step_ns + 1;
   const int64_t first_deadline = mono_now + (t0 + k0 * step_ns + offset_ns - wall_now);
   // Data times are wall-clock times on the run's grid (wire.hpp): step k is at t0 + k periods.
-  for (auto& w : m.out_wire)
-    if (w) w->set_epoch(t0);
+  for (auto& w : m.out)
+    if (w) w->wire().set_epoch(t0);
   for (auto& r : m.remote)
-    if (r) r->wire.set_epoch(t0);
+    if (r) r->sub.wire().set_epoch(t0);
   rt::LoopOptions lo = m.opt.loop;
   lo.rate_hz = 1.0 / m.sc.step;
   rt::PeriodicLoop loop(lo);

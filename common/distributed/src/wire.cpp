@@ -125,13 +125,17 @@ double WireSignal::value(const void* message, std::size_t field) const {
 
 // --- endpoints ----------------------------------------------------------------
 
-WirePublisher::WirePublisher(rt::Participant& p, const std::string& topic, const rt::QosProfile& qos,
-                             const WireSignal& wire)
-    : wire_(&wire), writer_(p.make_writer(wire.support(), topic, qos)), msg_(wire.make_message()) {}
+std::string signal_topic(const std::string& signal) { return signal; }
+
+WirePublisher::WirePublisher(rt::Participant& p, const scenario::SignalSpec& spec, int64_t step_ns,
+                             const rt::QosProfile& qos)
+    : wire_(spec, step_ns),
+      writer_(p.make_writer(wire_.support(), signal_topic(spec.name), qos)),
+      msg_(wire_.make_message()) {}
 
 bool WirePublisher::publish(const scenario::SignalSample& s, int64_t origin_ns) {
-  wire_->encode(s, msg_.get());
-  msg::StampHeader& h = *wire_->support().header(msg_.get());
+  wire_.encode(s, msg_.get());
+  msg::StampHeader& h = *wire_.support().header(msg_.get());
   h.seq_num(++seq_);
   const int64_t now = wall_time_ns();
   h.publish_time_ns(now);
@@ -140,12 +144,14 @@ bool WirePublisher::publish(const scenario::SignalSample& s, int64_t origin_ns) 
   return writer_->write(msg_.get());
 }
 
-WireSubscriber::WireSubscriber(rt::Participant& p, const std::string& topic, const rt::QosProfile& qos,
-                               const WireSignal& wire)
-    : wire_(&wire), reader_(p.make_reader(wire.support(), topic, qos)), msg_(wire.make_message()) {}
+WireSubscriber::WireSubscriber(rt::Participant& p, const scenario::SignalSpec& spec, int64_t step_ns,
+                               const rt::QosProfile& qos)
+    : wire_(spec, step_ns),
+      reader_(p.make_reader(wire_.support(), signal_topic(spec.name), qos)),
+      msg_(wire_.make_message()) {}
 
 const void* WireSubscriber::take(rt::SampleMeta* meta) { return reader_->take(msg_.get(), meta) ? msg_.get() : nullptr; }
 
-const msg::StampHeader& WireSubscriber::header() const { return *wire_->support().header(msg_.get()); }
+const msg::StampHeader& WireSubscriber::header() const { return *wire_.support().header(msg_.get()); }
 
 }  // namespace plexus::distributed

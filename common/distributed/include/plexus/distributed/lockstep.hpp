@@ -38,9 +38,6 @@ namespace plexus::distributed {
 /// ClockStep::step_index that ends the run.
 inline constexpr uint64_t kEndOfRun = ~uint64_t{0};
 
-/// DDS topic carrying a scenario signal (both clock modes): the signal's name,
-/// `<robot>/<topic>` (docs/topics.md).
-std::string signal_topic(const std::string& signal);
 /// The scenario's base step in ns, as every host converts step <-> header data time.
 int64_t step_ns(const scenario::Scenario& sc);
 inline const char* const kClockTopic = "lockstep/clock";

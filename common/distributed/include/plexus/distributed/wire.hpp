@@ -97,11 +97,16 @@ class WireSignal {
   int64_t epoch_ns_ = 0;
 };
 
-/// Publishes one signal as its message type. publish() stamps the header as
+/// DDS topic carrying a scenario signal: the signal's name, `<robot>/<topic>` (docs/topics.md).
+std::string signal_topic(const std::string& signal);
+
+/// Publishes one signal as its message type on its topic. publish() stamps the header as
 /// rt::Publisher<T> does (sequence number, publish time, origin if 0).
 class WirePublisher {
  public:
-  WirePublisher(rt::Participant& p, const std::string& topic, const rt::QosProfile& qos, const WireSignal& wire);
+  /// Binds `spec` (throws InputError as WireSignal does) and creates the writer.
+  WirePublisher(rt::Participant& p, const scenario::SignalSpec& spec, int64_t step_ns, const rt::QosProfile& qos);
+  WireSignal& wire() { return wire_; }
   /// `origin_ns`: the header's origin time (0: this sample starts a chain, stamped now).
   /// False if the vendor refused the sample.
   bool publish(const scenario::SignalSample& s, int64_t origin_ns);
@@ -110,28 +115,30 @@ class WirePublisher {
   int matched_count() const { return writer_->matched_count(); }
 
  private:
-  const WireSignal* wire_;
+  WireSignal wire_;
   std::unique_ptr<rt::WriterBackend> writer_;
   MessagePtr msg_;
   uint64_t seq_ = 0;
   int64_t last_origin_ = 0;
 };
 
-/// Takes one signal's messages. take() returns the raw message; the caller decodes it
-/// through an InputGuard (counted refusals) or WireSignal::decode.
+/// Takes one signal's messages from its topic. take() returns the raw message; the caller
+/// decodes it through an InputGuard (counted refusals) or wire().decode.
 class WireSubscriber {
  public:
-  WireSubscriber(rt::Participant& p, const std::string& topic, const rt::QosProfile& qos, const WireSignal& wire);
+  /// Binds `spec` (throws InputError as WireSignal does) and creates the reader.
+  WireSubscriber(rt::Participant& p, const scenario::SignalSpec& spec, int64_t step_ns, const rt::QosProfile& qos);
   /// Oldest unread message, or nullptr. Valid until the next take().
   const void* take(rt::SampleMeta* meta = nullptr);
   bool wait(int64_t timeout_ns) { return reader_->wait(timeout_ns); }
   int matched_count() const { return reader_->matched_count(); }
-  const WireSignal& wire() const { return *wire_; }
+  const WireSignal& wire() const { return wire_; }
+  WireSignal& wire() { return wire_; }
   /// The header of the message take() returned.
   const msg::StampHeader& header() const;
 
  private:
-  const WireSignal* wire_;
+  WireSignal wire_;
   std::unique_ptr<rt::ReaderBackend> reader_;
   MessagePtr msg_;
 };
