@@ -32,6 +32,7 @@
 #include "plexus/distributed/realtime.hpp"
 #include "plexus/distributed/service_catalog.hpp"
 #include "plexus/scenario/overrides.hpp"
+#include "services/common/standalone_scenario.hpp"
 
 namespace {
 
@@ -49,59 +50,6 @@ std::set<std::string> split(const std::string& csv) {
   return out;
 }
 
-/// What a service started on its own runs: its parameters as the one component of a part
-/// document (a robot's plant and sensors for the plant simulator).
-struct Standalone {
-  std::string robot = "r1";
-  std::string name;
-  std::string type;
-  std::string params_file;
-  double step = 0.0;
-  std::vector<std::string> input_rates;  ///< PORT=HZ: an input's producer rate (default: its own)
-};
-
-plexus::scenario::Scenario load_standalone(const Standalone& s, const std::vector<std::string>& sets, bool realtime) {
-  using namespace plexus;
-  YAML::Node params = s.params_file.empty() ? YAML::Node(YAML::NodeType::Map) : load_yaml_file(s.params_file);
-  const std::string origin = s.params_file.empty() ? std::string(kName) + " (command line)" : s.params_file;
-  if (!params.IsMap()) throw InputError(origin + ": expected a map of parameters");
-  YAML::Node root(YAML::NodeType::Map);
-  root["name"] = s.name;
-  if (!realtime) root["clock"]["mode"] = "lockstep";
-  else root["clock"]["mode"] = "realtime";
-  std::string prefix;
-  double step = s.step;
-  if (kPlant) {
-    root["robots"][s.robot] = params;
-    prefix = "robots." + s.robot + ".";
-    if (step <= 0.0) step = 0.001;
-  } else {
-    if (!params["type"] && !s.type.empty()) params["type"] = s.type;
-    if (!params["robot"]) params["robot"] = s.robot;
-    root["services"][s.name] = params;
-    prefix = "services." + s.name + ".";
-  }
-  std::vector<scenario::Override> overrides;
-  for (const auto& a : sets) overrides.push_back(scenario::parse_override(prefix + a));  // --set L=0.6: its own key
-  if (step <= 0.0 && !kPlant) {
-    // One base step per period of its own rate (after --set), unless given; a bad rate is
-    // left to the loader, which names it.
-    YAML::Node probe = YAML::Clone(root);
-    scenario::apply_overrides(probe, overrides);
-    const YAML::Node rate = probe["services"][s.name]["rate"];
-    const double hz = rate && rate.IsScalar() ? rate.as<double>(0.0) : 0.0;
-    step = hz > 0.0 && std::isfinite(hz) ? 1.0 / hz : 0.01;
-  }
-  root["step"] = step;
-  for (const auto& in : s.input_rates) {
-    const auto eq = in.find('=');
-    if (eq == std::string::npos || eq == 0) throw InputError("--input-rate " + in + ": expected PORT=HZ");
-    const std::string port = in.substr(0, eq);
-    root["inputs"][port.find('/') == std::string::npos ? s.robot + "/" + port : port]["rate"] = in.substr(eq + 1);
-  }
-  return scenario::load_scenario_tree(root, origin, overrides, {.partial = true});
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -117,7 +65,9 @@ int main(int argc, char** argv) {
   int domain = 0;
   double timeout = 10.0;
   bool start_signal = false;
-  Standalone alone;
+  scenario::StandaloneSpec alone;
+  alone.program = kName;
+  alone.robot_section = kPlant;
   alone.name = kName;
   const auto& catalog = distributed::service_catalog();
   for (const auto& entry : catalog)
@@ -164,7 +114,7 @@ int main(int argc, char** argv) {
       for (const auto& s : sets) overrides.push_back(scenario::parse_override(s));
       sc = scenario::load_scenario(part_file, overrides, {.partial = true});
     } else {
-      sc = load_standalone(alone, sets, realtime);
+      sc = scenario::load_standalone(alone, sets, realtime);
     }
     // Each executable hosts its own component types (component_host: any).
     std::string hosted_names;

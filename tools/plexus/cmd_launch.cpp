@@ -56,6 +56,10 @@ int run_launch(const LaunchOptions& o) {
   std::vector<scenario::Override> overrides;
   for (const auto& s : o.sets) overrides.push_back(scenario::parse_override(s));
   scenario::Scenario sc = scenario::load_scenario(o.scenario, overrides);
+  for (const auto& [robot, src] : sc.sources)
+    if (sc.clock != scenario::ClockMode::realtime)
+      throw InputError(src.where + ": robot " + robot + "'s source is " + scenario::to_string(src.type) +
+                       ", which keeps its own time: set clock.mode: realtime (or --set clock.mode=realtime)");
   const std::string vendor = !o.dds.empty() ? o.dds : (!sc.dds_vendor.empty() ? sc.dds_vendor : "fast");
   rt::parse_vendor(vendor, "--dds");
   const int domain = o.domain >= 0 ? o.domain : sc.dds_domain;
@@ -162,9 +166,9 @@ int run_launch(const LaunchOptions& o) {
   LogRelay relay(std::filesystem::path(run_dir) / "logs", console);
   auto start_process = [&relay](Process& p) {
     const int fd = relay.open(p.service());
-    p.pid = spawn(p.program, p.args, fd);
+    p.pid = spawn(p.executable(), p.args, fd);
     ::close(fd);
-    std::string cmd = p.program;
+    std::string cmd = p.executable();
     for (const auto& a : p.args) cmd += " " + a;
     relay.note(p.service(), "started pid " + std::to_string(p.pid) + ": " + cmd);
   };
@@ -189,6 +193,11 @@ int run_launch(const LaunchOptions& o) {
     args.insert(args.end(), common.begin(), common.end());
     args.insert(args.end(), {"--dds", p.vendor, "--mode", realtime ? "realtime" : "lockstep"});
     if (realtime) args.push_back("--start-signal");
+    if (p.program == "replay") {  // plexus replay of the robot's topics, not a service
+      args = replay_args(sc, p);
+      args.insert(args.end(), {"--dds", p.vendor, "--domain", std::to_string(domain), "--qos-file", qos_file,
+                               "--interface", net.interface_address, "--peers", peers});
+    }
     p.args = args;
     start_process(p);
   }

@@ -7,8 +7,14 @@
 //
 // Header times: by default seq_num and data_time_ns are kept and origin/publish times are
 // shifted by (replay start - recording start), so hop latencies downstream stay
-// meaningful; --verbatim publishes the recorded samples byte for byte.
+// meaningful; --restamp shifts data times as well, so a realtime run reads the replay as
+// live samples on its own clock (a robot's `source: {type: replay}` under plexus launch);
+// --verbatim publishes the recorded samples byte for byte.
+//
+// --service NAME: publish a heartbeat on health/NAME once a second (plexus launch waits for
+// one from every process it starts).
 #include <time.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -20,6 +26,7 @@
 #include "plexus/base/clock.hpp"
 #include "plexus/base/input_error.hpp"
 #include "plexus/distributed/lockstep.hpp"
+#include "plexus/distributed/realtime.hpp"
 #include "plexus/msg/messages.hpp"
 #include "recording.hpp"
 #include "topic_discovery.hpp"
@@ -31,7 +38,8 @@ struct ReplayOpts {
   DdsOptions dds;
   std::string file, topics, qos_file, profile, clock_topic = "lockstep/clock";
   double rate_scale = 1.0, rate = 0, wait = 2.0, linger = 1.0;
-  bool fast = false, lockstep = false, verbatim = false, summary = false, json = false;
+  bool fast = false, lockstep = false, verbatim = false, restamp = false, summary = false, json = false;
+  std::string service;
 };
 
 void sleep_until(int64_t t) {
@@ -75,6 +83,7 @@ int run_replay(const ReplayOpts& o) {
   if (modes > 1) throw InputError("--fast, --rate and --lockstep: choose one");
   if (!(o.rate_scale > 0 && o.rate_scale <= 1000)) throw InputError("--rate-scale: must be in (0, 1000]");
   if (!(o.rate >= 0 && o.rate <= 1e6)) throw InputError("--rate: must be in (0, 1e6] Hz");
+  if (o.restamp && (o.verbatim || o.lockstep)) throw InputError("--restamp: not with --verbatim or --lockstep");
   if (!o.profile.empty()) rt::QosProfiles::load(o.qos_file.empty() ? rt::default_qos_file() : o.qos_file).get(o.profile);
   RecordingReader rec(o.file);
   if (o.summary) return run_summary(rec, o.json);
@@ -93,6 +102,25 @@ int run_replay(const ReplayOpts& o) {
     void* sample = nullptr;
   };
   std::map<int64_t, Out> outs;
+  const auto profiles = rt::QosProfiles::load(o.qos_file.empty() ? rt::default_qos_file() : o.qos_file);
+  rt::Publisher<msg::Heartbeat> heartbeat;
+  msg::Heartbeat hb;
+  int64_t next_beat = 0;
+  uint64_t published = 0, failed = 0;
+  const auto beat = [&](msg::ServiceState state) {
+    if (!heartbeat || (state == msg::SERVICE_RUNNING && monotonic_ns() < next_beat)) return;
+    next_beat = monotonic_ns() + 1'000'000'000;
+    hb.state(state);
+    hb.loop_count(published);
+    hb.header().origin_time_ns(0);
+    heartbeat.publish(hb);
+  };
+  if (!o.service.empty()) {
+    heartbeat = p->publisher<msg::Heartbeat>(distributed::health_topic(o.service), profiles.get("health"));
+    std::snprintf(hb.service().data(), hb.service().size(), "%s", o.service.c_str());
+    hb.pid(static_cast<uint32_t>(getpid()));
+    beat(msg::SERVICE_WAITING);
+  }
   for (const auto& t : rec.topics()) {
     if (!wanted.empty() && std::find(wanted.begin(), wanted.end(), t.name) == wanted.end()) continue;
     const msg::TypeSupport* ts = msg::find_type_support(t.type);
@@ -128,6 +156,7 @@ int run_replay(const ReplayOpts& o) {
     bool all = true;
     for (const auto& [id, out] : outs) all = all && out.writer->matched_count() > 0;
     if (all || g_stop || monotonic_ns() >= wait_end) break;
+    beat(msg::SERVICE_RUNNING);
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
   }
   std::this_thread::sleep_for(std::chrono::milliseconds(100));  // let matching settle both ways
@@ -146,9 +175,9 @@ int run_replay(const ReplayOpts& o) {
   const int64_t start_mono = monotonic_ns();
   const int64_t shift = wall_time_ns() - msgs.front().receive_time_ns;
   const int64_t t0 = msgs.front().receive_time_ns;
-  uint64_t published = 0, failed = 0;
   std::size_t i = 0;
   while (i < msgs.size() && !g_stop) {
+    beat(msg::SERVICE_RUNNING);
     // The group published now: one sample, or (lockstep) every sample whose data time is
     // due at the clock's step (header data time <= the step's simulated time).
     std::size_t group_end = i + 1;
@@ -177,12 +206,14 @@ int run_replay(const ReplayOpts& o) {
       if (!o.verbatim && out.ts->header) {
         msg::StampHeader& h = *out.ts->header(out.sample);
         if (h.origin_time_ns() != 0) h.origin_time_ns(h.origin_time_ns() + shift);
+        if (o.restamp) h.data_time_ns(h.data_time_ns() + shift);
         h.publish_time_ns(wall_time_ns());
       }
       out.writer->write(out.sample) ? ++published : ++failed;
     }
   }
   std::this_thread::sleep_for(std::chrono::milliseconds(static_cast<int64_t>(o.linger * 1000)));
+  beat(msg::SERVICE_DRAINING);
   if (tick) clock_ts.destroy(tick);
   clock.reset();
   for (auto& [id, out] : outs) {
@@ -212,6 +243,9 @@ Command add_replay_command(CLI::App& root) {
                   "is due (<= the step's time); stops at the end of the run");
   c.app->add_option("--clock-topic", o->clock_topic, "clock topic for --lockstep")->capture_default_str();
   c.app->add_flag("--verbatim", o->verbatim, "keep the recorded header times (byte-identical samples)");
+  c.app->add_flag("--restamp", o->restamp,
+                  "shift data times too, to now (a realtime run reads the replay as live samples)");
+  c.app->add_option("--service", o->service, "publish a heartbeat on health/<service> (for plexus launch)");
   c.app->add_option("--wait", o->wait, "seconds to wait for subscribers before starting")->capture_default_str();
   c.app->add_option("--linger", o->linger, "seconds to keep the writers after the last sample")->capture_default_str();
   c.app->add_option("--qos", o->profile, "publish with this QoS profile (default: the recorded writers' QoS)");

@@ -48,6 +48,9 @@ int run_sim(const SimOptions& o) {
   std::vector<scenario::Override> overrides;
   for (const auto& s : o.sets) overrides.push_back(scenario::parse_override(s));
   scenario::Scenario sc = scenario::load_scenario(o.scenario, overrides);
+  for (const auto& [robot, src] : sc.sources)
+    throw InputError(src.where + ": robot " + robot + "'s source is " + scenario::to_string(src.type) +
+                     "; `plexus sim` simulates every robot: run it with `plexus launch` (clock.mode: realtime)");
 
   scenario::ProgressBar bar(!o.quiet);
   const int64_t start = monotonic_ns();

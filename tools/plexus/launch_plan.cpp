@@ -50,10 +50,22 @@ std::vector<Process> plan(const scenario::Scenario& sc, const std::string& host)
   std::vector<Process> procs;
   std::map<std::string, std::string> robots_by_host;  // host -> "r1,r2"
   std::map<std::string, std::string> dds_by_host;     // host -> the robots' `dds` key
+  std::vector<Process> sources;                       // robots fed by a bridge or a replay
   for (const auto& c : sc.components) {
     if (!here(c.host)) continue;
     if (c.kind == scenario::ComponentKind::plant) {
       const std::string robot = c.component->name().substr(0, c.component->name().find('/'));
+      if (const auto src = sc.sources.find(robot); src != sc.sources.end()) {
+        // A robot fed by a bridge or a replay: that program, for that robot, in place of the
+        // plant simulator (docs/bridges.md).
+        Process p;
+        p.program = scenario::to_string(src->second.type);
+        p.select = {"--robots", robot};
+        p.name = p.service();
+        p.vendor = c.dds;
+        sources.push_back(p);
+        continue;
+      }
       auto& list = robots_by_host[c.host];
       list += (list.empty() ? "" : ",") + robot;
       auto [it, first_robot] = dds_by_host.emplace(c.host, c.dds);
@@ -81,7 +93,8 @@ std::vector<Process> plan(const scenario::Scenario& sc, const std::string& host)
   }
   std::set<std::string> robot_hosts;  // over the whole scenario, so names agree on every host
   for (const auto& c : sc.components)
-    if (c.kind == scenario::ComponentKind::plant) robot_hosts.insert(c.host);
+    if (c.kind == scenario::ComponentKind::plant && !sc.sources.count(c.component->name().substr(0, c.component->name().find('/'))))
+      robot_hosts.insert(c.host);
   std::vector<Process> sims;
   for (const auto& [h, robots] : robots_by_host) {
     const std::string name = robot_hosts.size() == 1 ? "plant_simulator" : "plant_simulator " + robots;
@@ -92,6 +105,7 @@ std::vector<Process> plan(const scenario::Scenario& sc, const std::string& host)
     p.vendor = dds_by_host[h];
     sims.push_back(p);
   }
+  procs.insert(procs.begin(), sources.begin(), sources.end());
   procs.insert(procs.begin(), sims.begin(), sims.end());
   return procs;
 }
@@ -143,6 +157,20 @@ YAML::Node part_document(const scenario::Scenario& sc, const Process& p) {
     part["inputs"][spec.name] = in;
   }
   return part;
+}
+
+std::vector<std::string> replay_args(const scenario::Scenario& sc, const Process& p) {
+  const std::string& robot = p.select.back();
+  std::string topics;
+  for (const auto& s : sc.signals) {
+    const auto producer = std::find_if(sc.components.begin(), sc.components.end(),
+                                       [&](const auto& c) { return c.component->name() == s.producer; });
+    const bool physical = producer != sc.components.end() && (producer->kind == scenario::ComponentKind::plant ||
+                                                              producer->kind == scenario::ComponentKind::sensor);
+    if (physical && s.name.rfind(robot + "/", 0) == 0) topics += (topics.empty() ? "" : ",") + s.name;
+  }
+  return {"replay", sc.sources.at(robot).recording, "--topics", topics, "--restamp", "--service", p.service(),
+          "--wait", "10", "--linger", "0"};
 }
 
 nlohmann::ordered_json process_table(const std::vector<Process>& procs) {

@@ -26,6 +26,8 @@ struct Process {
 
   /// The service name the process reports in its heartbeats and DDS participant.
   std::string service() const { return select.empty() ? program : program + " " + select.back(); }
+  /// The file in build/bin it runs: the program, or `plexus` for a robot's replay.
+  std::string executable() const { return program == "replay" ? "plexus" : program; }
 };
 
 /// The processes of a scenario: one plant_simulator per host for the robots on that host,
@@ -41,6 +43,10 @@ std::vector<Process> plan(const scenario::Scenario& sc, const std::string& host)
 /// written in, `host` left out) and `inputs:`, the schedule (period, stage, QoS profile) of
 /// every signal it reads that another process produces. It builds nothing else.
 YAML::Node part_document(const scenario::Scenario& sc, const Process& p);
+
+/// A robot's replay (`source: {type: replay}`): the arguments of `plexus replay` for the
+/// robot's sensor and truth topics, restamped to the run's clock, with a heartbeat.
+std::vector<std::string> replay_args(const scenario::Scenario& sc, const Process& p);
 
 /// launch.json's record of what this launcher started: process -> executable and vendor.
 nlohmann::ordered_json process_table(const std::vector<Process>& procs);

@@ -26,6 +26,8 @@ void install_stop_handler() {
 void add_dds_options(CLI::App* app, DdsOptions& o) {
   app->add_option("--dds", o.dds, "DDS vendor: fast or cyclone")->capture_default_str();
   app->add_option("--domain", o.domain, "DDS domain id (0..232)")->capture_default_str();
+  app->add_option("--interface", o.interface_address, "address of the one interface DDS uses")->capture_default_str();
+  app->add_option("--peers", o.peers, "comma-separated unicast discovery peers")->capture_default_str();
 }
 
 std::unique_ptr<rt::Participant> make_participant(const DdsOptions& o, const std::string& name) {
@@ -33,6 +35,11 @@ std::unique_ptr<rt::Participant> make_participant(const DdsOptions& o, const std
   po.vendor = rt::parse_vendor(o.dds);
   po.domain_id = o.domain;
   po.name = name;
+  po.network.interface_address = o.interface_address;
+  po.network.peers.clear();
+  std::stringstream ss(o.peers);
+  for (std::string peer; std::getline(ss, peer, ',');)
+    if (!peer.empty()) po.network.peers.push_back(peer);
   init_logging(name, "", "warn");  // tools print their own output; only problems are logged
   return rt::Participant::create(po);
 }

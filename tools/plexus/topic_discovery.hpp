@@ -18,6 +18,8 @@ namespace plexus::cli {
 struct DdsOptions {
   std::string dds = "fast";
   int domain = 0;
+  std::string interface_address = "127.0.0.1";  ///< the one interface DDS uses
+  std::string peers = "127.0.0.1";              ///< comma-separated unicast discovery peers
 };
 void add_dds_options(CLI::App* app, DdsOptions& o);
 std::unique_ptr<rt::Participant> make_participant(const DdsOptions& o, const std::string& name);

@@ -89,6 +89,7 @@ struct RealtimeHost::Impl {
   std::vector<std::unique_ptr<WirePublisher>> out;     // by signal
   std::vector<int64_t> local_origin;                  // by signal: origin of the latest local sample
   std::vector<std::vector<std::size_t>> local_inputs;  // by component: the signals it reads from this process
+  std::vector<bool> stop_when_stale;                   // by signal: a plant's command (zeroed when stale)
   rt::Subscriber<msg::ClockStep> start;
   rt::Publisher<msg::Heartbeat> heartbeat;
   msg::Heartbeat hb;
@@ -111,6 +112,12 @@ struct RealtimeHost::Impl {
       if (exec.hosted(c))
         for (std::size_t in : exec.inputs_of(c))
           if (std::find(produced.begin(), produced.end(), in) != produced.end()) local_inputs[c].push_back(in);
+    // A plant's command that goes stale is replaced by the zero command, as a motor
+    // controller's watchdog does on hardware (docs/bridges.md): the robot stops.
+    stop_when_stale.assign(signals.size(), false);
+    for (std::size_t c = 0; c < sc.components.size(); ++c)
+      if (exec.hosted(c) && sc.components[c].kind == scenario::ComponentKind::plant)
+        for (std::size_t in : exec.inputs_of(c)) stop_when_stale[in] = true;
     for (std::size_t i : exec.remote_inputs()) {
       auto r = std::make_unique<RemoteLatest>(signals[i], p, input_qos(sc, signals[i], profiles), step_ns(sc));
       r->deadline_ns = static_cast<int64_t>(sc.input_deadline_periods * static_cast<double>(signals[i].period_steps) *
@@ -205,6 +212,7 @@ RealtimeReport RealtimeHost::run(const std::atomic<bool>& stop) {
     if (r.sample.step < 0 || monotonic_ns() - r.received_ns > r.deadline_ns) {
       m.stale = true;
       ++m.report.stale_inputs;
+      if (m.stop_when_stale[signal]) std::fill(s.values.begin(), s.values.end(), 0.0);
     }
     m.origin = std::max(m.origin, r.origin_ns);
   };

@@ -96,22 +96,33 @@ void WireSignal::encode(const scenario::SignalSample& s, void* message) const {
   support().header(message)->data_time_ns(epoch_ns_ + s.step * step_ns_);
 }
 
+namespace {
+Rejection check_value(const WireSlot& slot, double v) {
+  if (!std::isfinite(v)) return Rejection::non_finite;
+  if (v < slot.min || v > slot.max) return Rejection::out_of_range;
+  return Rejection::none;
+}
+}  // namespace
+
+Rejection WireSignal::check(const scenario::SignalSample& s, std::size_t& bad_field) const {
+  for (std::size_t i = 0; i < slots_.size(); ++i)
+    if (const Rejection r = check_value(*slots_[i], s.values[i]); r != Rejection::none) {
+      bad_field = i;
+      return r;
+    }
+  return Rejection::none;
+}
+
 Rejection WireSignal::decode(const void* message, scenario::SignalSample& s, std::size_t& bad_field) const {
   void* m = const_cast<void*>(message);  // the accessors are the generated non-const ones; nothing is written
   const int64_t t = support().header(m)->data_time_ns();
   if (t < 0) return Rejection::negative_time;
   if (type_->count && *type_->count(m) != count_) return Rejection::wrong_count;
-  for (std::size_t i = 0; i < slots_.size(); ++i) {
-    const double v = read(*slots_[i], m);
-    if (!std::isfinite(v)) {
+  for (std::size_t i = 0; i < slots_.size(); ++i)
+    if (const Rejection r = check_value(*slots_[i], read(*slots_[i], m)); r != Rejection::none) {
       bad_field = i;
-      return Rejection::non_finite;
+      return r;
     }
-    if (v < slots_[i]->min || v > slots_[i]->max) {
-      bad_field = i;
-      return Rejection::out_of_range;
-    }
-  }
   const int64_t since = t - epoch_ns_ + step_ns_ / 2;  // nearest step, floored for times before the epoch
   s.step = since >= 0 ? since / step_ns_ : -((-since + step_ns_ - 1) / step_ns_);
   for (std::size_t i = 0; i < slots_.size(); ++i) s.values[i] = read(*slots_[i], m);
@@ -135,6 +146,16 @@ WirePublisher::WirePublisher(rt::Participant& p, const scenario::SignalSpec& spe
 
 bool WirePublisher::publish(const scenario::SignalSample& s, int64_t origin_ns) {
   wire_.encode(s, msg_.get());
+  return send(origin_ns);
+}
+
+bool WirePublisher::publish_at(const scenario::SignalSample& s, int64_t data_time_ns, int64_t origin_ns) {
+  wire_.encode(s, msg_.get());
+  wire_.support().header(msg_.get())->data_time_ns(data_time_ns);
+  return send(origin_ns);
+}
+
+bool WirePublisher::send(int64_t origin_ns) {
   msg::StampHeader& h = *wire_.support().header(msg_.get());
   h.seq_num(++seq_);
   const int64_t now = wall_time_ns();

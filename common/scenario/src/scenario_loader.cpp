@@ -17,6 +17,16 @@
 #include "wiring.hpp"
 
 namespace plexus::scenario {
+
+const char* to_string(RobotSource::Type t) {
+  switch (t) {
+    case RobotSource::Type::simulator: return "simulator";
+    case RobotSource::Type::serial_bridge: return "serial_bridge";
+    case RobotSource::Type::udp_bridge: return "udp_bridge";
+    case RobotSource::Type::replay: return "replay";
+  }
+  return "?";
+}
 namespace {
 
 bool valid_name(const std::string& s) {
@@ -230,6 +240,60 @@ struct Loader {
     }
   }
 
+  /// robots.<r>.source: a type name, or a map with `type` and that type's keys.
+  void load_source(const YamlMap& robot, const std::string& rpath, const std::string& r) {
+    RobotSource src;
+    const YAML::Node node = robot.node("source");
+    src.where = robot.where(node) + ": " + robot.key_path("source");
+    const bool scalar = node.IsScalar();
+    std::string type;
+    if (scalar) type = robot.required<std::string>("source");
+    const auto set_type = [&](const std::string& t, const auto& fail) {
+      if (t == "simulator") src.type = RobotSource::Type::simulator;
+      else if (t == "serial_bridge") src.type = RobotSource::Type::serial_bridge;
+      else if (t == "udp_bridge") src.type = RobotSource::Type::udp_bridge;
+      else if (t == "replay") src.type = RobotSource::Type::replay;
+      else fail("expected simulator, serial_bridge, udp_bridge or replay, got '" + t + "'");
+    };
+    if (scalar) {
+      set_type(type, [&](const std::string& m) { robot.fail("source", m); });
+      if (src.type != RobotSource::Type::simulator)
+        robot.fail("source", "a " + type + " needs its parameters: write source: {type: " + type + ", ...} (docs/bridges.md)");
+    } else {
+      const YamlMap m = robot.map("source");
+      set_type(m.required<std::string>("type"), [&](const std::string& msg) { m.fail("type", msg); });
+      const auto positive = [&](const char* key, double fallback) {
+        const double v = m.optional<double>(key, fallback);
+        if (!(v > 0.0) || !std::isfinite(v)) m.fail(key, "expected a positive number of seconds");
+        return v;
+      };
+      switch (src.type) {
+        case RobotSource::Type::simulator: break;
+        case RobotSource::Type::serial_bridge:
+          src.device = m.required<std::string>("device");
+          if (src.device.empty()) m.fail("device", "expected the path of a tty");
+          src.baud = m.optional<long>("baud", src.baud);
+          if (src.baud < 115200 || src.baud > 1000000) m.fail("baud", "expected 115200 .. 1000000");
+          src.link_timeout_s = positive("link_timeout", src.link_timeout_s);
+          src.retry_s = positive("retry", src.retry_s);
+          break;
+        case RobotSource::Type::udp_bridge:
+          src.bind = m.required<std::string>("bind");
+          src.peer = m.required<std::string>("peer");
+          src.link_timeout_s = positive("link_timeout", src.link_timeout_s);
+          break;
+        case RobotSource::Type::replay: {
+          const std::string rec = m.required<std::string>("recording");
+          src.recording = std::filesystem::path(rec).is_absolute() ? rec : (std::filesystem::path(sc.base_dir) / rec).lexically_normal().string();
+          break;
+        }
+      }
+      m.reject_unknown();
+    }
+    if (src.type != RobotSource::Type::simulator) sc.sources[r] = src;
+    (void)rpath;
+  }
+
   void load_components(const YamlMap& top) {
     std::vector<ScenarioComponent> all;
     if (!sc.partial || top.has("robots")) {
@@ -242,6 +306,7 @@ struct Loader {
       const std::string robot_host = robot.optional<std::string>("host", "");
       if (robot.has("host") && !hosts.count(robot_host)) robot.fail("host", "no host '" + robot_host + "' in hosts");
       const std::string robot_dds = dds_key(robot);
+      if (robot.has("source")) load_source(robot, rpath, r);
       const YamlMap plant = robot.map("plant");
       all.push_back(build(plant, rpath + ".plant", "plant", r, sc.resolved["robots"][r]["plant"], false));
       all.back().host = robot_host;

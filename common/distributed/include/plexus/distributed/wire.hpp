@@ -85,6 +85,9 @@ class WireSignal {
   /// index of the offending field for non_finite and out_of_range. The step is the nearest
   /// one to the data time (negative for a sample from before the epoch: not yet valid).
   Rejection decode(const void* message, scenario::SignalSample& s, std::size_t& bad_field) const;
+  /// The edge check of decode() on values the caller holds (a bridge's frame payload): the
+  /// first non-finite or out-of-range field, else Rejection::none.
+  Rejection check(const scenario::SignalSample& s, std::size_t& bad_field) const;
   /// The value of field i in `message` (for error messages).
   double value(const void* message, std::size_t field) const;
 
@@ -110,11 +113,16 @@ class WirePublisher {
   /// `origin_ns`: the header's origin time (0: this sample starts a chain, stamped now).
   /// False if the vendor refused the sample.
   bool publish(const scenario::SignalSample& s, int64_t origin_ns);
+  /// As publish(), with the header's data time given (ns, wall clock) instead of taken from
+  /// the step: a sample that is not on a run's grid (a bridge stamps a frame's arrival).
+  bool publish_at(const scenario::SignalSample& s, int64_t data_time_ns, int64_t origin_ns);
   /// The origin time written into the last published sample.
   int64_t last_origin() const { return last_origin_; }
   int matched_count() const { return writer_->matched_count(); }
 
  private:
+  bool send(int64_t origin_ns);  // stamps sequence, publish and origin times; writes
+
   WireSignal wire_;
   std::unique_ptr<rt::WriterBackend> writer_;
   MessagePtr msg_;

@@ -49,6 +49,23 @@ struct ExternalInput {
   std::string qos;           ///< the producer's QoS profile (empty: "state")
 };
 
+/// Where a robot's sensor topics come from and where its command goes (robot key `source`,
+/// docs/bridges.md): the plant simulator (the default), a serial or UDP bridge to a device,
+/// or the replay of a recording. Under `plexus launch` the robot's process is the source's
+/// executable; `plexus sim` simulates only.
+struct RobotSource {
+  enum class Type { simulator, serial_bridge, udp_bridge, replay };
+  Type type = Type::simulator;
+  std::string where;             ///< "file:line: robots.r1.source", for errors
+  std::string device;            ///< serial_bridge: tty path
+  long baud = 1000000;           ///< serial_bridge: 115200 .. 1000000
+  std::string bind, peer;        ///< udp_bridge: ADDR:PORT of the bridge and of the device
+  double link_timeout_s = 0.5;   ///< bridges: no valid frame for this long -> DEGRADED
+  double retry_s = 0.5;          ///< bridges: between attempts to open an absent device
+  std::string recording;         ///< replay: the recording (plexus record), absolute
+};
+const char* to_string(RobotSource::Type t);
+
 struct ScenarioMetric {
   std::string name;
   std::string type;
@@ -85,6 +102,8 @@ struct Scenario {
   bool until_stopped = false;
   std::vector<ScenarioMetric> metrics;
   std::vector<Expectation> expectations;
+  /// Robot -> its source; robots without a `source` key are simulated (absent here).
+  std::map<std::string, RobotSource> sources;
 };
 
 /// Steps of a run that goes on until it is stopped (Scenario::until_stopped).

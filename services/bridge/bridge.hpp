@@ -1,0 +1,60 @@
+// A hardware bridge: one robot's device on a serial line or UDP, on the robot's typed
+// topics (docs/bridges.md).
+//
+// Data path, device -> DDS (the I/O thread, which alone touches the device):
+//   bytes -> FrameDecoder (COBS, CRC, version: bad frames dropped and counted)
+//         -> route by frame id, payload length check
+//         -> edge check (WireSignal::check: finite, physical range)
+//         -> publish on <robot>/<topic>, data and origin time = when the frame arrived
+// DDS -> device (the command thread waits on the command reader):
+//   <robot>/cmd -> edge check (decode) -> deadline check (older than its deadline: not
+//   forwarded) -> pipe -> I/O thread -> command frame. While no fresh command is held the
+//   I/O thread sends a STOP frame once per command period.
+//
+// The device may be absent at start (the bridge retries, heartbeat DEGRADED), unplugged
+// mid-run (it stops publishing, so downstream inputs go stale and controllers hold; it
+// reopens the device and resumes) or send garbage (dropped, counted, never published).
+// Counters travel in the heartbeat's `link` (health/<service>, once a second).
+#pragma once
+
+#include <atomic>
+#include <memory>
+#include <string>
+
+#include "device_link.hpp"
+#include "plexus/msg/messages.hpp"
+#include "plexus/runtime/participant.hpp"
+#include "plexus/runtime/qos.hpp"
+#include "plexus/scenario/scenario.hpp"
+
+namespace plexus::bridge {
+
+struct BridgeOptions {
+  std::string service;         ///< heartbeat and log name
+  double link_timeout_s = 0.5;  ///< no valid frame for this long: link down, heartbeat DEGRADED
+  double retry_s = 0.5;         ///< between attempts to open an absent device
+};
+
+/// What the bridge did, for its exit line.
+struct BridgeReport {
+  msg::LinkStatus link;
+  uint64_t commands_forwarded = 0;
+  uint64_t commands_refused = 0;  ///< edge check
+  double run_s = 0;
+};
+
+class Bridge {
+ public:
+  /// Builds the routes (bridge_routes.hpp): throws InputError for a robot the protocol cannot carry.
+  Bridge(scenario::Scenario& sc, rt::Participant& participant, const rt::QosProfiles& profiles,
+         std::unique_ptr<DeviceLink> link, BridgeOptions options);
+  ~Bridge();
+  /// Runs until `stop`; then sends a last STOP frame and returns.
+  BridgeReport run(const std::atomic<bool>& stop);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace plexus::bridge

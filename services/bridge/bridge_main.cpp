@@ -1,0 +1,171 @@
+// The one main() of the hardware bridges, built twice (PLEXUS_BRIDGE_KIND):
+//   serial_bridge: the device on a tty (--device, --baud)
+//   udp_bridge:    the device on UDP (--bind, --peer)
+//
+// On its own, from a robot section (the plant and sensors it stands in for):
+//   serial_bridge --robot r1 --params deploy/params/unicycle_robot.yaml --device /dev/ttyUSB0 --baud 1000000
+//   udp_bridge --robot r1 --params deploy/params/unicycle_robot.yaml --bind 127.0.0.1:47001 --peer 127.0.0.1:47002
+// Under `plexus launch`: --part FILE, the robot's section with its `source:` (docs/bridges.md).
+// Runs until SIGINT/SIGTERM, then sends a last STOP frame, prints one JSON line with its
+// counters on stdout and exits 0. Bad parameters: one line naming where, exit 2.
+#include <sys/prctl.h>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <csignal>
+#include <cstdio>
+#include <set>
+#include <sstream>
+
+#include "bridge.hpp"
+#include "plexus/link/serial_port.hpp"
+#include "plexus/link/udp_socket.hpp"
+#include "plexus/base/input_error.hpp"
+#include "plexus/base/logging.hpp"
+#include "plexus/scenario/overrides.hpp"
+#include "services/common/standalone_scenario.hpp"
+
+namespace {
+
+std::atomic<bool> g_stop{false};
+void on_signal(int) { g_stop = true; }
+
+constexpr std::string_view kName = PLEXUS_BRIDGE_KIND;
+constexpr bool kSerial = kName == "serial_bridge";
+
+std::vector<std::string> split(const std::string& csv) {
+  std::set<std::string> out;
+  std::stringstream ss(csv);
+  for (std::string item; std::getline(ss, item, ',');)
+    if (!item.empty()) out.insert(item);
+  return {out.begin(), out.end()};
+}
+
+nlohmann::ordered_json link_json(const plexus::msg::LinkStatus& s) {
+  return {{"up", s.up()}, {"frames_in", s.frames_in()}, {"frames_out", s.frames_out()}, {"crc_errors", s.crc_errors()},
+          {"framing_errors", s.framing_errors()}, {"oversize", s.oversize()}, {"resyncs", s.resyncs()},
+          {"bytes_discarded", s.bytes_discarded()}, {"rejected_frames", s.rejected_frames()},
+          {"reconnects", s.reconnects()}, {"disconnects", s.disconnects()}, {"stale_commands", s.stale_commands()},
+          {"stop_frames", s.stop_frames()}, {"tx_errors", s.tx_errors()}, {"latency_p50_us", s.latency_p50_us()},
+          {"latency_p99_us", s.latency_p99_us()}, {"latency_max_us", s.latency_max_us()}};
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace plexus;
+  const std::string name(kName);
+  CLI::App app{name + ": one robot's device on " + (kSerial ? "a serial line" : "UDP") +
+               ", on the robot's typed topics in place of plant_simulator (docs/bridges.md)"};
+  std::string part_file, dds = "fast", qos_file, log_level = "info", mode = "realtime", service;
+  std::string interface_address = "127.0.0.1", peers = "127.0.0.1";
+  std::string device, bind, peer;
+  long baud = 0;
+  double link_timeout = 0, retry = 0, timeout = 0;
+  std::vector<std::string> sets;
+  int domain = 0;
+  bool start_signal = false;
+  scenario::StandaloneSpec alone;
+  alone.program = name;
+  alone.robot_section = true;
+  app.add_option("--part", part_file, "The robot's part of a scenario, with its source (written by plexus launch)");
+  app.add_option("--robot", alone.robot, "Robot whose topics it serves (default r1)");
+  app.add_option("--params", alone.params_file, "YAML robot section: the plant and sensors it stands in for");
+  app.add_option("--step", alone.step, "Base step in s (default 0.001)");
+  app.add_option("--input-rate", alone.input_rates, "cmd=HZ: the command's rate (default 100); stale after 3 periods");
+  app.add_option("--set", sets, "Parameter override key=value");
+  if (kSerial) {
+    app.add_option("--device", device, "Serial device path (alone: required)");
+    app.add_option("--baud", baud, "115200 .. 1000000 (default 1000000)");
+    app.add_option("--retry", retry, "Seconds between attempts to open an absent device (default 0.5)");
+  } else {
+    app.add_option("--bind", bind, "ADDR:PORT the bridge receives on (alone: required)");
+    app.add_option("--peer", peer, "ADDR:PORT of the device (alone: required)");
+  }
+  app.add_option("--link-timeout", link_timeout, "Seconds without a valid frame before the link is down (default 0.5)");
+  app.add_option("--dds", dds, "DDS vendor: fast or cyclone");
+  app.add_option("--domain", domain, "DDS domain id");
+  app.add_option("--qos-file", qos_file, "QoS profiles (default deploy/qos.yaml)");
+  app.add_option("--mode", mode, "realtime only (a bridge follows its device's clock)")->check(CLI::IsMember({"realtime", "lockstep"}));
+  app.add_flag("--start-signal", start_signal, "Accepted for plexus launch; a bridge starts at once");
+  app.add_option("--timeout", timeout, "Accepted for plexus launch (lockstep only)");
+  app.add_option("--service", service, "Name in heartbeats and logs (default: the executable and robot)");
+  app.add_option("--interface", interface_address, "Address of the one interface DDS uses (default 127.0.0.1)");
+  app.add_option("--peers", peers, "Comma-separated unicast discovery peers (default 127.0.0.1)");
+  app.add_option("--log-level", log_level, "trace, debug, info, warn, error");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? 0 : kExitBadInput;
+  }
+  if (!part_file.empty()) prctl(PR_SET_PDEATHSIG, SIGTERM);  // under the launcher: never outlive it
+  std::signal(SIGINT, on_signal);
+  std::signal(SIGTERM, on_signal);
+  try {
+    init_logging(name.c_str(), "", log_level);
+    if (mode != "realtime") throw InputError("--mode " + mode + ": a bridge runs in realtime only (its device keeps time)");
+    scenario::Scenario sc;
+    if (!part_file.empty()) {
+      if (!device.empty() || baud || !bind.empty() || !peer.empty() || retry > 0 || link_timeout > 0)
+        throw InputError("--part: the link comes from the part's `source:`; drop --device/--baud/--bind/--peer/--retry/--link-timeout");
+      std::vector<scenario::Override> overrides;
+      for (const auto& s : sets) overrides.push_back(scenario::parse_override(s));
+      sc = scenario::load_scenario(part_file, overrides, {.partial = true});
+    } else {
+      YAML::Node src(YAML::NodeType::Map);
+      src["type"] = name;
+      // Options are checked here so that errors name the option, not a key it became.
+      std::string error;
+      link::UdpEndpoint endpoint;
+      if (baud && !link::supported_baud(baud))
+        throw InputError("--baud " + std::to_string(baud) + ": expected 115200, 230400, 460800, 500000, 576000, 921600 or 1000000");
+      if (!bind.empty() && !link::parse_endpoint(bind, "--bind", endpoint, error)) throw InputError(error);
+      if (!peer.empty() && !link::parse_endpoint(peer, "--peer", endpoint, error)) throw InputError(error);
+      if (retry < 0 || link_timeout < 0) throw InputError("--retry and --link-timeout: expected seconds > 0");
+      if (kSerial) {
+        if (device.empty()) throw InputError("--device: required (the serial device path)");
+        src["device"] = device;
+        if (baud) src["baud"] = baud;
+        if (retry > 0) src["retry"] = retry;
+      } else {
+        if (bind.empty() || peer.empty()) throw InputError("--bind and --peer: required (ADDR:PORT each)");
+        src["bind"] = bind;
+        src["peer"] = peer;
+      }
+      if (link_timeout > 0) src["link_timeout"] = link_timeout;
+      alone.extra = YAML::Node(YAML::NodeType::Map);
+      alone.extra["source"] = src;
+      if (alone.input_rates.empty()) alone.input_rates.push_back("cmd=100");
+      sc = scenario::load_standalone(alone, sets, true);
+    }
+    if (sc.sources.size() != 1)
+      throw InputError(sc.file + ": a bridge serves exactly one robot whose `source` is " + name);
+    const auto& [robot, src] = *sc.sources.begin();
+    if (scenario::to_string(src.type) != name)
+      throw InputError(src.where + ": robot " + robot + "'s source is " + scenario::to_string(src.type) + ", not " + name);
+    auto link = kSerial ? bridge::serial_link(src.device, src.baud) : bridge::udp_link(src.bind, src.peer, src.where);
+
+    rt::ParticipantOptions po;
+    po.vendor = rt::parse_vendor(dds);
+    po.domain_id = domain;
+    po.name = !service.empty() ? service : name + " " + robot;
+    po.network.interface_address = interface_address;
+    po.network.peers = split(peers);
+    const auto profiles = rt::QosProfiles::load(qos_file.empty() ? rt::default_qos_file() : qos_file);
+    auto participant = rt::Participant::create(po);
+    bridge::Bridge b(sc, *participant, profiles, std::move(link),
+                     {.service = po.name, .link_timeout_s = src.link_timeout_s, .retry_s = src.retry_s});
+    const auto r = b.run(g_stop);
+    nlohmann::ordered_json j{{"service", po.name}, {"run_s", r.run_s}, {"commands_forwarded", r.commands_forwarded},
+                             {"commands_refused", r.commands_refused}, {"link", link_json(r.link)}};
+    std::printf("%s\n", j.dump().c_str());
+    return 0;
+  } catch (const InputError& e) {
+    std::fprintf(stderr, "%s: error: %s\n", name.c_str(), e.what());
+    return kExitBadInput;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "%s: failed: %s\n", name.c_str(), e.what());
+    return 1;
+  }
+}

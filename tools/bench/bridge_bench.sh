@@ -1,0 +1,54 @@
+#!/usr/bin/env bash
+# bridge_bench.sh BIN_DIR OUT_DIR [SECONDS]
+#
+# Measures the serial bridge against the device emulator on a pty (both vendors' numbers
+# are the bridge's own; DDS is Fast DDS here):
+#   1. latency from a frame's arrival to its topic's publication, p50/p99/max (the bridge's
+#      own counters), with the emulator pacing its bytes at 115200 and at 1000000 baud
+#      (unicycle, sensors at 100 Hz: 80 bytes per 10 ms, within 115200 baud's 11.5 kB/s);
+#   2. CPU use of the bridge (and the emulator) at 1 kHz: truth frames at 1 kHz plus the
+#      RFID position at 100 Hz in, a 1 kHz command stream (component_host constant_command)
+#      out, 1000000 baud.
+# Prints one JSON line per measurement. A report, not a test: timing goals live here.
+set -u
+bin=$1 out=$2 secs=${3:-20}
+params=$(cd "$(dirname "$0")/../../deploy/params" && pwd)/unicycle_robot.yaml
+mkdir -p "$out"
+domain=145
+pids=()
+cleanup() { for p in "${pids[@]}"; do kill -TERM "$p" 2>/dev/null; done; wait 2>/dev/null; }
+trap cleanup EXIT
+
+cpu_ticks() { awk '{print $14 + $15}' "/proc/$1/stat"; }
+
+run() {  # run LABEL BAUD STEP CMD_RATE
+  local label=$1 baud=$2 step=$3 rate=$4
+  rm -f "$out/$label.tty"
+  "$bin/device_emulator" --params "$params" --step "$step" --pty "$out/$label.tty" --baud "$baud" \
+    > "$out/$label.emulator.json" 2> "$out/$label.emulator.err" &
+  local emu=$!
+  for _ in $(seq 1 50); do [ -e "$out/$label.tty" ] && break; sleep 0.1; done
+  "$bin/serial_bridge" --robot r1 --params "$params" --step "$step" --device "$out/$label.tty" --baud "$baud" \
+    --input-rate "cmd=$rate" --domain $domain --log-level warn > "$out/$label.bridge.json" 2> "$out/$label.bridge.err" &
+  local bridge=$!
+  "$bin/component_host" --robot r1 --type constant_command --set v=0.05 --set omega=0.0 --set rate=$rate \
+    --domain $domain --log-level warn > /dev/null 2>&1 &
+  local cmd=$!
+  pids=($emu $bridge $cmd)
+  sleep 2
+  local b0 e0 t0 b1 e1 t1
+  b0=$(cpu_ticks $bridge) e0=$(cpu_ticks $emu) t0=$(date +%s.%N)
+  sleep "$secs"
+  b1=$(cpu_ticks $bridge) e1=$(cpu_ticks $emu) t1=$(date +%s.%N)
+  kill -TERM $cmd $bridge; wait $cmd $bridge 2>/dev/null
+  kill -TERM $emu; wait $emu 2>/dev/null
+  pids=()
+  local hz; hz=$(getconf CLK_TCK)
+  local link; link=$(grep -o '"link":{.*}' "$out/$label.bridge.json" | head -1)
+  awk -v l="$label" -v baud="$baud" -v b="$((b1 - b0))" -v e="$((e1 - e0))" -v t0="$t0" -v t1="$t1" -v hz="$hz" -v link="$link" \
+    'BEGIN { dt = t1 - t0; printf "{\"run\":\"%s\",\"baud\":%d,\"seconds\":%.1f,\"bridge_cpu_percent\":%.2f,\"emulator_cpu_percent\":%.2f,%s}\n", l, baud, dt, 100 * b / hz / dt, 100 * e / hz / dt, link }'
+}
+
+run latency_115200 115200 0.01 100
+run latency_1000000 1000000 0.01 100
+run cpu_1khz 1000000 0.001 1000
