@@ -12,8 +12,8 @@ PACKAGES=(
   # libraries
   libeigen3-dev libspdlog-dev libfmt-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev
   liborocos-kdl-dev libfftw3-dev libsqlite3-dev
-  # tests and benchmarks
-  libgtest-dev libgmock-dev libbenchmark-dev
+  # tests and benchmarks; clang and its libFuzzer runtime for the fuzz targets (tests/fuzz)
+  libgtest-dev libgmock-dev libbenchmark-dev clang libclang-rt-14-dev
   # tools used at run time: plots, loop-jitter baseline, network namespaces for multi-host tests
   gnuplot-nox rt-tests iproute2 procps
 )

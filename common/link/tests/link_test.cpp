@@ -2,8 +2,10 @@
 // vectors, the frame decoder against the faults a serial line or a network produces (noise,
 // lost bytes, flipped bits, runaway senders), the message table, and the two transports on
 // a pseudo-terminal and on loopback UDP.
+#include <arpa/inet.h>
 #include <fcntl.h>
 #include <gtest/gtest.h>
+#include <netinet/in.h>
 #include <poll.h>
 #include <pty.h>
 #include <sys/socket.h>
@@ -324,10 +326,21 @@ TEST(Frame, EmptyBlocksAreNotErrors) {
   EXPECT_EQ(c.c().bytes_discarded, 3u);
 }
 
+// A frame the decoder may hand on after `s` was corrupted: `s` itself, or `s` cut short at
+// a COBS group boundary (see BitFlipInACodeByteCanTruncateAFrame): same id and seq, a
+// strictly shorter payload that begins like the sent one.
+bool same_or_truncated(const Sent& got, const Sent& s) {
+  if (got == s) return true;
+  return got.id == s.id && got.seq == s.seq && got.payload.size() < s.payload.size() &&
+         std::equal(got.payload.begin(), got.payload.end(), s.payload.begin());
+}
+
 // One flipped bit anywhere in a frame (its delimiter included) never yields a frame with
-// other content: CRC-16 detects every 1-bit error, and COBS turns a flipped bit into at
-// most a split or merged block, each checked on its own. A flush 0x00 before the next
-// frame makes it survive even when the flip hit the delimiter.
+// other content of the sent length. In a data byte it is a 1-bit error, which CRC-16
+// always detects. A bit that turns a byte into 0x00 splits the block, and one in the
+// delimiter merges two; each piece is then checked on its own, and a piece that ends at a
+// group boundary is a truncated frame, which passes the CRC with odds of 2^-16. A flush
+// 0x00 before the next frame makes that one survive even when the flip hit the delimiter.
 TEST(Frame, AnySingleBitFlipIsDetected) {
   std::mt19937 rng(5);
   for (int trial = 0; trial < 40; ++trial) {
@@ -346,13 +359,44 @@ TEST(Frame, AnySingleBitFlipIsDetected) {
         ASSERT_FALSE(c.frames.empty());
         EXPECT_EQ(c.frames.back(), next) << "byte " << at << " bit " << bit;
         for (std::size_t i = 0; i + 1 < c.frames.size(); ++i)
-          EXPECT_EQ(c.frames[i], s) << "a corrupted frame passed: byte " << at << " bit " << bit;
-        EXPECT_EQ(c.frames.size(), 1u) << "byte " << at << " bit " << bit;
+          EXPECT_TRUE(same_or_truncated(c.frames[i], s)) << "a corrupted frame passed: byte " << at << " bit " << bit;
         EXPECT_GE(errors(c.c()), 1u);
         EXPECT_EQ(accounted(c), stream.size());
       }
     }
   }
+}
+
+// The limit of the CRC behind COBS, found by flipping every bit of 20000 random frames
+// (11.6 million flips, 2 such frames): the 0x04 code byte at offset 8 of this frame loses
+// bit 2 and becomes a delimiter. The block before it ends at a group boundary, so it
+// decodes, and its last two bytes happen to be the CRC of the rest. The decoder hands on
+// id 0x11 seq 5509 with 1 payload byte instead of 96: the bridge must, and does, refuse a
+// payload whose length is not its id's (docs/bridges.md "wrong length for its id").
+TEST(Frame, BitFlipInACodeByteCanTruncateAFrame) {
+  Bytes wire = {0x08, 0x01, 0x11, 0x85, 0x15, 0x5D, 0x3A, 0x71, 0x04, 0x86, 0x79, 0xE6, 0x06, 0xCE, 0x67, 0xC6, 0xE3,
+                0x45, 0x05, 0x96, 0xAB, 0xE7, 0x4F, 0x01, 0x0C, 0x3C, 0x24, 0x0F, 0x7A, 0x36, 0x9D, 0x88, 0xAA, 0x5A,
+                0x4F, 0x16, 0x07, 0x54, 0x38, 0xF1, 0xF1, 0xF5, 0x54, 0x01, 0x05, 0x66, 0x78, 0x94, 0x36, 0x04, 0xB1,
+                0x08, 0xB0, 0x05, 0xA3, 0x77, 0x6F, 0x9A, 0x0B, 0xE4, 0x8F, 0x3C, 0x7E, 0x3C, 0xE2, 0xE7, 0xA8, 0x4C,
+                0xCB, 0x0A, 0xD6, 0xD0, 0xCB, 0x8B, 0xBB, 0x45, 0x6F, 0xBA, 0x5E, 0x02, 0x85, 0x06, 0x48, 0x4B, 0x55,
+                0xE7, 0xD3, 0x02, 0xF3, 0x0E, 0x35, 0xE4, 0xCF, 0x20, 0x0C, 0x39, 0xFA, 0x45, 0x80, 0x63, 0xC2, 0xEA,
+                0xC3, 0x00};
+  Collect intact;
+  intact.feed(wire);
+  ASSERT_EQ(intact.frames.size(), 1u);
+  const Sent sent = intact.frames[0];
+  EXPECT_EQ(sent.payload.size(), 96u);
+
+  wire[8] ^= 0x04;
+  Collect c;
+  c.feed(wire);
+  ASSERT_EQ(c.frames.size(), 1u);
+  EXPECT_EQ(c.frames[0].id, 0x11);
+  EXPECT_EQ(c.frames[0].seq, 5509);
+  EXPECT_EQ(c.frames[0].payload.size(), 1u);
+  EXPECT_TRUE(same_or_truncated(c.frames[0], sent));
+  EXPECT_NE(c.frames[0].payload.size(), find_layout(uint8_t{0x11})->payload_size());
+  EXPECT_EQ(errors(c.c()), 1u);  // the rest of the frame
 }
 
 TEST(Frame, GarbageThenValidFrameIsRecovered) {
@@ -437,7 +481,8 @@ TEST(Frame, TruncatedFrameIsDroppedAndTheNextRecovered) {
     const Sent a = random_frame(rng), b = random_frame(rng);
     Bytes ea = encode_frame(a);
     // Lose 1..8 bytes somewhere before the delimiter (a UART overrun).
-    const std::size_t lost = std::min<std::size_t>(1 + rng() % 8, ea.size() - 1);
+    // At least one byte stays: a frame reduced to its delimiter is an empty block, not an error.
+    const std::size_t lost = std::min<std::size_t>(1 + rng() % 8, ea.size() - 2);
     const std::size_t at = rng() % (ea.size() - lost);
     ea.erase(ea.begin() + static_cast<long>(at), ea.begin() + static_cast<long>(at + lost));
     Collect c;
@@ -542,7 +587,6 @@ TEST(Payload, F64RoundTripsEveryBitPattern) {
   uint8_t p[8];
   for (double v : values) {
     put_f64_le(p, v);
-    EXPECT_EQ(std::memcmp(&v, &v, 8), 0);
     const double back = get_f64_le(p);
     EXPECT_EQ(std::memcmp(&back, &v, 8), 0) << v;
   }
@@ -735,19 +779,19 @@ struct UdpPair {
   UdpEndpoint ea, eb;
   std::string error;
   UdpPair() {
-    const int base = 45000 + static_cast<int>(::getpid() % 450) * 2;
-    for (int attempt = 0; attempt < 50 && b < 0; ++attempt) {
-      const int port = 45000 + (base - 45000 + attempt * 2) % 1000;
+    const int first = static_cast<int>(::getpid() % 500);
+    for (int attempt = 0; attempt < 50; ++attempt) {
+      const int port = 45000 + ((first + attempt) % 500) * 2;
       ea = {"127.0.0.1", static_cast<uint16_t>(port)};
       eb = {"127.0.0.1", static_cast<uint16_t>(port + 1)};
       a = open_udp(ea, eb, error);
-      if (a < 0) continue;
-      b = open_udp(eb, ea, error);
-      if (b < 0) {
+      if (a >= 0) {
+        b = open_udp(eb, ea, error);
+        if (b >= 0) return;
         ::close(a);
         a = -1;
       }
-      if (error.find("Address already in use") == std::string::npos && b < 0) break;  // another failure
+      if (error.find("Address already in use") == std::string::npos) return;  // not a clash: report it
     }
   }
   ~UdpPair() {
