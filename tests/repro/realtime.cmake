@@ -37,3 +37,18 @@ foreach(variant "cyclone;cyclone;208" "fast;fast;209")
   set_tests_properties(repro.realtime.native_plant_rfid_${native} PROPERTIES
                        LABELS "repro;realtime;multiprocess;slow;interop" TIMEOUT 300 RUN_SERIAL TRUE)
 endforeach()
+
+# Issue 13, swapping the simulator for hardware: the same RFID case with robots.r1.source =
+# serial_bridge and the device emulator on a pty (tests/bridges/rfid_serial_loop.sh): the
+# bridge starts with the device absent, then carries every sensor frame and command; the
+# paper's bounds must hold as with the simulator, on each vendor.
+foreach(variant "fast;146" "cyclone;147")
+  list(POP_FRONT variant vendor domain)
+  add_test(NAME repro.realtime.serial_bridge_rfid_${vendor}
+           COMMAND ${PROJECT_SOURCE_DIR}/tests/bridges/rfid_serial_loop.sh $<TARGET_FILE:plexus>
+                   $<TARGET_FILE_DIR:device_emulator> ${vendor} ${domain}
+                   ${CMAKE_BINARY_DIR}/test-runs/realtime/serial_bridge_rfid_${vendor}
+                   ${PROJECT_SOURCE_DIR}/deploy/scenarios/wmr_output_feedback_rfid.yaml 1000000)
+  set_tests_properties(repro.realtime.serial_bridge_rfid_${vendor} PROPERTIES
+                       LABELS "repro;realtime;multiprocess;slow;bridges" TIMEOUT 300 RUN_SERIAL TRUE)
+endforeach()
