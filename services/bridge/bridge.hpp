@@ -38,7 +38,7 @@ struct BridgeOptions {
 /// What the bridge did, for its exit line.
 struct BridgeReport {
   msg::LinkStatus link;
-  uint64_t commands_forwarded = 0;
+  uint64_t commands_forwarded = 0;  ///< command frames the device took
   uint64_t commands_refused = 0;  ///< edge check
   double run_s = 0;
 };
