@@ -15,8 +15,6 @@
 
 #include <csignal>
 #include <cstdio>
-#include <set>
-#include <sstream>
 
 #include "bridge.hpp"
 #include "plexus/link/serial_port.hpp"
@@ -24,6 +22,7 @@
 #include "plexus/base/input_error.hpp"
 #include "plexus/base/logging.hpp"
 #include "plexus/scenario/overrides.hpp"
+#include "services/service_main/service_dds_options.hpp"
 #include "services/common/standalone_scenario.hpp"
 
 namespace {
@@ -33,14 +32,6 @@ void on_signal(int) { g_stop = true; }
 
 constexpr std::string_view kName = PLEXUS_BRIDGE_KIND;
 constexpr bool kSerial = kName == "serial_bridge";
-
-std::vector<std::string> split(const std::string& csv) {
-  std::set<std::string> out;
-  std::stringstream ss(csv);
-  for (std::string item; std::getline(ss, item, ',');)
-    if (!item.empty()) out.insert(item);
-  return {out.begin(), out.end()};
-}
 
 nlohmann::ordered_json link_json(const plexus::msg::LinkStatus& s) {
   return {{"up", s.up()}, {"frames_in", s.frames_in()}, {"frames_out", s.frames_out()}, {"crc_errors", s.crc_errors()},
@@ -58,13 +49,12 @@ int main(int argc, char** argv) {
   const std::string name(kName);
   CLI::App app{name + ": one robot's device on " + (kSerial ? "a serial line" : "UDP") +
                ", on the robot's typed topics in place of plant_simulator (docs/bridges.md)"};
-  std::string part_file, dds = "fast", qos_file, log_level = "info", mode = "realtime", service;
-  std::string interface_address = "127.0.0.1", peers = "127.0.0.1";
+  std::string part_file, log_level = "info", mode = "realtime";
+  scenario::ServiceDdsOptions net;
   std::string device, bind, peer;
   long baud = 0;
   double link_timeout = 0, retry = 0, timeout = 0;
   std::vector<std::string> sets;
-  int domain = 0;
   bool start_signal = false;
   scenario::StandaloneSpec alone;
   alone.program = name;
@@ -84,15 +74,10 @@ int main(int argc, char** argv) {
     app.add_option("--peer", peer, "ADDR:PORT of the device (alone: required)");
   }
   app.add_option("--link-timeout", link_timeout, "Seconds without a valid frame before the link is down (default 0.5)");
-  app.add_option("--dds", dds, "DDS vendor: fast or cyclone");
-  app.add_option("--domain", domain, "DDS domain id");
-  app.add_option("--qos-file", qos_file, "QoS profiles (default deploy/qos.yaml)");
+  net.add_to(app);
   app.add_option("--mode", mode, "realtime only (a bridge follows its device's clock)")->check(CLI::IsMember({"realtime", "lockstep"}));
   app.add_flag("--start-signal", start_signal, "Accepted for plexus launch; a bridge starts at once");
   app.add_option("--timeout", timeout, "Accepted for plexus launch (lockstep only)");
-  app.add_option("--service", service, "Name in heartbeats and logs (default: the executable and robot)");
-  app.add_option("--interface", interface_address, "Address of the one interface DDS uses (default 127.0.0.1)");
-  app.add_option("--peers", peers, "Comma-separated unicast discovery peers (default 127.0.0.1)");
   app.add_option("--log-level", log_level, "trace, debug, info, warn, error");
   try {
     app.parse(argc, argv);
@@ -146,13 +131,8 @@ int main(int argc, char** argv) {
       throw InputError(src.where + ": robot " + robot + "'s source is " + scenario::to_string(src.type) + ", not " + name);
     auto link = kSerial ? bridge::serial_link(src.device, src.baud) : bridge::udp_link(src.bind, src.peer, src.where);
 
-    rt::ParticipantOptions po;
-    po.vendor = rt::parse_vendor(dds);
-    po.domain_id = domain;
-    po.name = !service.empty() ? service : name + " " + robot;
-    po.network.interface_address = interface_address;
-    po.network.peers = split(peers);
-    const auto profiles = rt::QosProfiles::load(qos_file.empty() ? rt::default_qos_file() : qos_file);
+    const rt::ParticipantOptions po = net.participant(name + " " + robot);
+    const auto profiles = net.profiles();
     auto participant = rt::Participant::create(po);
     bridge::Bridge b(sc, *participant, profiles, std::move(link),
                      {.service = po.name, .link_timeout_s = src.link_timeout_s, .retry_s = src.retry_s});

@@ -22,8 +22,6 @@
 #include <cmath>
 #include <csignal>
 #include <cstdio>
-#include <set>
-#include <sstream>
 
 #include "plexus/base/input_error.hpp"
 #include "plexus/base/logging.hpp"
@@ -32,6 +30,7 @@
 #include "plexus/distributed/realtime.hpp"
 #include "plexus/distributed/service_catalog.hpp"
 #include "plexus/scenario/overrides.hpp"
+#include "services/service_main/service_dds_options.hpp"
 #include "services/common/standalone_scenario.hpp"
 
 namespace {
@@ -42,14 +41,6 @@ void on_signal(int) { g_stop = true; }
 constexpr const char* kName = PLEXUS_SERVICE_NAME;
 constexpr bool kPlant = std::string_view(kName) == "plant_simulator";
 
-std::set<std::string> split(const std::string& csv) {
-  std::set<std::string> out;
-  std::stringstream ss(csv);
-  for (std::string item; std::getline(ss, item, ',');)
-    if (!item.empty()) out.insert(item);
-  return out;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -58,11 +49,10 @@ int main(int argc, char** argv) {
                             ": a plexus service over DDS, on its own (--robot, --params, --set) or as part of `plexus "
                             "launch` (--part). Topics: docs/topics.md";
   CLI::App app{about};
-  std::string part_file, dds = "fast", qos_file, profile = "lockstep", log_level = "warn", mode = "realtime", service;
+  std::string part_file, profile = "lockstep", log_level = "warn", mode = "realtime";
+  scenario::ServiceDdsOptions net;
   int priority = 0, cpu = -1;
-  std::string interface_address = "127.0.0.1", peers = "127.0.0.1";
   std::vector<std::string> sets;
-  int domain = 0;
   double timeout = 10.0;
   bool start_signal = false;
   scenario::StandaloneSpec alone;
@@ -83,19 +73,14 @@ int main(int argc, char** argv) {
   app.add_option("--input-rate", alone.input_rates,
                  "PORT=HZ: the rate an input is produced at, when not its own (staleness: 3 of its periods)");
   app.add_option("--set", sets, "Parameter override key=value (with --part: dotted.key=value of the part)");
-  app.add_option("--dds", dds, "DDS vendor: fast or cyclone");
-  app.add_option("--domain", domain, "DDS domain id");
-  app.add_option("--qos-file", qos_file, "QoS profiles (default deploy/qos.yaml)");
+  net.add_to(app);
   app.add_option("--profile", profile, "QoS profile of the lockstep topics");
   app.add_option("--timeout", timeout, "Lockstep: seconds to wait for one input before failing");
   app.add_option("--mode", mode, "realtime (default) or lockstep (steps with a plexus launch clock)")
       ->check(CLI::IsMember({"lockstep", "realtime"}));
   app.add_flag("--start-signal", start_signal, "Realtime: wait for the launcher's start signal (plexus launch)");
-  app.add_option("--service", service, "Name in heartbeats and logs (default: executable and service name)");
   app.add_option("--priority", priority, "Realtime: SCHED_FIFO priority (0: normal scheduling)");
   app.add_option("--cpu", cpu, "Realtime: pin the loop to this CPU");
-  app.add_option("--interface", interface_address, "Address of the one interface DDS uses (default 127.0.0.1)");
-  app.add_option("--peers", peers, "Comma-separated unicast discovery peers (default 127.0.0.1)");
   app.add_option("--log-level", log_level, "trace, debug, info, warn, error");
   try {
     app.parse(argc, argv);
@@ -131,14 +116,8 @@ int main(int argc, char** argv) {
     if (sc.components.empty()) throw InputError(sc.file + ": no component to run");
     const std::vector<bool> hosted(sc.components.size(), true);
 
-    rt::ParticipantOptions po;
-    po.vendor = rt::parse_vendor(dds);
-    po.domain_id = domain;
-    po.name = !service.empty() ? service : std::string(kName) + " " + hosted_names;
-    po.network.interface_address = interface_address;
-    const auto peer_set = split(peers);
-    po.network.peers.assign(peer_set.begin(), peer_set.end());
-    const auto profiles = rt::QosProfiles::load(qos_file.empty() ? rt::default_qos_file() : qos_file);
+    const rt::ParticipantOptions po = net.participant(std::string(kName) + " " + hosted_names);
+    const auto profiles = net.profiles();
     auto participant = rt::Participant::create(po);
     if (realtime) {
       distributed::RealtimeOptions ro;
