@@ -134,7 +134,10 @@ int run_replay(const ReplayOpts& o) {
         if (!t.qos_json.empty()) qj = nlohmann::json::parse(t.qos_json);
       } catch (const nlohmann::json::exception&) {
       }
-      q = rt::writer_qos_like(qos_from_json(qj), 64);
+      // A live stand-in (--restamp) keeps the recorded writer's history when discovery told
+      // it, else newest-wins (keep_last 1) as every plexus realtime topic; a plain replay
+      // keeps up to 64 samples for slow readers.
+      q = rt::writer_qos_like(qos_from_json(qj), o.restamp ? 1 : 64);
       if (t.qos_json.empty()) q.reliability = rt::QosProfile::Reliability::reliable;
     }
     Out out;
@@ -223,7 +226,8 @@ int run_replay(const ReplayOpts& o) {
   std::printf("replayed %llu of %zu samples from %s in %.3f s%s\n", static_cast<unsigned long long>(published), msgs.size(),
               o.file.c_str(), static_cast<double>(monotonic_ns() - start_mono) * 1e-9,
               failed ? (" (" + std::to_string(failed) + " failed)").c_str() : "");
-  return failed == 0 && published == msgs.size() ? 0 : 1;
+  // Stopped by SIGINT/SIGTERM before the end: a requested stop, not a failure.
+  return failed == 0 && (published == msgs.size() || g_stop) ? 0 : 1;
 }
 
 }  // namespace
