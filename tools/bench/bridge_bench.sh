@@ -6,9 +6,9 @@
 #   1. latency from a frame's arrival to its topic's publication, p50/p99/max (the bridge's
 #      own counters), with the emulator pacing its bytes at 115200 and at 1000000 baud
 #      (unicycle, sensors at 100 Hz: 80 bytes per 10 ms, within 115200 baud's 11.5 kB/s);
-#   2. CPU use of the bridge (and the emulator) at 1 kHz: truth frames at 1 kHz plus the
-#      RFID position at 100 Hz in, a 1 kHz command stream (component_host constant_command)
-#      out, 1000000 baud.
+#   2. CPU use of the bridge (and the emulator) at 1 kHz: truth and RFID position frames at
+#      1 kHz each in (the sensor runs at the base rate), a 1 kHz command stream
+#      (component_host constant_command) out, 1000000 baud.
 # Prints one JSON line per measurement. A report, not a test: timing goals live here.
 set -u
 bin=$1 out=$2 secs=${3:-20}
@@ -44,7 +44,7 @@ run() {  # run LABEL BAUD STEP CMD_RATE
   kill -TERM $emu; wait $emu 2>/dev/null
   pids=()
   local hz; hz=$(getconf CLK_TCK)
-  local link; link=$(grep -o '"link":{.*}' "$out/$label.bridge.json" | head -1)
+  local link; link=$(grep -o '"link":{[^}]*}' "$out/$label.bridge.json" | head -1)
   awk -v l="$label" -v baud="$baud" -v b="$((b1 - b0))" -v e="$((e1 - e0))" -v t0="$t0" -v t1="$t1" -v hz="$hz" -v link="$link" \
     'BEGIN { dt = t1 - t0; printf "{\"run\":\"%s\",\"baud\":%d,\"seconds\":%.1f,\"bridge_cpu_percent\":%.2f,\"emulator_cpu_percent\":%.2f,%s}\n", l, baud, dt, 100 * b / hz / dt, 100 * e / hz / dt, link }'
 }
