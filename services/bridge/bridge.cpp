@@ -294,7 +294,7 @@ struct Bridge::Impl {
   msg::LinkStatus link_status() const {
     msg::LinkStatus s;
     const auto get = [](const std::atomic<uint64_t>& a) { return a.load(std::memory_order_relaxed); };
-    s.up(c.up.load(std::memory_order_relaxed));
+    s.state(c.up.load(std::memory_order_relaxed) ? msg::LINK_UP : msg::LINK_DOWN);
     s.frames_in(get(c.frames_in));
     s.frames_out(get(c.frames_out));
     s.crc_errors(get(c.crc_errors));

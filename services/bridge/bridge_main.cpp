@@ -34,7 +34,7 @@ constexpr std::string_view kName = PLEXUS_BRIDGE_KIND;
 constexpr bool kSerial = kName == "serial_bridge";
 
 nlohmann::ordered_json link_json(const plexus::msg::LinkStatus& s) {
-  return {{"up", s.up()}, {"frames_in", s.frames_in()}, {"frames_out", s.frames_out()}, {"crc_errors", s.crc_errors()},
+  return {{"up", s.state() == plexus::msg::LINK_UP}, {"frames_in", s.frames_in()}, {"frames_out", s.frames_out()}, {"crc_errors", s.crc_errors()},
           {"framing_errors", s.framing_errors()}, {"oversize", s.oversize()}, {"resyncs", s.resyncs()},
           {"bytes_discarded", s.bytes_discarded()}, {"rejected_frames", s.rejected_frames()},
           {"reconnects", s.reconnects()}, {"disconnects", s.disconnects()}, {"stale_commands", s.stale_commands()},

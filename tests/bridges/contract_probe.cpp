@@ -406,7 +406,7 @@ struct HealthReader {
 };
 
 json link_json(const msg::LinkStatus& s) {
-  return {{"up", s.up()}, {"frames_in", s.frames_in()}, {"frames_out", s.frames_out()}, {"crc_errors", s.crc_errors()},
+  return {{"up", s.state() == plexus::msg::LINK_UP}, {"frames_in", s.frames_in()}, {"frames_out", s.frames_out()}, {"crc_errors", s.crc_errors()},
           {"framing_errors", s.framing_errors()}, {"oversize", s.oversize()}, {"resyncs", s.resyncs()},
           {"rejected_frames", s.rejected_frames()}, {"stale_commands", s.stale_commands()},
           {"stop_frames", s.stop_frames()}, {"tx_errors", s.tx_errors()}};

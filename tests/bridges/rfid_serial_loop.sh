@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# rfid_serial_loop.sh PLEXUS BIN_DIR VENDOR DOMAIN OUT_DIR SCENARIO BAUD
+# rfid_serial_loop.sh PLEXUS BIN_DIR VENDOR DOMAIN OUT_DIR SCENARIO BAUD [BRIDGE_VENDOR [UNPLUG_AT]]
 #
 # Issue 13's closed loop: paper 000's RFID case (section 6.3.2) in realtime with the serial
 # bridge and the device emulator in place of the plant simulator. The scenario is the
@@ -10,20 +10,28 @@
 # launch's expectations, the paper's bounds (max <= 0.05 m, mean <= 0.01 m after 100 s),
 # must hold (launch exit 0), the emulator must have obeyed commands, and both must stop
 # cleanly.
+#
+# BRIDGE_VENDOR runs the bridge on another vendor than the services (a mixed deployment).
+# UNPLUG_AT (s after the emulator starts) unplugs the device for 0.5 s: the bridge must stop
+# publishing (the controller's inputs go stale, it holds), reconnect and resume, and the
+# bounds at 100 s must still hold.
 set -u
-plexus=$1 bin=$2 vendor=$3 domain=$4 out=$5 scenario=$6 baud=$7
+plexus=$1 bin=$2 vendor=$3 domain=$4 out=$5 scenario=$6 baud=$7 bridge_vendor=${8:-$3} unplug_at=${9:-}
 rm -rf "$out" && mkdir -p "$out"
 emu=""
 trap '[ -n "$emu" ] && kill -TERM $emu 2>/dev/null; kill -TERM $launch 2>/dev/null' EXIT
 "$plexus" launch "$scenario" --set clock.mode=realtime --set duration=101 \
   --set "robots.r1.source={type: serial_bridge, device: $out/tty, baud: $baud}" \
-  --dds "$vendor" --domain "$domain" --json --quiet --out "$out/run" > "$out/launch.json" 2> "$out/launch.err" &
+  --dds "$vendor" --vendor "serial_bridge r1=$bridge_vendor" --domain "$domain" --json --quiet --out "$out/run" \
+  > "$out/launch.json" 2> "$out/launch.err" &
 launch=$!
 part="$out/run/parts/serial_bridge_r1.yaml"
 for _ in $(seq 1 100); do [ -s "$part" ] && break; sleep 0.1; done
 [ -s "$part" ] || { echo "FAIL: the launcher wrote no part for serial_bridge r1"; cat "$out/launch.err"; exit 1; }
 sleep 1  # the bridge starts with its device absent: it must wait and retry
-"$bin/device_emulator" --part "$part" --pty "$out/tty" --baud "$baud" > "$out/emulator.json" 2> "$out/emulator.err" &
+faults=()
+[ -n "$unplug_at" ] && faults=(--fault "unplug@$unplug_at:for=0.5")
+"$bin/device_emulator" --part "$part" --pty "$out/tty" --baud "$baud" "${faults[@]}" > "$out/emulator.json" 2> "$out/emulator.err" &
 emu=$!
 wait $launch
 launch_rc=$?
@@ -41,4 +49,12 @@ echo "emulator: $(tail -1 "$out/emulator.json")"
 commands=$(grep -o '"commands":[0-9]*' "$out/emulator.json" | head -1 | cut -d: -f2)
 [ "${commands:-0}" -ge 5000 ] || { echo "FAIL: the emulator got ${commands:-0} commands (100 Hz for ~100 s expected)"; exit 1; }
 [ "$launch_rc" -eq 0 ] || { echo "FAIL: paper 000's RFID bounds not met (or the launch failed):"; tail -5 "$out/launch.err"; exit 1; }
+if [ -n "$unplug_at" ]; then
+  count() { echo "$bridge_line" | grep -o "\"$1\":[0-9]*" | cut -d: -f2; }
+  [ "$(count disconnects)" -ge 1 ] && [ "$(count reconnects)" -ge 1 ] || {
+    echo "FAIL: the bridge did not see the unplug and reconnect (disconnects $(count disconnects), reconnects $(count reconnects))"; exit 1; }
+  stale=$(grep -o '"motion_controller controller":{[^}]*' "$out/launch.json" | grep -o '"stale_input_reads":[0-9]*' | cut -d: -f2)
+  [ "${stale:-0}" -ge 1 ] || { echo "FAIL: the controller's inputs never went stale while the device was unplugged"; exit 1; }
+  echo "unplugged at $unplug_at s for 0.5 s: bridge disconnects $(count disconnects), reconnects $(count reconnects); controller stale input reads $stale (held)"
+fi
 echo "PASS"

@@ -41,14 +41,17 @@ endforeach()
 # Issue 13, swapping the simulator for hardware: the same RFID case with robots.r1.source =
 # serial_bridge and the device emulator on a pty (tests/bridges/rfid_serial_loop.sh): the
 # bridge starts with the device absent, then carries every sensor frame and command; the
-# paper's bounds must hold as with the simulator, on each vendor.
-foreach(variant "fast;146" "cyclone;147")
-  list(POP_FRONT variant vendor domain)
+# paper's bounds must hold as with the simulator. Fast: everything on Fast DDS at 1 Mbaud.
+# Cyclone: the services on Cyclone DDS, the bridge on Fast DDS (a mixed deployment), 115200
+# baud, and the device unplugged for 0.5 s at 30 s (the bridge stops publishing, the
+# controller holds, the bridge reconnects and the loop resumes).
+foreach(variant "fast;146;1000000;fast;" "cyclone;147;115200;fast;30")
+  list(POP_FRONT variant vendor domain baud bridge_vendor unplug_at)
   add_test(NAME repro.realtime.serial_bridge_rfid_${vendor}
            COMMAND ${PROJECT_SOURCE_DIR}/tests/bridges/rfid_serial_loop.sh $<TARGET_FILE:plexus>
                    $<TARGET_FILE_DIR:device_emulator> ${vendor} ${domain}
                    ${CMAKE_BINARY_DIR}/test-runs/realtime/serial_bridge_rfid_${vendor}
-                   ${PROJECT_SOURCE_DIR}/deploy/scenarios/wmr_output_feedback_rfid.yaml 1000000)
+                   ${PROJECT_SOURCE_DIR}/deploy/scenarios/wmr_output_feedback_rfid.yaml ${baud} ${bridge_vendor} ${unplug_at})
   set_tests_properties(repro.realtime.serial_bridge_rfid_${vendor} PROPERTIES
                        LABELS "repro;realtime;multiprocess;slow;bridges" TIMEOUT 300 RUN_SERIAL TRUE)
 endforeach()
