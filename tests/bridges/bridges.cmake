@@ -39,3 +39,14 @@ add_test(NAME bridges.emulator_smoke
          COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/emulator_smoke.sh $<TARGET_FILE:device_emulator>
                  ${PROJECT_SOURCE_DIR}/deploy/params/unicycle_robot.yaml ${CMAKE_BINARY_DIR}/test-runs/bridges/emulator_smoke)
 set_tests_properties(bridges.emulator_smoke PROPERTIES LABELS "bridges")
+
+# The balancing robot (paper 002) through the serial bridge, against its simulator's
+# contract (tests/bridges/balancing_contract.sh): topics, types, QoS, rates (IMU 100 Hz,
+# odometry and truth 500 Hz), headers and values. One vendor each way; no drive.
+foreach(variant "simulator;cyclone;138" "serial;fast;139")
+  list(POP_FRONT variant source vendor domain)
+  add_test(NAME bridges.balancing_contract_${source}_${vendor}
+           COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/balancing_contract.sh ${source} ${vendor} ${domain}
+                   ${CMAKE_BINARY_DIR}/test-runs/bridges/balancing_contract_${source}_${vendor} $<TARGET_FILE_DIR:contract_probe>)
+  set_tests_properties(bridges.balancing_contract_${source}_${vendor} PROPERTIES LABELS "bridges;realtime" TIMEOUT 60)
+endforeach()
