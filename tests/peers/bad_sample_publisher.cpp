@@ -4,7 +4,8 @@
 //   bad_sample_publisher --dds fast --domain 7 --topic r1/position --type PositionMeasurement
 //                        --field x --value nan --count 5
 //
-// Waits for a matched reader, publishes `count` samples at 50 Hz (reliable), and exits 0.
+// Waits for a matched reader (and 1 s more), publishes `count` samples at most at 50 Hz
+// (reliable, each acknowledged before the next), and exits 0.
 #include <CLI/CLI.hpp>
 
 #include <cmath>
@@ -48,15 +49,21 @@ int main(int argc, char** argv) {
       if (monotonic_ns() > give_up) throw std::runtime_error("no reader of " + topic + " within 10 s");
       std::this_thread::sleep_for(std::chrono::milliseconds(20));
     }
-    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    // The writer matched the reader; give the reader time to match the writer too (a volatile
+    // reader that discovers a writer late may skip what it wrote before), also under load.
+    std::this_thread::sleep_for(std::chrono::milliseconds(1000));
     scenario::SignalSample s;
     s.values[0] = std::stod(value);  // "nan", "inf", "2e6"
     for (int i = 0; i < count; ++i) {
       s.step = (wall_time_ns() / 10'000'000);  // data time: now (wall clock, as a realtime producer)
       pub.publish(s, 0);
+      // Each sample acknowledged before the next: a reader that has not yet discovered this
+      // writer (the writer saw it first, under load) still gets every sample, since the one
+      // kept (keep_last 1) is resent until acknowledged; and the 20 ms spacing lets a 100 Hz
+      // reader take each one before the next replaces it.
+      if (!pub.wait_for_acks(5'000'000'000)) throw std::runtime_error("sample " + std::to_string(i + 1) + " of " + topic + " not acknowledged within 5 s");
       std::this_thread::sleep_for(std::chrono::milliseconds(20));
     }
-    std::this_thread::sleep_for(std::chrono::milliseconds(500));  // let reliable delivery finish
     std::printf("published %d samples of %s with %s = %s\n", count, topic.c_str(), field.c_str(), value.c_str());
     return 0;
   } catch (const std::exception& e) {

@@ -119,6 +119,9 @@ class WirePublisher {
   /// The origin time written into the last published sample.
   int64_t last_origin() const { return last_origin_; }
   int matched_count() const { return writer_->matched_count(); }
+  /// Reliable writers: waits until every matched reader acknowledged what was written
+  /// (rt::WriterBackend::wait_for_acks); false on timeout.
+  bool wait_for_acks(int64_t timeout_ns) { return writer_->wait_for_acks(timeout_ns); }
 
  private:
   bool send(int64_t origin_ns);  // stamps sequence, publish and origin times; writes
