@@ -4,18 +4,10 @@
 #include <cmath>
 #include <cstdio>
 
-#include "plexus/base/input_error.hpp"
+#include "robot_frames.hpp"
 
 namespace plexus::emulator {
 namespace {
-
-std::string where_of(const scenario::Scenario& sc, const std::string& component) {
-  for (const auto& c : sc.components)
-    if (c.component->name() == component) return c.where;
-  return sc.file;
-}
-
-std::string type_text(const scenario::SignalSpec& s) { return s.message.empty() ? "no IDL type" : s.message; }
 
 std::string hex(uint8_t id) {
   char buf[8];
@@ -33,29 +25,13 @@ int16_t index_of(const std::vector<std::string>& names, const char* name) {
 
 EmulatedDevice::EmulatedDevice(scenario::Scenario& sc, int64_t watchdog_ns)
     : sc_(sc), exec_(sc), watchdog_ns_(watchdog_ns) {
-  for (const auto& c : sc.components) {
-    if (c.kind != scenario::ComponentKind::plant && c.kind != scenario::ComponentKind::sensor)
-      throw InputError(c.where + ": a device has a robot's plant and sensors; '" + c.component->name() + "' is a " +
-                       scenario::to_string(c.kind));
-    const std::string robot = c.component->name().substr(0, c.component->name().find('/'));
-    if (!robot_.empty() && robot != robot_)
-      throw InputError(c.where + ": the emulator is one robot's device (" + robot_ + " and " + robot + " here)");
-    robot_ = robot;
-  }
-  if (robot_.empty()) throw InputError(sc.file + ": no robot (plant and sensors) to emulate");
+  // Which frame carries which signal: the bridge's own answer (services/bridge/robot_frames).
+  const bridge::RobotFrames frames = bridge::robot_frames(sc, exec_, "the device emulator");
+  robot_ = frames.robot;
   const auto& signals = exec_.signals();
-  const auto topic_of = [&](const scenario::SignalSpec& s) {
-    const std::string prefix = robot_ + "/";
-    return s.name.compare(0, prefix.size(), prefix) == 0 ? s.name.substr(prefix.size()) : s.name;
-  };
-
   route_of_.assign(signals.size(), -1);
-  for (std::size_t s : exec_.local_outputs()) {
+  for (const auto& [s, layout] : frames.outputs) {
     const auto& spec = signals[s];
-    const auto* layout = link::find_layout(topic_of(spec), spec.message, link::Direction::to_host);
-    if (!layout)
-      throw InputError(where_of(sc, spec.producer) + ": " + spec.name + " (" + type_text(spec) +
-                       ") has no frame in the bridge protocol (docs/bridges.md)");
     OutputRoute r;
     r.layout = layout;
     r.field.fill(-1);
@@ -65,21 +41,10 @@ EmulatedDevice::EmulatedDevice(scenario::Scenario& sc, int64_t watchdog_ns)
     routes_.push_back(r);
     if (spec.plant_state && truth_signal_ == SIZE_MAX) truth_signal_ = s;
   }
-
-  const auto remote = exec_.remote_inputs();
-  if (remote.size() > 1) {
-    std::string names;
-    for (std::size_t s : remote) names += (names.empty() ? "" : ", ") + signals[s].name;
-    throw InputError(sc.file + ": robot " + robot_ + " reads " + std::to_string(remote.size()) + " signals (" + names +
-                     "); a device takes exactly one command");
-  }
-  if (remote.size() == 1) {
-    cmd_signal_ = remote.front();
+  if (frames.command) {
+    cmd_signal_ = frames.command->signal;
+    cmd_layout_ = frames.command->layout;
     const auto& spec = signals[cmd_signal_];
-    cmd_layout_ = link::find_layout(topic_of(spec), spec.message, link::Direction::to_device);
-    if (!cmd_layout_)
-      throw InputError(sc.file + ": robot " + robot_ + ": " + spec.name + " (" + type_text(spec) +
-                       ") has no frame in the bridge protocol (docs/bridges.md)");
     cmd_field_.assign(spec.fields.size(), -1);
     for (std::size_t f = 0; f < spec.fields.size(); ++f)
       for (std::size_t i = 0; i < cmd_layout_->fields.size(); ++i)
