@@ -44,10 +44,6 @@ struct SharedCounters {
   std::atomic<double> latency_p50_us{0}, latency_p99_us{0}, latency_max_us{0};
 };
 
-void copy_name(std::array<char, 32>& dst, const std::string& src) {
-  dst.fill('\0');
-  std::memcpy(dst.data(), src.data(), std::min(src.size(), dst.size() - 1));
-}
 
 }  // namespace
 
@@ -81,9 +77,7 @@ struct Bridge::Impl {
     if (routes.command.layout->fields.size() > kMaxCommandFields)
       throw InputError(routes.command.spec->name + ": more command fields than a frame carries");
     heartbeat = p.publisher<msg::Heartbeat>(distributed::health_topic(opt.service), profiles.get("health"));
-    copy_name(hb.service(), opt.service);
-    copy_name(hb.robot(), routes.robot);
-    hb.pid(static_cast<uint32_t>(getpid()));
+    hb = distributed::heartbeat_of(opt.service, routes.robot);
     int fds[2];
     if (pipe2(fds, O_NONBLOCK | O_CLOEXEC) != 0) throw std::runtime_error(std::string("pipe2: ") + std::strerror(errno));
     pipe_r = fds[0];

@@ -14,7 +14,6 @@
 // --service NAME: publish a heartbeat on health/NAME once a second (plexus launch waits for
 // one from every process it starts).
 #include <time.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -117,8 +116,7 @@ int run_replay(const ReplayOpts& o) {
   };
   if (!o.service.empty()) {
     heartbeat = p->publisher<msg::Heartbeat>(distributed::health_topic(o.service), profiles.get("health"));
-    std::snprintf(hb.service().data(), hb.service().size(), "%s", o.service.c_str());
-    hb.pid(static_cast<uint32_t>(getpid()));
+    hb = distributed::heartbeat_of(o.service);
     beat(msg::SERVICE_WAITING);
   }
   for (const auto& t : rec.topics()) {

@@ -35,10 +35,6 @@ struct RemoteLatest {
   int64_t deadline_ns = 0;   // stale after this age
 };
 
-void copy_name(std::array<char, 32>& dst, const std::string& src) {
-  dst.fill('\0');
-  std::memcpy(dst.data(), src.data(), std::min(src.size(), dst.size() - 1));
-}
 
 }  // namespace
 
@@ -47,6 +43,18 @@ std::string health_topic(const std::string& service) {
   for (char& c : name)
     if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '/') c = '_';
   return "health/" + name;
+}
+
+msg::Heartbeat heartbeat_of(const std::string& service, const std::string& robot) {
+  const auto copy = [](std::array<char, 32>& dst, const std::string& src) {
+    dst.fill('\0');
+    std::memcpy(dst.data(), src.data(), std::min(src.size(), dst.size() - 1));
+  };
+  msg::Heartbeat hb;
+  copy(hb.service(), service);
+  copy(hb.robot(), robot);
+  hb.pid(static_cast<uint32_t>(getpid()));
+  return hb;
 }
 
 double stage_phase(const scenario::Scenario& sc, const std::vector<bool>& hosted) {
@@ -128,8 +136,7 @@ struct RealtimeHost::Impl {
       out[i] = std::make_unique<WirePublisher>(p, signals[i], step_ns(sc), signal_qos(sc, signals[i].producer, profiles));
     start = p.subscriber<msg::ClockStep>(kClockTopic, profiles.get("lockstep"));
     heartbeat = p.publisher<msg::Heartbeat>(health_topic(opt.service), profiles.get("health"));
-    copy_name(hb.service(), opt.service);
-    hb.pid(static_cast<uint32_t>(getpid()));
+    hb = heartbeat_of(opt.service);
   }
 
   void drain(std::size_t signal) {

@@ -52,6 +52,10 @@ inline constexpr int64_t kNoMeasurementOrigin = 1;
 /// "plant_simulator r1" publishes on `health/plant_simulator_r1`.
 std::string health_topic(const std::string& service);
 
+/// A heartbeat naming its sender: `service` and `robot` (cut to the message's 31
+/// characters) and this process's pid; the rest zero.
+msg::Heartbeat heartbeat_of(const std::string& service, const std::string& robot = {});
+
 /// The phase, as a fraction of the base period, at which a host of these components ticks:
 /// 0 if it hosts a plant or a sensor, else 0.5 if it hosts a controller, else 0.25 (references
 /// and estimators). Components of one host run in the scenario's order within a tick, so a
