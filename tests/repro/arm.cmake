@@ -1,18 +1,31 @@
 # Paper 004 (flexible-joint arm, VDC + EKF) reproductions through `plexus sim`. Each run
 # checks its scenario's own expectations (exit 1 when one fails); see the scenario headers
 # and docs/algorithms/arm.md for the Table 4 targets met and missed.
-foreach(scenario arm_vdc_ekf arm_ct_pd arm_vdc_ekf_reference_sweep arm_vdc_ekf_payload arm_vdc_ekf_3dof)
+foreach(scenario arm_ct_pd arm_vdc_ekf_reference_sweep arm_vdc_ekf_payload arm_vdc_ekf_3dof arm_table4)
   add_test(NAME repro.${scenario}
            COMMAND $<TARGET_FILE:plexus> sim ${PROJECT_SOURCE_DIR}/deploy/scenarios/${scenario}.yaml --quiet
                    --out ${CMAKE_BINARY_DIR}/test-runs/${scenario})
   set_tests_properties(repro.${scenario} PROPERTIES LABELS "repro" TIMEOUT 300)
 endforeach()
 
-# The Table 4 run at 1 kHz, the distributed joint controller's rate: same expectations.
-add_test(NAME repro.arm_vdc_ekf_1khz
-         COMMAND $<TARGET_FILE:plexus> sim ${PROJECT_SOURCE_DIR}/deploy/scenarios/arm_vdc_ekf.yaml --quiet --set step=0.001
-                 --out ${CMAKE_BINARY_DIR}/test-runs/arm_vdc_ekf_1khz)
-set_tests_properties(repro.arm_vdc_ekf_1khz PROPERTIES LABELS "repro" TIMEOUT 300)
+# Table 4, VDC+EKF: the settling times are met (the scenario's expectations); the RMS and
+# peak-torque targets are missed for the reasons in arm_vdc_ekf.yaml (the 14 mrad initial
+# error over T = 5 s; (18)-(20) at t = 0). Those misses are bounded here within ~10 % of
+# today's figures (5 kHz: RMS 1.286 / 1.129 / 1.711 mrad, peaks 452 / 163 N m; 1 kHz, the
+# distributed controller's rate: 1.290 / 1.139 / 1.721 mrad, 590 / 164 N m), and so is the
+# error after the transient (0.03 mrad, 30 / 8.5 N m), so that none can get worse unnoticed.
+set(ARM_TABLE4_STEADY "rms_e1_steady_mrad <= 0.04" "rms_e2_steady_mrad <= 0.04"
+                      "max_torque_1_steady_nm <= 33" "max_torque_2_steady_nm <= 9.4")
+plexus_pin(repro.arm_vdc_ekf ${PROJECT_SOURCE_DIR}/deploy/scenarios/arm_vdc_ekf.yaml MISSES none
+           CHECKS "rms_e1_mrad >= 1.16" "rms_e1_mrad <= 1.42" "rms_e2_mrad >= 1.02" "rms_e2_mrad <= 1.25"
+                  "rms_norm_mrad >= 1.54" "rms_norm_mrad <= 1.89"
+                  "max_torque_1_nm >= 405" "max_torque_1_nm <= 500" "max_torque_2_nm >= 146" "max_torque_2_nm <= 180"
+                  ${ARM_TABLE4_STEADY})
+plexus_pin(repro.arm_vdc_ekf_1khz ${PROJECT_SOURCE_DIR}/deploy/scenarios/arm_vdc_ekf.yaml MISSES none ARGS --set step=0.001
+           CHECKS "rms_e1_mrad >= 1.16" "rms_e1_mrad <= 1.42" "rms_e2_mrad >= 1.02" "rms_e2_mrad <= 1.26"
+                  "rms_norm_mrad >= 1.55" "rms_norm_mrad <= 1.9"
+                  "max_torque_1_nm >= 530" "max_torque_1_nm <= 650" "max_torque_2_nm >= 147" "max_torque_2_nm <= 180"
+                  ${ARM_TABLE4_STEADY})
 
 # Bad arm parameters are input errors (exit 2) naming the file, line and key.
 set(ARM_SCENARIO ${PROJECT_SOURCE_DIR}/deploy/scenarios/arm_vdc_ekf.yaml)

@@ -62,6 +62,8 @@ class MetricSetup {
   /// default the duration), validated to lie in [0, duration] with from <= to.
   std::pair<double, double> window() const;
 
+  /// The scenario's signals (a composite metric builds its parts' setups from them).
+  const std::vector<SignalSpec>& signals() const { return signals_; }
   double base_step() const { return base_step_; }
   double duration() const { return duration_; }
 
