@@ -1,8 +1,10 @@
-// plexus sim SCENARIO [--set key=value ...] [--out DIR] [--json] [--quiet]
+// plexus sim SCENARIO [--set key=value ...] [--out DIR] [--json] [--quiet] [--seeds N]
 //
 // Runs a scenario in one process (no DDS), in lockstep, as fast as the machine goes;
-// writes a run folder and prints the metrics and the digest. Exit codes: 0 all
-// expectations met, 1 an expectation failed, 2 bad scenario or arguments.
+// writes a run folder and prints the metrics and the digest. With --seeds N, runs it with
+// N seeds and prints each metric's statistics over them (seed_sweep.hpp). Exit codes: 0 all
+// expectations met (on the mean over the seeds with --seeds), 1 an expectation failed,
+// 2 bad scenario or arguments.
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -12,6 +14,7 @@
 
 #include "command.hpp"
 #include "run_result.hpp"
+#include "seed_sweep.hpp"
 #include "plexus/base/clock.hpp"
 #include "plexus/base/input_error.hpp"
 #include "plexus/scenario/evaluation.hpp"
@@ -31,6 +34,7 @@ struct SimOptions {
   bool json = false;
   bool quiet = false;
   bool list = false;
+  int seeds = 0;  ///< 0: one run
 };
 
 int list_types() {
@@ -51,6 +55,7 @@ int run_sim(const SimOptions& o) {
   for (const auto& [robot, src] : sc.sources)
     throw InputError(src.where + ": robot " + robot + "'s source is " + scenario::to_string(src.type) +
                      "; `plexus sim` simulates every robot: run it with `plexus launch` (clock.mode: realtime)");
+  if (o.seeds > 0) return run_seed_sweep({o.scenario, overrides, o.seeds, o.out, o.json, o.quiet});
 
   scenario::ProgressBar bar(!o.quiet);
   const int64_t start = monotonic_ns();
@@ -76,6 +81,10 @@ Command add_sim_command(CLI::App& root) {
   c.app->add_option("--out", opts->out, "Run folder (default runs/<scenario>-<UTC time>)");
   c.app->add_flag("--json", opts->json, "Print the metrics as one JSON object on stdout");
   c.app->add_flag("--quiet,-q", opts->quiet, "No progress bar, no run folder line");
+  c.app->add_option("--seeds", opts->seeds,
+                    "Run with N seeds (the scenario's seed and the next N-1) and print each metric's mean, std, "
+                    "standard error, t, min and max; expectations are checked on the mean")
+      ->check(CLI::Range(1, 10000));
   c.app->add_flag("--list", opts->list, "List the registered component and metric types");
   c.run = [opts] { return run_sim(*opts); };
   return c;
