@@ -33,6 +33,7 @@ struct ErrorStats {
 
 struct ClosedLoopResult {
   std::vector<ErrorStats> tilt_error_deg;  ///< per filter, estimate - truth
+  ErrorStats acc_tilt_error_deg;           ///< the accelerometer's own tilt, atan2 of its axes, - truth
   std::vector<double> final_drift_error;   ///< per filter, rad/s
   double max_abs_tilt_deg = 0;
 };
@@ -68,6 +69,7 @@ inline ClosedLoopResult run_closed_loop(const WheeledInvertedPendulum& plant, st
   for (int k = 0; k <= n; ++k) {
     if (k > 0) a = plant.step(s, torque, dt);
     const ImuSample m = imu.measure(s, a, dt);
+    r.acc_tilt_error_deg.add((m.acc_tilt - s.theta) * kDeg);
     for (std::size_t i = 0; i < filters.size(); ++i) {
       filters[i].step(torque, m.acc_tilt, m.gyro);
       r.tilt_error_deg[i].add((filters[i].state()(0) - s.theta) * kDeg);
@@ -80,6 +82,7 @@ inline ClosedLoopResult run_closed_loop(const WheeledInvertedPendulum& plant, st
     }
   }
   for (auto& e : r.tilt_error_deg) e.finish();
+  r.acc_tilt_error_deg.finish();
   return r;
 }
 
