@@ -97,9 +97,14 @@ TEST_P(QosBehaviour, KeepLastDepthIsHonoured) {
     m.x(i);
     pub.publish(m);
   }
-  std::this_thread::sleep_for(std::chrono::milliseconds(500));  // all delivered (same process)
+  // Reliable: once the reader has acknowledged all ten, all ten reached its history, which
+  // keeps the last three. Then take until the last one is seen (no fixed sleep).
+  ASSERT_TRUE(pub.wait_for_acks(10'000'000'000LL)) << "the reader never acknowledged the ten samples";
   std::vector<double> got;
-  while (sub.take(m)) got.push_back(m.x());
+  ASSERT_TRUE(eventually([&] {
+    while (sub.take(m)) got.push_back(m.x());
+    return !got.empty() && got.back() == 10;
+  })) << "sample 10 never arrived";
   EXPECT_EQ(got, (std::vector<double>{8, 9, 10}));
 }
 
