@@ -279,7 +279,7 @@ scenario::RunLog LockstepClock::run(const std::atomic<bool>& stop, const scenari
           if (!m.guard.accept(m.subs[s]->wire(), in, sample))
             throw LockstepError("lockstep: refused the sample of '" + signals[s].name + "' from '" +
                                 signals[s].producer + "' for " + step_text(k) + " (reason logged above)");
-          if (false && sample.step != k)
+          if (sample.step != k)
             throw LockstepError("lockstep: '" + signals[s].name + "' sent step " + std::to_string(sample.step) +
                                 " while the clock is at " + step_text(k));
           log.record(s, sample);

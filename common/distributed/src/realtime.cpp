@@ -216,7 +216,7 @@ RealtimeReport RealtimeHost::run(const std::atomic<bool>& stop) {
     const RemoteLatest& r = *m.remote[signal];
     if (r.sample.step < due) ++m.report.late_inputs;  // the sample of this step has not arrived
     s = r.sample;
-    if (r.sample.step < 0) {
+    if (r.sample.step < 0 || monotonic_ns() - r.received_ns > r.deadline_ns) {
       m.stale = true;
       ++m.report.stale_inputs;
       if (m.stop_when_stale[signal]) std::fill(s.values.begin(), s.values.end(), 0.0);
