@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "plexus/base/input_error.hpp"
 #include "plexus/base/yaml_reader.hpp"
 #include "plexus/scenario/metric.hpp"
 
@@ -24,6 +25,28 @@ inline MetricResult metric_on_log(const RunLog& log, const std::string& yaml, do
   const MetricFunction f = t->factory(MetricSetup(entry, specs, step, duration));
   entry.reject_unknown();
   return f(log);
+}
+
+/// Success when loading the metric (its factory, then the unknown-key check, as the scenario
+/// loader does) throws an InputError whose message is "m.yaml:<line>: <expected>...", i.e.
+/// `expected` starts with the offending key: "stat: required key is missing".
+inline ::testing::AssertionResult metric_fails(const RunLog& log, const std::string& yaml, double step,
+                                               double duration, const std::string& expected) {
+  std::vector<SignalSpec> specs;
+  for (const auto& s : log.signals) specs.push_back(s.spec);
+  try {
+    const YamlMap entry(load_yaml_string(yaml, "m.yaml"), "m.yaml");
+    const MetricType* t = find_metric_type(entry.required<std::string>("type"));
+    if (t == nullptr) return ::testing::AssertionFailure() << "no metric type in " << yaml;
+    t->factory(MetricSetup(entry, specs, step, duration));
+    entry.reject_unknown();
+  } catch (const InputError& e) {
+    const std::string msg = e.what();
+    if (msg.rfind("m.yaml:", 0) == 0 && msg.find(": " + expected) != std::string::npos)
+      return ::testing::AssertionSuccess();
+    return ::testing::AssertionFailure() << yaml << "\n  message: " << msg << "\n  expected: ...: " << expected;
+  }
+  return ::testing::AssertionFailure() << yaml << " loads without an error (expected: " << expected << ")";
 }
 
 }  // namespace plexus::scenario::testing
