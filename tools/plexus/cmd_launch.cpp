@@ -222,13 +222,19 @@ int run_launch(const LaunchOptions& o) {
           const bool restart = realtime && run_active &&
                                (p.restart == "always" || (status != 0 && p.restart == "on_failure"));
           if (restart) {
-            start_process(p);
-            ++p.restarts;
-            spdlog::warn("{} exited with code {}: restarted ({} restarts)", p.service(), status, p.restarts);
+            // restart_delay (systemd's RestartSec): the restart is due that long after the death.
+            p.restart_at_ns = monotonic_ns() + p.restart_delay_ns;
+            spdlog::warn("{} exited with code {}: restart in {:.2f} s", p.service(), status, p.restart_delay_ns * 1e-9);
           } else if (status != 0 && died.empty()) {
             died = p.service() + " exited with code " + std::to_string(status);
             g_stop = true;
           }
+        }
+        if (p.restart_at_ns && monotonic_ns() >= p.restart_at_ns && run_active) {
+          p.restart_at_ns = 0;
+          start_process(p);
+          ++p.restarts;
+          spdlog::warn("{}: restarted ({} restarts)", p.service(), p.restarts);
         }
       }
       std::this_thread::sleep_for(std::chrono::milliseconds(50));

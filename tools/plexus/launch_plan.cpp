@@ -38,6 +38,7 @@ void check_process_groups(const scenario::Scenario& sc) {
     clash("host", c.host, f.host);
     clash("dds", c.dds, f.dds);
     clash("restart", c.restart, f.restart);
+    clash("restart_delay", std::to_string(c.restart_delay), std::to_string(f.restart_delay));
   }
 }
 
@@ -87,6 +88,7 @@ std::vector<Process> plan(const scenario::Scenario& sc, const std::string& host)
       p.program = program;
       p.select = {"--components", c.component->name()};
       p.restart = c.restart;
+      p.restart_delay_ns = static_cast<int64_t>(c.restart_delay * 1e9);
       p.vendor = c.dds;
       procs.push_back(p);
     }

@@ -21,6 +21,8 @@ struct Process {
   std::string vendor;
   pid_t pid = 0;
   std::string restart = "never";  ///< realtime: never | on_failure | always (scenario `restart`)
+  int64_t restart_delay_ns = 0;   ///< realtime: wait this long after its death (scenario `restart_delay`)
+  int64_t restart_at_ns = 0;      ///< monotonic time of a pending restart (0: none)
   std::vector<std::string> args;  ///< as started, to restart it the same way
   int restarts = 0;
 

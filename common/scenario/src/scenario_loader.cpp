@@ -131,6 +131,9 @@ struct Loader {
       out.restart = section.optional<std::string>("restart", out.restart);
       if (out.restart != "never" && out.restart != "on_failure" && out.restart != "always")
         section.fail("restart", "expected never, on_failure or always, got '" + out.restart + "'");
+      out.restart_delay = section.optional<double>("restart_delay", 0.0);
+      if (!(out.restart_delay >= 0.0 && out.restart_delay <= 3600.0))
+        section.fail("restart_delay", "must be in [0, 3600] s");
     }
     cfg.section = &section;
     out.type = cfg.type;

@@ -38,6 +38,8 @@ struct ScenarioComponent {
   /// `plexus launch`, realtime mode: restart the service's process when it dies
   /// ("on_failure", the default), whenever it exits ("always"), or not ("never").
   std::string restart = "on_failure";
+  /// Seconds between the process's death and its restart (systemd's RestartSec), >= 0.
+  double restart_delay = 0.0;
 };
 
 /// A signal this document reads but does not produce: a part of a scenario (one process's
