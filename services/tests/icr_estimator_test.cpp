@@ -1,0 +1,266 @@
+// icr_estimator: icr_ekf (paper 001 section 3.1) and icr_odometry. TrackSpeeds + Pose2D
+// (+ TerrainClass) in -> edge check -> EKF predict / update / adaptive reset -> IcrEstimate
+// out; TrackSpeeds + SkidSteerTruth (+ IcrEstimate) in -> dead reckoning -> Pose2D out.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "plexus/algorithms/skid_steer/icr_ekf.hpp"
+#include "plexus/algorithms/skid_steer/icr_odometry.hpp"
+#include "service_harness.hpp"
+
+namespace plexus::services_test {
+namespace {
+
+namespace alg = plexus::algorithms;
+
+msg::TrackSpeeds wheels(const ServiceUnderTest& s, int64_t k, double v_l, double v_r) {
+  auto m = s.stamped<msg::TrackSpeeds>(k);
+  m.left(v_l), m.right(v_r);
+  return m;
+}
+
+msg::Pose2D gps(const ServiceUnderTest& s, int64_t k, double x, double y, double theta) {
+  auto m = s.stamped<msg::Pose2D>(k);
+  m.x(x), m.y(y), m.theta(theta);
+  return m;
+}
+
+msg::TerrainClass terrain(const ServiceUnderTest& s, int64_t k, int id, uint32_t windows) {
+  auto m = s.stamped<msg::TerrainClass>(k);
+  m.terrain_id(id), m.windows(windows), m.confidence(0.8), m.votes(4);
+  return m;
+}
+
+// --- icr_ekf ----------------------------------------------------------------------------
+
+const std::string kEkf = R"(name: icr_part
+step: 0.01
+services:
+  ekf: {type: icr_ekf, robot: r2}
+)";
+
+TEST(IcrEkf, StartsAtTheFirstGpsSampleThenPredictsByHand) {
+  ServiceUnderTest s(kEkf);
+  EXPECT_EQ(s.message_type("r2/wheels"), "TrackSpeeds");
+  EXPECT_EQ(s.message_type("r2/gps"), "Pose2D");
+  EXPECT_EQ(s.message_type("r2/icr"), "IcrEstimate");
+  s.deliver("r2/wheels", wheels(s, 0, 0.4, 0.6));
+  s.step(0);  // no GPS yet: initial ICRs (1, -1, 1), sd = sqrt(P_B) = 0.5 m
+  auto m = s.published<msg::IcrEstimate>("r2/icr");
+  EXPECT_EQ(m.y_l(), 1.0);
+  EXPECT_EQ(m.y_r(), -1.0);
+  EXPECT_EQ(m.x_g(), 1.0);
+  EXPECT_DOUBLE_EQ(m.stddev()[3], 0.5);
+  EXPECT_EQ(m.x(), 0.0);
+  ASSERT_EQ(s.deliver("r2/gps", gps(s, 1, 2.0, -1.0, 0.0)), Rejection::none);
+  s.step(1);  // starts at the GPS pose
+  m = s.published<msg::IcrEstimate>("r2/icr");
+  EXPECT_EQ(m.x(), 2.0);
+  EXPECT_EQ(m.y(), -1.0);
+  s.step(2);  // predicts with (0.4, 0.6): v_x = 0.5, v_y = 0.1, omega = 0.1 (eqs. (3)-(5), (7))
+  m = s.published<msg::IcrEstimate>("r2/icr");
+  EXPECT_DOUBLE_EQ(m.x(), 2.005);
+  EXPECT_DOUBLE_EQ(m.y(), -0.999);
+  EXPECT_DOUBLE_EQ(m.theta(), 0.001);
+  EXPECT_EQ(m.resets(), 0u);
+  EXPECT_EQ(s.check_output("r2/icr"), Rejection::none);
+}
+
+void feed_ekf(ServiceUnderTest& s, int64_t k) {
+  const double t = 0.01 * static_cast<double>(k);
+  ASSERT_EQ(s.deliver("r2/wheels", wheels(s, k, 0.3, 0.5 + 0.2 * std::sin(t))), Rejection::none);
+  if (k % 5 == 0) {
+    ASSERT_EQ(s.deliver("r2/gps", gps(s, k, 0.4 * t, 0.1 * t * t, 0.2 * t)), Rejection::none);  // 20 Hz
+  }
+}
+
+TEST(IcrEkf, PredictsAndUpdatesLikeTheAlgorithm) {
+  ServiceUnderTest s(kEkf);
+  alg::IcrEkf ref{alg::IcrEkfParams{}};
+  for (int64_t k = 0; k < 16; ++k) {
+    feed_ekf(s, k);
+    s.step(k);
+    const double t = 0.01 * static_cast<double>(k);
+    if (k > 0) ref.predict({0.3, 0.5 + 0.2 * std::sin(t)}, 0.01);
+    if (k == 0) ref.reset({0, 0, 0});
+    else if (k % 5 == 0) ref.update({0.4 * t, 0.1 * t * t, 0.2 * t});
+    for (int i = 0; i < 6; ++i) ASSERT_NEAR(s.sample("r2/icr").values[static_cast<std::size_t>(i)], ref.state()(i), 1e-12) << k;
+    ASSERT_NEAR(s.out("r2/icr", "sd_x_G"), std::sqrt(ref.covariance()(5, 5)), 1e-12) << k;
+  }
+  EXPECT_LT(s.out("r2/icr", "sd_y_l"), 0.5);  // the GPS updates tightened the ICRs
+}
+
+TEST(IcrEkf, AdaptiveResetOnAConfirmedTerrainChange) {
+  // Paper 001 eq. (22): two consecutive windows on a new class reset P to P_B (sd 0.5 m).
+  ServiceUnderTest s(kEkf, {}, {"services.ekf.adaptive_reset=true"});
+  EXPECT_EQ(s.message_type("r2/terrain"), "TerrainClass");
+  int64_t k = 0;
+  auto run = [&](int steps) {
+    for (int i = 0; i < steps; ++i, ++k) {
+      feed_ekf(s, k);
+      s.step(k);
+    }
+  };
+  s.deliver("r2/terrain", terrain(s, 0, 0, 1));
+  run(10);
+  EXPECT_LT(s.out("r2/icr", "sd_y_l"), 0.5);
+  s.deliver("r2/terrain", terrain(s, k, 1, 2));  // a candidate
+  run(3);
+  EXPECT_EQ(s.out("r2/icr", "resets"), 0.0);
+  s.deliver("r2/terrain", terrain(s, k, 1, 2));  // the same window again: no new decision
+  run(1);
+  EXPECT_EQ(s.out("r2/icr", "resets"), 0.0);
+  s.deliver("r2/terrain", terrain(s, k, 1, 3));  // confirmed
+  feed_ekf(s, k);
+  s.step(k);
+  const auto m = s.published<msg::IcrEstimate>("r2/icr");
+  EXPECT_EQ(m.resets(), 1u);
+  EXPECT_DOUBLE_EQ(m.stddev()[3], 0.5);
+  EXPECT_DOUBLE_EQ(m.stddev()[5], 0.5);
+}
+
+TEST(IcrEkf, BadSamplesAreRefusedAndLeaveTheEstimateAlone) {
+  const std::string doc = R"(name: icr_part
+step: 0.01
+services:
+  ekf: {type: icr_ekf, robot: r2, adaptive_reset: true, consecutive_windows: 1}
+)";
+  const Feed feed = [](ServiceUnderTest& s, int64_t k) {
+    feed_ekf(s, k);
+    ASSERT_EQ(s.deliver("r2/terrain", terrain(s, k, k < 6 ? 0 : 2, static_cast<uint32_t>(k / 3 + 1))), Rejection::none);
+  };
+  expect_refused_without_effect(
+      doc, {}, {"r2/icr"}, 12, 5, feed,
+      {
+          {"gps theta NaN", [](ServiceUnderTest& s, int64_t k) { return s.deliver("r2/gps", gps(s, k, 0, 0, kNaN)); },
+           Rejection::non_finite},
+          {"gps x 3e6 m", [](ServiceUnderTest& s, int64_t k) { return s.deliver("r2/gps", gps(s, k, 3e6, 0, 0)); },
+           Rejection::out_of_range},
+          {"gps before the epoch", [](ServiceUnderTest& s, int64_t) { return s.deliver("r2/gps", gps(s, -1, 1, 1, 1)); },
+           Rejection::negative_time},
+          {"wheels inf", [](ServiceUnderTest& s, int64_t k) { return s.deliver("r2/wheels", wheels(s, k, kInf, 0)); },
+           Rejection::non_finite},
+          {"terrain class -2", [](ServiceUnderTest& s, int64_t k) { return s.deliver("r2/terrain", terrain(s, k, -2, 99)); },
+           Rejection::out_of_range},
+      });
+}
+
+TEST(IcrEkf, BadParametersAreConfigurationErrors) {
+  expect_config_errors(kEkf, {
+                                 {"services.ekf.q_diag=[1, 2]", {"services.ekf.q_diag"}},
+                                 {"services.ekf.r_diag=[0, 1, 1]", {"services.ekf", "r_diag"}},
+                                 {"services.ekf.process_noise=wild", {"services.ekf.process_noise"}},
+                                 {"services.ekf.consecutive_windows=0", {"services.ekf", "consecutive"}},
+                                 {"services.ekf.adaptive_reset=maybe", {"services.ekf.adaptive_reset"}},
+                             });
+}
+
+// --- icr_odometry -----------------------------------------------------------------------
+
+const std::string kOdometry = R"(name: odo_part
+step: 0.01
+services:
+  odo: {type: icr_odometry, robot: r2, model: fixed, y_l: 0.25, y_r: -0.25, x_G: 0.0}
+)";
+
+msg::SkidSteerTruth truth(const ServiceUnderTest& s, int64_t k, double x, double y, double theta) {
+  auto m = s.stamped<msg::SkidSteerTruth>(k);
+  m.x(x), m.y(y), m.theta(theta);
+  return m;
+}
+
+msg::IcrEstimate icr_estimate(const ServiceUnderTest& s, int64_t k, double y_l, double y_r, double x_G) {
+  auto m = s.stamped<msg::IcrEstimate>(k);
+  m.y_l(y_l), m.y_r(y_r), m.x_g(x_G);
+  return m;
+}
+
+TEST(IcrOdometry, DeadReckoningByHand) {
+  ServiceUnderTest s(kOdometry);
+  EXPECT_EQ(s.message_type("r2/truth/state"), "SkidSteerTruth");
+  EXPECT_EQ(s.message_type("r2/odo"), "Pose2D");
+  s.deliver("r2/truth/state", truth(s, 0, 1.0, 2.0, 0.0));
+  s.deliver("r2/wheels", wheels(s, 0, 1.0, 1.0));
+  s.step(0);  // starts at the truth
+  EXPECT_EQ(s.published<msg::Pose2D>("r2/odo").x(), 1.0);
+  s.deliver("r2/truth/state", truth(s, 1, 50.0, 50.0, 1.0));  // read once, at the start only
+  s.step(1);  // straight at 1 m/s
+  auto m = s.published<msg::Pose2D>("r2/odo");
+  EXPECT_DOUBLE_EQ(m.x(), 1.01);
+  EXPECT_DOUBLE_EQ(m.y(), 2.0);
+  s.deliver("r2/wheels", wheels(s, 2, 0.5, 1.0));
+  s.step(2);  // v_x = (1 0.25 + 0.5 0.25) / 0.5 = 0.75, omega = 0.5 / 0.5 = 1
+  const alg::Pose2 p = alg::icr_pose_step({1.01, 2.0, 0.0}, {0.75, 0.0, 1.0}, 0.01);
+  m = s.published<msg::Pose2D>("r2/odo");
+  EXPECT_DOUBLE_EQ(m.x(), p.x);
+  EXPECT_DOUBLE_EQ(m.y(), p.y);
+  EXPECT_DOUBLE_EQ(m.theta(), 0.01);
+}
+
+TEST(IcrOdometry, EstimatedModelUsesTheFiltersIcrs) {
+  ServiceUnderTest s(R"(name: odo_part
+step: 0.01
+services:
+  odo: {type: icr_odometry, robot: r2, model: estimated, start: 0.02}
+)");
+  EXPECT_EQ(s.message_type("r2/icr"), "IcrEstimate");
+  alg::IcrOdometry ref;
+  for (int64_t k = 0; k < 6; ++k) {
+    s.deliver("r2/truth/state", truth(s, k, 3.0, -1.0, 0.5 + static_cast<double>(k)));
+    s.deliver("r2/wheels", wheels(s, k, 0.2, 0.7));
+    s.deliver("r2/icr", icr_estimate(s, k, 0.3 + 0.01 * static_cast<double>(k), -0.28, 0.04));
+    s.step(k);
+    if (k == 2) ref.reset({3.0, -1.0, 2.5});  // start = 0.02 s: the truth of step 2
+    if (k > 2) ref.step({0.2, 0.7}, {0.3 + 0.01 * static_cast<double>(k), -0.28, 0.04}, 0.01);
+    if (k < 2) {
+      EXPECT_EQ(s.out("r2/odo", "x"), 0.0) << k;  // not started
+    } else {
+      EXPECT_DOUBLE_EQ(s.out("r2/odo", "x"), ref.pose().x) << k;
+      EXPECT_DOUBLE_EQ(s.out("r2/odo", "y"), ref.pose().y) << k;
+      EXPECT_DOUBLE_EQ(s.out("r2/odo", "theta"), ref.pose().theta) << k;
+    }
+  }
+  EXPECT_NE(s.out("r2/odo", "y"), -1.0);
+}
+
+TEST(IcrOdometry, BadSamplesAreRefusedAndLeaveThePoseAlone) {
+  const std::string doc = R"(name: odo_part
+step: 0.01
+services:
+  odo: {type: icr_odometry, robot: r2, model: estimated}
+)";
+  const Feed feed = [](ServiceUnderTest& s, int64_t k) {
+    ASSERT_EQ(s.deliver("r2/truth/state", truth(s, k, 1, 1, 0.3)), Rejection::none);
+    ASSERT_EQ(s.deliver("r2/wheels", wheels(s, k, 0.4, 0.5 + 0.1 * static_cast<double>(k))), Rejection::none);
+    ASSERT_EQ(s.deliver("r2/icr", icr_estimate(s, k, 0.3, -0.3, 0.01 * static_cast<double>(k))), Rejection::none);
+  };
+  expect_refused_without_effect(
+      doc, {}, {"r2/odo"}, 8, 4, feed,
+      {
+          {"wheels NaN", [](ServiceUnderTest& s, int64_t k) { return s.deliver("r2/wheels", wheels(s, k, 0, kNaN)); },
+           Rejection::non_finite},
+          {"icr y_l 2e6 m", [](ServiceUnderTest& s, int64_t k) { return s.deliver("r2/icr", icr_estimate(s, k, 2e6, -0.3, 0)); },
+           Rejection::out_of_range},
+          {"icr x_G NaN", [](ServiceUnderTest& s, int64_t k) { return s.deliver("r2/icr", icr_estimate(s, k, 0.3, -0.3, kNaN)); },
+           Rejection::non_finite},
+      });
+}
+
+TEST(IcrOdometry, BadParametersAreConfigurationErrors) {
+  expect_config_errors(kOdometry, {
+                                      {"services.odo.model=guess", {"services.odo.model"}},
+                                      {"services.odo.start=-1", {"services.odo.start"}},
+                                      {"services.odo.y_l=-0.5", {"services.odo", "y_l"}},
+                                      {"services.odo.x_G=[0]", {"services.odo.x_G"}},
+                                  });
+  EXPECT_NE(config_error(R"(name: p
+step: 0.01
+services:
+  odo: {type: icr_odometry, robot: r2, model: no_slip, track_width: 0}
+)", {}).find("track_width"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace plexus::services_test
