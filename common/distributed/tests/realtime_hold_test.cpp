@@ -1,0 +1,185 @@
+// Realtime mode, stale inputs, over DDS (loopback, in process), on both vendors: a
+// RealtimeHost runs one component of the scenario of dds_test_support.hpp while the test
+// plays the other process, publishing the component's input (stamped now, as a native
+// producer does) and reading its output.
+//
+//  - a controller uses a fresh input; with a stale one (never received, or older than
+//    clock.input_deadline_periods periods) it runs hold(): its safe output, all zero; it
+//    recovers once the input is fresh again; every hold is counted in the report;
+//  - a plant whose command is stale gets the zero command (and does not hold).
+//
+// The deadline is 10 periods of 10 ms, far above a loaded machine's scheduling hiccups;
+// every wait is on a condition with a generous bound, never on a duration.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <string>
+#include <thread>
+
+#include "dds_test_support.hpp"
+#include "plexus/base/input_error.hpp"
+#include "plexus/distributed/lockstep.hpp"
+#include "plexus/distributed/realtime.hpp"
+#include "plexus/distributed/wire.hpp"
+
+namespace plexus::distributed::testing {
+namespace {
+
+const std::string kRealtime = "clock: {mode: realtime, input_deadline_periods: 10}\n";
+
+/// The other process's output: publishes {a, b} on a signal every 2 ms while it is on,
+/// stamped with the wall clock (the host's grid puts it on the current step).
+class Feeder {
+ public:
+  Feeder(rt::Participant& p, const scenario::SignalSpec& spec, int64_t step_ns)
+      : pub_(p, spec, step_ns, profiles().get("state")), thread_([this] { loop(); }) {}
+  ~Feeder() {
+    quit_ = true;
+    thread_.join();
+  }
+  void send(double a, double b) {
+    a_ = a;
+    b_ = b;
+    on_ = true;
+  }
+  /// Stops publishing: the input goes stale at the host.
+  void pause() { on_ = false; }
+
+ private:
+  void loop() {
+    scenario::SignalSample s;
+    while (!quit_) {
+      if (on_) {
+        s.values[0] = a_;
+        s.values[1] = b_;
+        pub_.publish_at(s, wall_time_ns(), 0);
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+  }
+  WirePublisher pub_;
+  std::atomic<bool> on_{false}, quit_{false};
+  std::atomic<double> a_{0}, b_{0};
+  std::thread thread_;  // last: starts once the rest is built
+};
+
+/// The latest sample the host published on a signal.
+class Latest {
+ public:
+  Latest(rt::Participant& p, const scenario::SignalSpec& spec, int64_t step_ns)
+      : sub_(p, spec, step_ns, profiles().get("state")) {}
+  /// True when the latest sample so far has fields 0 and 1 equal to {a, b}.
+  bool is(double a, double b) {
+    while (const void* m = sub_.take()) {
+      std::size_t bad = 0;
+      scenario::SignalSample s;
+      if (sub_.wire().decode(m, s, bad) == Rejection::none) last_ = s;
+    }
+    return last_.step >= 0 && last_.values[0] == a && last_.values[1] == b;
+  }
+  std::string describe() const {
+    return last_.step < 0 ? "nothing received"
+                          : "{" + std::to_string(last_.values[0]) + ", " + std::to_string(last_.values[1]) + "}";
+  }
+
+ private:
+  WireSubscriber sub_;
+  scenario::SignalSample last_;
+};
+
+class RealtimeHold : public ::testing::TestWithParam<rt::Vendor> {
+ protected:
+  rt::Vendor vendor() const { return GetParam(); }
+  std::unique_ptr<rt::Participant> make(const std::string& name) {
+    return participant(vendor(), kRealtimeDomain, name);
+  }
+};
+
+/// Runs `host` on a thread until stopped; the report and any error afterwards.
+class HostThread {
+ public:
+  explicit HostThread(RealtimeHost& host) : thread_([this, &host] {
+    error_ = error_of<InputError>([&] { report_ = host.run(stop_); });
+  }) {}
+  ~HostThread() { join(); }
+  void join() {
+    stop_ = true;
+    if (thread_.joinable()) thread_.join();
+  }
+  const RealtimeReport& report() const { return report_; }
+  const std::string& error() const { return error_; }
+
+ private:
+  std::atomic<bool> stop_{false};
+  RealtimeReport report_;
+  std::string error_;
+  std::thread thread_;  // last
+};
+
+TEST_P(RealtimeHold, ControllerHoldsItsSafeOutputWhileItsInputIsStale) {
+  const std::string robot = unique_robot("rt_ctl", vendor());
+  auto sc_host = two_component_scenario(robot, kRealtime);
+  auto sc_peer = two_component_scenario(robot, kRealtime);
+  auto p_host = make("host follower");
+  auto p_peer = make("plant");
+  RealtimeOptions opt;
+  opt.service = "rt_ctl_" + std::string(rt::to_string(vendor()));
+  RealtimeHost host(sc_host, hosting(sc_host, "follower"), *p_host, profiles(), opt);
+  ASSERT_EQ(sc_peer.signals[0].name, robot + "/truth/state");
+  ASSERT_EQ(sc_peer.signals[1].name, robot + "/cmd");
+  Feeder state(*p_peer, sc_peer.signals[0], step_ns(sc_peer));
+  Latest cmd(*p_peer, sc_peer.signals[1], step_ns(sc_peer));
+  HostThread run(host);
+
+  // Never received: stale, the controller holds (follower's step() would give omega 0.5).
+  EXPECT_TRUE(eventually([&] { return cmd.is(0.0, 0.0); })) << cmd.describe();
+  // Fresh: used (v = the plant's x).
+  state.send(2.5, 0.0);
+  EXPECT_TRUE(eventually([&] { return cmd.is(2.5, 0.5); })) << cmd.describe();
+  // Older than 10 periods: held again, not computed from the last sample.
+  state.pause();
+  EXPECT_TRUE(eventually([&] { return cmd.is(0.0, 0.0); })) << cmd.describe();
+  // Fresh again: recovers by itself.
+  state.send(4.0, 0.0);
+  EXPECT_TRUE(eventually([&] { return cmd.is(4.0, 0.5); })) << cmd.describe();
+
+  run.join();
+  EXPECT_EQ(run.error(), "no error");
+  EXPECT_GT(run.report().ticks, 0);
+  EXPECT_GT(run.report().holds, 0u);
+  // One input: every stale read made that step a hold.
+  EXPECT_EQ(run.report().holds, run.report().stale_inputs);
+}
+
+TEST_P(RealtimeHold, PlantGetsTheZeroCommandWhileItsCommandIsStale) {
+  const std::string robot = unique_robot("rt_plant", vendor());
+  auto sc_host = two_component_scenario(robot, kRealtime);
+  auto sc_peer = two_component_scenario(robot, kRealtime);
+  auto p_host = make("host plant");
+  auto p_peer = make("controller");
+  RealtimeOptions opt;
+  opt.service = "rt_plant_" + std::string(rt::to_string(vendor()));
+  RealtimeHost host(sc_host, hosting(sc_host, robot + "/plant"), *p_host, profiles(), opt);
+  Feeder cmd(*p_peer, sc_peer.signals[1], step_ns(sc_peer));
+  Latest state(*p_peer, sc_peer.signals[0], step_ns(sc_peer));
+  HostThread run(host);
+
+  // The echo plant's state is its command: fresh, it is the one sent.
+  cmd.send(1.5, -0.25);
+  EXPECT_TRUE(eventually([&] { return state.is(1.5, -0.25); })) << state.describe();
+  // Stale: the zero command (a motor controller's watchdog), not the last one received.
+  cmd.pause();
+  EXPECT_TRUE(eventually([&] { return state.is(0.0, 0.0); })) << state.describe();
+  cmd.send(-1.0, 0.75);
+  EXPECT_TRUE(eventually([&] { return state.is(-1.0, 0.75); })) << state.describe();
+
+  run.join();
+  EXPECT_EQ(run.error(), "no error");
+  EXPECT_GT(run.report().stale_inputs, 0u);
+  EXPECT_EQ(run.report().holds, 0u);  // only controllers hold
+}
+
+INSTANTIATE_TEST_SUITE_P(Dds, RealtimeHold, ::testing::Values(rt::Vendor::fast, rt::Vendor::cyclone), vendor_name);
+
+}  // namespace
+}  // namespace plexus::distributed::testing
