@@ -270,6 +270,9 @@ RealtimeReport RealtimeHost::run(const std::atomic<bool>& stop) {
   m.report.loop = loop.stats();
   m.report.rejected_inputs = m.guard.rejected();
   m.publish_heartbeat(msg::SERVICE_DRAINING, m.report.loop);
+  // The last beat carries the final loop figures, and the launcher waits for it: delivered
+  // before this host's writer goes away (bounded: a launcher that is gone does not ack).
+  m.heartbeat.wait_for_acks(1'000'000'000);
   return m.report;
 }
 
