@@ -9,6 +9,7 @@
 
 #include "plexus/base/clock.hpp"
 #include "input_guard.hpp"
+#include "plexus/scenario/evaluation.hpp"
 
 namespace plexus::distributed {
 namespace {
@@ -19,6 +20,8 @@ using scenario::SignalSpec;
 int64_t to_ns(double s) { return static_cast<int64_t>(s * 1e9); }
 
 std::string step_text(int64_t k) { return "step " + std::to_string(k); }
+/// "0.5 s", "30 s": a duration as set, not truncated to whole seconds.
+std::string seconds_text(double s) { return scenario::format_number(s) + " s"; }
 
 /// The latest samples received of one remote signal, by step.
 class RemoteSignal {
@@ -41,7 +44,7 @@ class RemoteSignal {
       const int64_t now = monotonic_ns();
       if (now >= deadline)
         throw LockstepError("lockstep: no sample of '" + spec_->name + "' (produced by '" + spec_->producer + "') for " +
-                            step_text(due) + " within " + std::to_string(timeout_ns / 1'000'000'000) + " s");
+                            step_text(due) + " within " + seconds_text(static_cast<double>(timeout_ns) * 1e-9));
       sub_.wait(deadline - now);
     }
   }
@@ -148,7 +151,7 @@ int64_t LockstepHost::run(const std::atomic<bool>& stop) {
     if (monotonic_ns() - last_tick > 3 * timeout)
       throw LockstepError((allowed < 0 ? "lockstep: no clock: no step on '" + std::string(kClockTopic) + "'"
                                        : "lockstep: the clock stopped at " + step_text(expected)) +
-                          " for more than " + std::to_string(3 * timeout / 1'000'000'000) + " s");
+                          " for more than " + seconds_text(static_cast<double>(3 * timeout) * 1e-9));
     m.clock.wait(100'000'000);
   }
   return steps;
@@ -210,7 +213,7 @@ void LockstepClock::wait_ready(int hosts, double timeout_s, const std::atomic<bo
     if (missing.empty()) return;
     if (stop) throw LockstepError("lockstep: stopped while waiting for " + missing);
     if (monotonic_ns() > deadline)
-      throw LockstepError("lockstep: " + missing + " did not join within " + std::to_string(timeout_s) + " s");
+      throw LockstepError("lockstep: " + missing + " did not join within " + seconds_text(timeout_s));
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
 }
@@ -288,7 +291,7 @@ scenario::RunLog LockstepClock::run(const std::atomic<bool>& stop, const scenari
         const int64_t now = monotonic_ns();
         if (now >= deadline || stop.load(std::memory_order_relaxed))
           throw LockstepError("lockstep: no sample of '" + signals[s].name + "' from '" + signals[s].producer +
-                              "' for " + step_text(k) + " within " + std::to_string(m.opt.timeout_s) + " s");
+                              "' for " + step_text(k) + " within " + seconds_text(m.opt.timeout_s));
         m.subs[s]->wait(std::min<int64_t>(deadline - now, 100'000'000));
       }
     }
