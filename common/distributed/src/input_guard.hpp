@@ -1,5 +1,5 @@
-// The edge check every remote signal passes before a component sees it (DESIGN.md "Bad
-// input"): WireSignal::decode refuses a sample with a negative time, a non-finite or
+// The edge check every remote signal passes before a component sees it (docs/architecture.md,
+// "Bad input"): WireSignal::decode refuses a sample with a negative time, a non-finite or
 // out-of-range member or a wrong joint count. A refused sample is dropped as if it never
 // arrived: in lockstep the step then waits for a valid one and times out naming the signal;
 // in realtime the input goes stale and the consumer falls back to its safe output.

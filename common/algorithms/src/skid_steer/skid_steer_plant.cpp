@@ -34,7 +34,7 @@ TerrainVibrationParams vibration_params(const SkidSteerPlantParams& p) {
 }  // namespace
 
 std::vector<TerrainSpec> paper_terrains() {
-  // ICRs: paper 001 section 4.2 (PAPERS.md section C). Spectra: this project's model —
+  // ICRs: paper 001 section 4.2 (docs/papers.md). Spectra: this project's model —
   // concrete: stiff and rough, energy at 15-40 Hz; tile: smooth with lightly damped
   // low-mid resonances (joints excite the chassis); grass: soft, heavily damped, low.
   return {

@@ -54,7 +54,7 @@ TrackingOutput TrajectoryTrackingController::compute(const ReferenceSample& ref,
   const double theta_star = std::atan2(Sy, Sx);
   const double zeta3 = wrap_angle(theta - theta_star);
   // f_i' = k_i zeta_i' / (1 + zeta_i^2), zeta1' = v c - x_r', zeta2' = v s - y_r' (exact derivative;
-  // in output feedback (c, s) = z_hat, PAPERS.md section A on eq. (28)).
+  // in output feedback (c, s) = z_hat, docs/papers.md on eq. (28)).
   const double dz1 = v * cs.x() - ref.dp.x();
   const double dz2 = v * cs.y() - ref.dp.y();
   const double df1 = k1 * dz1 / (1.0 + z1 * z1);

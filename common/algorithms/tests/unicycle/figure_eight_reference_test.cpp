@@ -41,7 +41,7 @@ TEST(FigureEightReference, AnalyticSpeedBoundsMatchADenseScan) {
     EXPECT_NEAR(ref.min_speed(), lo, 1e-6 * h1 * h2);
     EXPECT_NEAR(ref.max_speed(), hi, 1e-6 * h1 * h2);
   }
-  EXPECT_NEAR(FigureEightReference({}).min_speed(), 0.0696, 5e-5);  // PAPERS.md section A
+  EXPECT_NEAR(FigureEightReference({}).min_speed(), 0.0696, 5e-5);  // paper 000, docs/papers.md
 }
 
 TEST(FigureEightReference, ValidationNamesTheParameter) {

@@ -222,7 +222,7 @@ TEST(TrajectoryTracking, GainConditionWarnsForThePaperGains) {
   EXPECT_NE(warning->find("(15)"), std::string::npos);
   EXPECT_NE(warning->find("k1 = 0.11"), std::string::npos);
   EXPECT_NE(warning->find("v_rm = 0.06959"), std::string::npos);
-  // The ratio is about 12 (PAPERS.md section A): lhs 0.0242 vs (4 / pi^2) v_rm^2 = 0.00196.
+  // The ratio is about 12 (paper 000, docs/papers.md): lhs 0.0242 vs (4 / pi^2) v_rm^2 = 0.00196.
   const double ratio = 0.0242 / (p.gamma * p.gamma * 4 / (std::numbers::pi * std::numbers::pi) *
                                  std::pow(ref.min_speed(), 2));
   EXPECT_NEAR(ratio, 12.3, 0.1);

@@ -1,4 +1,5 @@
-// Which deployable service executable hosts which component types (DESIGN.md, services/).
+// Which deployable service executable hosts which component types (docs/architecture.md,
+// services/).
 // `plexus launch` starts each service component in the executable its type belongs to;
 // each executable refuses component types that are not its own. Types not listed run in
 // the generic `component_host` (references, test drivers, user components).

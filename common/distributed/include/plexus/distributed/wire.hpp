@@ -14,7 +14,7 @@
 // stamps CLOCK_REALTIME there: its samples land on the nearest step of the run's grid).
 // Members the signal does not use are zero.
 //
-// Decoding is the edge check of every input (DESIGN.md "Bad input"): a sample with a
+// Decoding is the edge check of every input (docs/architecture.md, "Bad input"): a sample with a
 // negative time, a non-finite or out-of-range member or a wrong joint count is refused
 // whole and the destination left untouched, so estimator state never sees it.
 #pragma once

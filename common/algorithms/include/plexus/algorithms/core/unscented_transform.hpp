@@ -1,5 +1,5 @@
 // Scaled unscented transform (Julier 2002, "The scaled unscented transformation";
-// paper 002, eqs. (3)-(5) with its OCR-damaged symbols restored as in PAPERS.md D).
+// paper 002, eqs. (3)-(5) with its OCR-damaged symbols restored; docs/papers.md).
 //
 // For an L-dimensional random variable with mean x and covariance P:
 //   lambda = alpha^2 (L + kappa) - L,  gamma = sqrt(L + lambda)

@@ -1,4 +1,4 @@
-// ICR extended Kalman filter (paper 001 section 3.1; PAPERS.md section C), on the shared
+// ICR extended Kalman filter (paper 001 section 3.1; docs/papers.md), on the shared
 // EKF of core/ekf.hpp.
 //
 // State x = [X, Y, theta, y_l, y_r, x_G]; the ICRs are random walks. Input u = (v_l, v_r),

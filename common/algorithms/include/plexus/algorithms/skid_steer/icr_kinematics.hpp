@@ -1,6 +1,6 @@
 // Skid-steer kinematics from the instantaneous centres of rotation (ICRs).
 //
-// Paper 001 (Wu et al. 2015), eqs. (3)-(5), restated in PAPERS.md section C. In the body
+// Paper 001 (Wu et al. 2015, docs/papers.md), eqs. (3)-(5). In the body
 // frame (x forward, y left) the left track, right track and body ICRs are y_l, y_r, x_G.
 // With track speeds v_l, v_r:
 //   v_x = (v_r y_l - v_l y_r) / (y_l - y_r)

@@ -1,5 +1,5 @@
 // Skid-steer plant: ICR kinematics whose ICRs are set by the terrain under the robot, and
-// the terrain's body vibration (paper 001, PAPERS.md section C).
+// the terrain's body vibration (paper 001, docs/papers.md).
 //
 // Input: track speeds (v_l, v_r), held over each step. Each step of h seconds starting at
 // time t looks up the terrain at t in the schedule, takes its ICRs (y_l, y_r, x_G),
@@ -26,8 +26,8 @@ struct TerrainSpec {
   VibrationSpectrum vibration;
 };
 
-/// Paper 001 section 4 terrains A concrete, B tile, C grass (ICR values of PAPERS.md
-/// section C); the vibration spectra are this project's model (docs/algorithms/skid_steer.md).
+/// Paper 001 section 4 terrains A concrete, B tile, C grass (the paper's ICR values,
+/// docs/papers.md); the vibration spectra are this project's model (docs/algorithms/skid_steer.md).
 std::vector<TerrainSpec> paper_terrains();
 
 struct SkidSteerPlantParams {

@@ -1,4 +1,4 @@
-// Sensor models of the skid-steer family (paper 001 section 4, PAPERS.md section C).
+// Sensor models of the skid-steer family (paper 001 section 4, docs/papers.md).
 //
 //   PoseSensor       differential GPS position + dual-antenna heading: X, Y with
 //                    N(0, position_std^2) each, theta with N(0, heading_std^2), heading

@@ -1,7 +1,7 @@
 // Terrain-induced vertical vibration of a skid-steer body (the z-acceleration an IMU sees).
 //
 // Paper 001 classifies terrain from the IMU z-acceleration recorded on the real robot; a
-// simulator has to synthesise it (PAPERS.md section C). The model, chosen here and
+// simulator has to synthesise it (docs/papers.md, paper 001). The model, chosen here and
 // documented in docs/algorithms/skid_steer.md:
 //
 //   a_z(t) = g + gain(s) * ( sum_j r_j(t) + floor_rms * e_0(t) ),

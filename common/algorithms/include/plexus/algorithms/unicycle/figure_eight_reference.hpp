@@ -24,7 +24,7 @@ struct FigureEightParams {
   double h2 = 0.02;  ///< rad/s, angular rate (paper 000: 0.02), > 0
   /// s, reference clock offset: the curve is evaluated at t + t0. The paper states
   /// (x_r(0), y_r(0)) = (0, -5), which eq. (51) reaches at h2 t = 3 pi / 2, so the
-  /// default is paper_t0(0.02) = 75 pi s (our reading; PAPERS.md section A).
+  /// default is paper_t0(0.02) = 75 pi s (our reading; docs/papers.md, paper 000).
   double t0 = 1.5 * std::numbers::pi / 0.02;
 
   /// t0 that starts the figure-eight at its bottom point (0, -h1): 3 pi / (2 h2).
@@ -56,7 +56,7 @@ class FigureEightReference {
 
   /// v_rm = min_t v_r(t), analytic. With c = cos^2(h2 t), v_r^2 / (h1 h2)^2 = 16 c^2 - 15 c + 4,
   /// minimal at c = 15/32 (inside [0, 1]) where it equals 31/64: v_rm = h1 h2 sqrt(31) / 8
-  /// (0.0696 m/s for h1 = 5, h2 = 0.02; PAPERS.md section A).
+  /// (0.0696 m/s for h1 = 5, h2 = 0.02; docs/papers.md, paper 000).
   double min_speed() const { return params_.h1 * params_.h2 * std::sqrt(31.0) / 8.0; }
 
   /// v_rM = max_t v_r(t) = h1 h2 sqrt(5), at c = 1.

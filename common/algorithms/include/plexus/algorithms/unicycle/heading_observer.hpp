@@ -3,7 +3,7 @@
 // Measured: position (x, y) and the applied input (v, omega). Estimated:
 // (z3, z4) = (cos theta, sin theta), and theta_hat = atan2(z4_hat, z3_hat) (eq. (11)).
 //
-// Continuous time (PAPERS.md section A; the paper prints the zeta' equations as z_hat'):
+// Continuous time (docs/papers.md, paper 000; the paper prints the zeta' equations as z_hat'):
 //   z3_hat = zeta3 + L x,  z4_hat = zeta4 + L y
 //   zeta3' = -z4_hat omega - L v z3_hat
 //   zeta4' =  z3_hat omega - L v z4_hat

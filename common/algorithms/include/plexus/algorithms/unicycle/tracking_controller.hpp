@@ -10,7 +10,7 @@
 // State feedback: (c, s) = (cos theta, sin theta). Output feedback (27)-(28): (c, s) =
 // (z3_hat, z4_hat) from the heading observer and theta replaced by theta_hat =
 // atan2(z4_hat, z3_hat) everywhere, including inside zeta_i' (the exact derivative;
-// the printed (28) drops the -x_r', -y_r' terms, PAPERS.md section A).
+// the printed (28) drops the -x_r', -y_r' terms, docs/papers.md).
 // The printed theta*' lost the second derivatives of the reference; fixed above.
 //
 // g1, g2 (eq. (14)) are evaluated in the sinc form, smooth at a = b:

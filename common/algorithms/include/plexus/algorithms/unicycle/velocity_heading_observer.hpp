@@ -3,7 +3,7 @@
 // Plant with constant unknown speed u1 != 0 and measured turn rate u2. With
 // z1 = x, z2 = x' = u1 cos theta, z3 = y, z4 = y' = u1 sin theta (eq. (10)):
 //   z2' = -z4 u2,  z4' = z2 u2.
-// Observer (eq. (11), with the sign of the z4_bar equation fixed, PAPERS.md section B):
+// Observer (eq. (11), with the sign of the z4_bar equation fixed, docs/papers.md):
 //   z2_bar' = -(z4_bar + L4 z3) u2 - L2 (z2_bar + L2 z1)
 //   z4_bar' =  (z2_bar + L2 z1) u2 - L4 (z4_bar + L4 z3)
 //   z2_hat = z2_bar + L2 z1,  z4_hat = z4_bar + L4 z3
