@@ -9,7 +9,19 @@
 //     y_r, x_G, resets, sd_y_l, sd_y_r, sd_x_G} (IcrEstimate)
 //   q_diag, r_diag, p0_diag, p_b_diag (lists; paper eq. (21)-(22)), initial_icr ([1, -1, 1]),
 //   process_noise (dt_squared), enforce_track_sides (true), track_side_margin (0.01),
-//   adaptive_reset (false), consecutive_windows (2)
+//   adaptive_reset (false), consecutive_windows (2), reset_mode (covariance | prior),
+//   icr_library (required with prior: a terrain ICR library file, relative to the scenario's
+//   folder), prior_check_updates (60)
+//
+// reset_mode prior (plexus; docs/algorithms/skid_steer.md "Prior reset"): on a confirmed
+// change to a terrain the library knows, the ICRs restart from that terrain's learned values
+// and covariance instead of paper 001's P_B around the old terrain's values. A wrong label
+// gives a wrong prior, so the paper's covariance reset runs beside it as a second hypothesis
+// (a shadow filter on the same inputs) for the next prior_check_updates GPS updates; the
+// hypothesis whose innovations are less likely (summed NIS + log det S) is dropped, as soon
+// as the sums differ by 10 (a likelihood ratio of e^5) or at the end: a wrong prior is
+// replaced by the paper's filter. A terrain the library lacks
+// gets the paper's reset.
 //
 // It starts (pose from the GPS) at its first GPS sample; from then on it predicts with the
 // track speeds at every step and updates at every new GPS sample.
@@ -20,6 +32,7 @@
 
 #include "plexus/algorithms/skid_steer/icr_ekf.hpp"
 #include "plexus/algorithms/skid_steer/terrain_change_detector.hpp"
+#include "plexus/algorithms/skid_steer/terrain_icr_library.hpp"
 #include "plexus/scenario/params.hpp"
 #include "plexus/scenario/registry.hpp"
 #include "services/common/input_values.hpp"
@@ -56,6 +69,26 @@ alg::IcrEkfParams ekf_params(const YamlMap& p) {
   return e;
 }
 
+alg::TerrainIcrLibrary library_of(const ComponentConfig& c, bool prior) {
+  const YamlMap& p = c.params();
+  if (!prior) {
+    if (p.has("icr_library")) p.fail("icr_library", "only used with reset_mode: prior");
+    return {};
+  }
+  if (!p.has("icr_library")) p.fail("icr_library", "required with reset_mode: prior (a terrain ICR library file)");
+  try {
+    return alg::load_terrain_icr_library(scenario_relative_path(c, "icr_library"));
+  } catch (const alg::TrainingFileError& e) {
+    p.fail("icr_library", e.what());
+  }
+}
+
+bool prior_mode(const YamlMap& p) {
+  const auto mode = p.optional<std::string>("reset_mode", "covariance");
+  if (mode != "covariance" && mode != "prior") p.fail("reset_mode", "expected covariance or prior, got '" + mode + "'");
+  return mode == "prior";
+}
+
 class IcrEkfComponent final : public Component {
  public:
   explicit IcrEkfComponent(const ComponentConfig& c)
@@ -64,18 +97,26 @@ class IcrEkfComponent final : public Component {
         wheels_(add_input("wheels", {"v_l", "v_r"}, "TrackSpeeds")), gps_(add_input("gps", {"x", "y", "theta"}, "Pose2D")),
         classes_(adaptive_ ? &add_input("terrain", {"class", "windows"}, "TerrainClass") : nullptr),
         out_(add_output("icr", {"x", "y", "theta", "y_l", "y_r", "x_G", "resets", "sd_y_l", "sd_y_r", "sd_x_G"},
-                        "IcrEstimate")) {
+                        "IcrEstimate")),
+        prior_(prior_mode(c.params())), library_(library_of(c, prior_)),
+        check_updates_(c.params().optional<int>("prior_check_updates", 60)), shadow_(ekf_) {
+    if (prior_ && !adaptive_) c.params().fail("reset_mode", "prior needs adaptive_reset: true");
+    if (check_updates_ < 1) c.params().fail("prior_check_updates", "must be >= 1");
     write();
   }
 
   void step(int64_t /*k*/, double /*t*/) override {
-    if (started_ && wheels_.valid()) ekf_.predict({wheels_[0], wheels_[1]}, dt_);
+    if (started_ && wheels_.valid()) {
+      ekf_.predict({wheels_[0], wheels_[1]}, dt_);
+      if (checking_ > 0) shadow_.predict({wheels_[0], wheels_[1]}, dt_);
+    }
     if (new_gps_(gps_)) {
       if (!started_) {
         ekf_.reset(pose_of(gps_));
         started_ = true;
       } else {
-        ekf_.update(pose_of(gps_));
+        const bool updated = ekf_.update(pose_of(gps_));
+        if (checking_ > 0 && updated && shadow_.update(pose_of(gps_))) check_prior();
       }
     }
     // One decision per classifier window: a new `windows` count (the classifier publishes
@@ -83,7 +124,17 @@ class IcrEkfComponent final : public Component {
     if (classes_ && classes_->valid() && (*classes_)[1] != last_window_ && (*classes_)[0] >= 0.0) {
       last_window_ = (*classes_)[1];
       if (detector_.observe(static_cast<int>(std::lround((*classes_)[0])))) {
-        ekf_.reset_covariance_to_p_b();  // paper 001 eq. (22)
+        const alg::TerrainIcrPrior* prior = prior_ ? library_.find(detector_.current()) : nullptr;
+        if (prior) {
+          shadow_ = ekf_;
+          shadow_.reset_covariance_to_p_b();  // the paper's hypothesis, run beside the prior
+          ekf_.reset_to_prior(prior->mean, prior->sd);
+          checking_ = check_updates_;
+          nis_prior_ = nis_paper_ = 0.0;
+        } else {
+          ekf_.reset_covariance_to_p_b();  // paper 001 eq. (22)
+          checking_ = 0;
+        }
         ++resets_;
       }
     }
@@ -98,6 +149,24 @@ class IcrEkfComponent final : public Component {
     for (int i = 0; i < 3; ++i) out_[static_cast<std::size_t>(7 + i)] = std::sqrt(ekf_.covariance()(3 + i, 3 + i));
   }
 
+  /// After a prior reset: -2 log likelihood of the GPS innovations (NIS + log det S, summed
+  /// over the same updates) under the prior and under the paper's covariance reset; the
+  /// worse-fitting hypothesis is dropped. (NIS alone favours the looser filter, whose larger
+  /// S shrinks every innovation.) Sequential: it ends early once the sums differ by more
+  /// than kDecisive (half the difference is the log-likelihood ratio: 10 is a ratio of e^5).
+  void check_prior() {
+    constexpr double kDecisive = 10.0;
+    nis_prior_ += ekf_.last_neg2_log_likelihood();
+    nis_paper_ += shadow_.last_neg2_log_likelihood();
+    const double d = nis_prior_ - nis_paper_;
+    if (--checking_ > 0 && std::abs(d) < kDecisive) return;
+    checking_ = 0;
+    if (d > 0.0) {
+      ekf_ = shadow_;
+      ++fallbacks_;
+    }
+  }
+
   alg::IcrEkf ekf_;
   bool adaptive_;
   alg::TerrainChangeDetector detector_;
@@ -110,6 +179,14 @@ class IcrEkfComponent final : public Component {
   InputPort& gps_;
   InputPort* classes_;
   OutputPort& out_;
+  bool prior_;
+  alg::TerrainIcrLibrary library_;
+  int check_updates_;
+  alg::IcrEkf shadow_;   ///< the paper's covariance reset, run beside a prior reset during its check
+  int checking_ = 0;     ///< updates left in the check of the last prior reset
+  double nis_prior_ = 0.0;
+  double nis_paper_ = 0.0;
+  long fallbacks_ = 0;
 };
 
 const ComponentRegistration kEkf{"icr_ekf", ComponentKind::estimator,

@@ -302,7 +302,7 @@ TEST(ServicesTests, CoverEveryRegisteredComponentType) {
       {"attitude_filter", "attitude_filter"},            {"balancing_controller", "attitude_filter"},
       {"motion_profile", "attitude_filter"},             {"icr_ekf", "icr_estimator"},
       {"icr_odometry", "icr_estimator"},                 {"terrain_classifier", "terrain_classifier"},
-      {"terrain_recorder", "terrain_classifier"},
+      {"terrain_recorder", "terrain_classifier"},         {"icr_library_recorder", "icr_estimator"},
   };
   std::set<std::string> registered;
   for (const auto* t : scenario::component_types()) {

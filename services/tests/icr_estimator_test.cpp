@@ -3,10 +3,14 @@
 // out; TrackSpeeds + SkidSteerTruth (+ IcrEstimate) in -> dead reckoning -> Pose2D out.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <cmath>
+#include <filesystem>
 
 #include "plexus/algorithms/skid_steer/icr_ekf.hpp"
 #include "plexus/algorithms/skid_steer/icr_odometry.hpp"
+#include "plexus/algorithms/skid_steer/terrain_icr_library.hpp"
 #include "service_harness.hpp"
 
 namespace plexus::services_test {
@@ -154,6 +158,86 @@ TEST(IcrEkf, BadParametersAreConfigurationErrors) {
                                  {"services.ekf.consecutive_windows=0", {"services.ekf", "consecutive"}},
                                  {"services.ekf.adaptive_reset=maybe", {"services.ekf.adaptive_reset"}},
                              });
+}
+
+TEST(IcrEkf, PriorResetStartsFromTheLearnedIcrsOfTheConfirmedTerrain) {
+  // reset_mode prior: on the confirmed change to class 1 (tile), the ICRs are the library's
+  // tile values and their sd the library's (deploy/training/icr_terrain_library.txt).
+  const std::string library = std::string(PLEXUS_SOURCE_DIR) + "/deploy/training/icr_terrain_library.txt";
+  const alg::TerrainIcrPrior tile = *alg::load_terrain_icr_library(library).find(1);
+  ServiceUnderTest s(kEkf, {}, {"services.ekf.adaptive_reset=true", "services.ekf.reset_mode=prior",
+                                "services.ekf.icr_library=" + library});
+  int64_t k = 0;
+  auto run = [&](int steps) {
+    for (int i = 0; i < steps; ++i, ++k) {
+      feed_ekf(s, k);
+      s.step(k);
+    }
+  };
+  s.deliver("r2/terrain", terrain(s, 0, 0, 1));
+  run(10);
+  s.deliver("r2/terrain", terrain(s, k, 1, 2));
+  run(1);
+  s.deliver("r2/terrain", terrain(s, k, 1, 3));  // confirmed: tile
+  feed_ekf(s, k);
+  s.step(k);
+  const auto m = s.published<msg::IcrEstimate>("r2/icr");
+  EXPECT_EQ(m.resets(), 1u);
+  EXPECT_DOUBLE_EQ(m.y_l(), tile.mean.y_l);
+  EXPECT_DOUBLE_EQ(m.y_r(), tile.mean.y_r);
+  EXPECT_DOUBLE_EQ(m.x_g(), tile.mean.x_G);
+  EXPECT_DOUBLE_EQ(m.stddev()[3], tile.sd(0));
+  EXPECT_DOUBLE_EQ(m.stddev()[5], tile.sd(2));
+}
+
+TEST(IcrEkf, PriorResetParametersAreConfigurationErrors) {
+  EXPECT_NE(config_error(kEkf, {"services.ekf.adaptive_reset=true", "services.ekf.reset_mode=prior"})
+                .find("icr_library: required with reset_mode: prior"),
+            std::string::npos);
+  EXPECT_NE(config_error(kEkf, {"services.ekf.adaptive_reset=true", "services.ekf.reset_mode=learned"})
+                .find("reset_mode: expected covariance or prior, got 'learned'"),
+            std::string::npos);
+  EXPECT_NE(config_error(kEkf, {"services.ekf.adaptive_reset=true", "services.ekf.reset_mode=prior",
+                                "services.ekf.icr_library=/nonexistent/lib.txt"})
+                .find("icr_library: /nonexistent/lib.txt: cannot open"),
+            std::string::npos);
+}
+
+// --- icr_library_recorder ----------------------------------------------------------------
+
+TEST(IcrLibraryRecorder, LearnsTheMeanOfTheSettledEstimatePerTerrain) {
+  const std::string path = std::filesystem::temp_directory_path() / ("plexus_icr_library_" + std::to_string(::getpid()) + ".txt");
+  const std::string part = "name: lib_part\nstep: 0.01\nservices:\n  rec: {type: icr_library_recorder, robot: r2, "
+                           "settle_s: 0.5, class_names: [a, b], output: " + path + "}\n";
+  ServiceUnderTest s(part);
+  EXPECT_EQ(s.message_type("r2/icr"), "IcrEstimate");
+  EXPECT_EQ(s.message_type("r2/truth/state"), "SkidSteerTruth");
+  // Terrain 1 for 2.5 s: from 0.5 s on (settled) the estimate alternates 0.45 / 0.55 around
+  // 0.5 (y_l), with the filter's sd 0.03: the library holds mean 0.5 and
+  // sd = sqrt(sample variance + 0.03^2); the unsettled first 0.5 s (y_l = 9) is left out.
+  for (int64_t k = 0; k < 250; ++k) {
+    auto t = s.stamped<msg::SkidSteerTruth>(k);
+    t.terrain_id(1);
+    s.deliver("r2/truth/state", t);
+    const bool settled = k >= 50;
+    auto m = s.stamped<msg::IcrEstimate>(k);
+    m.y_l(settled ? (k % 2 ? 0.55 : 0.45) : 9.0), m.y_r(-0.6), m.x_g(-0.2);
+    m.stddev({0, 0, 0, 0.03, 0.03, 0.03});
+    s.deliver("r2/icr", m);
+    s.step(k);
+  }
+  EXPECT_EQ(s.out("r2/recorder", "samples"), 200.0);  // steps 50..249
+  const auto lib = alg::load_terrain_icr_library(path);
+  std::filesystem::remove(path);
+  ASSERT_NE(lib.find(1), nullptr);
+  EXPECT_EQ(lib.find(0), nullptr);
+  EXPECT_EQ(lib.names.at(1), "b");
+  EXPECT_NEAR(lib.find(1)->mean.y_l, 0.5, 1e-6);
+  EXPECT_NEAR(lib.find(1)->mean.y_r, -0.6, 1e-6);
+  // 100 of each of +-0.05 about 0.5: sample variance 0.0025 * 200 / 199.
+  EXPECT_NEAR(lib.find(1)->sd(0), std::sqrt(0.0025 * 200.0 / 199.0 + 0.0009), 1e-4);
+  EXPECT_NEAR(lib.find(1)->sd(1), 0.03, 1e-4);
+  EXPECT_EQ(lib.find(1)->samples, 200);
 }
 
 // --- icr_odometry -----------------------------------------------------------------------

@@ -54,6 +54,30 @@ plexus_pin(repro.icr_terrain_switch_akf ${SKID_SCENARIOS}/icr_terrain_switch_akf
            CHECKS "reconvergence_time_s >= 5" "reconvergence_time_s <= 6"
                   "odometry_ratio_akf_ekf >= 6.5" "odometry_ratio_akf_ekf <= 8"
                   "classifier_accuracy >= 0.95" "resets == 2")
+# ---- issue 16: the learned-prior reset (docs/algorithms/skid_steer.md "Prior reset"). The
+# paper's run with reset_mode prior and overlapping windows: each switch re-converges within
+# the paper's 3 s (measured 1.0 / 0.5 s), classifier >= 0.95, one reset per switch.
+skid_repro(icr_terrain_switch_prior icr_terrain_switch_prior)
+# Four switches, back to a terrain already seen (measured 0.75 / 1.25 s), GPS at 5 Hz, circles.
+set(PRIOR_CHECK "expectations={reconvergence_time_s: '<= 3', classifier_accuracy: '>= 0.95'}")
+skid_repro(icr_terrain_switch_prior.four_switches icr_terrain_switch_prior --set duration=160
+           --set "robots.r1.plant.schedule=[[0, grass], [40, concrete], [80, tile], [120, grass]]"
+           --set "expectations={reconvergence_time_s: '<= 3', classifier_accuracy: '>= 0.95', resets: '== 3'}")
+skid_repro(icr_terrain_switch_prior.gps_5Hz icr_terrain_switch_prior --set robots.r1.sensors.gps.rate=5 --set "${PRIOR_CHECK}")
+skid_repro(icr_terrain_switch_prior.circle icr_terrain_switch_prior --set services.driver.pattern=circle
+           --set services.driver.turn_rate=0.5 --set "${PRIOR_CHECK}")
+# A deliberately wrong library (tile and grass swapped: what a misclassified terrain gives):
+# the paper's covariance reset, run beside the prior as a second hypothesis, fits the GPS
+# better and takes over, so re-convergence is that of the paper's reset with the same
+# windows (icr_terrain_switch_akf.hop_0_25: 5.05 / 4.45 s; bounds: those + 0.01 s), no worse; the 3 s target is
+# missed, as the paper's method misses it.
+plexus_pin(repro.icr_terrain_switch_prior.mislabelled ${SKID_SCENARIOS}/icr_terrain_switch_prior.yaml
+           MISSES reconvergence_time_switch1_s reconvergence_time_switch2_s
+           CHECKS "reconvergence_time_switch1_s <= 5.06" "reconvergence_time_switch2_s <= 4.46" "resets == 2"
+           ARGS --set services.ekf.icr_library=${PROJECT_SOURCE_DIR}/tests/data/icr_terrain_library_swapped.txt)
+# The library is learned by a recorded run (deploy/training/icr_terrain_library.txt).
+skid_repro(icr_record_library icr_record_library --set services.library.output=${SKID_RUNS}/icr_terrain_library.txt)
+
 # Variants: the classifier stays >= 95 % accurate, the reset fires exactly once per switch,
 # and re-convergence stays an order of magnitude below the plain EKF's (> 100 s).
 set(AKF_CHECK "expectations={classifier_accuracy: '>= 0.95', reconvergence_time_s: '< 10'}")

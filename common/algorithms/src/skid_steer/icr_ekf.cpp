@@ -76,6 +76,17 @@ void IcrEkf::reset(const Pose2& pose) {
 
 void IcrEkf::reset_covariance_to_p_b() { ekf_.reset_covariance(p_b_); }
 
+void IcrEkf::reset_to_prior(const IcrParams& icr, const Eigen::Vector3d& sd) {
+  IcrVector x = ekf_.state();
+  x(3) = icr.y_l;
+  x(4) = icr.y_r;
+  x(5) = icr.x_G;
+  IcrMatrix p = IcrMatrix::Zero();
+  p.topLeftCorner<3, 3>() = p_b_.topLeftCorner<3, 3>();
+  p.bottomRightCorner<3, 3>() = sd.cwiseProduct(sd).asDiagonal();
+  ekf_.reset(x, p);
+}
+
 IcrVector IcrEkf::transition(const IcrVector& x, const TrackSpeeds& u, double dt) {
   const BodyVelocity b = icr_body_velocity({x(3), x(4), x(5)}, u);
   const Pose2 p = icr_euler_step({x(0), x(1), x(2)}, b, dt);

@@ -22,7 +22,7 @@ inline const std::vector<ServiceExecutable>& service_catalog() {
       {"localisation_observer", {"heading_observer", "velocity_heading_observer"}},
       {"motion_controller", {"trajectory_tracking", "path_following", "reference_feedforward", "skid_steer_driver"}},
       {"terrain_classifier", {"terrain_classifier", "terrain_recorder"}},
-      {"icr_estimator", {"icr_ekf", "icr_odometry"}},
+      {"icr_estimator", {"icr_ekf", "icr_odometry", "icr_library_recorder"}},
       // The attitude filter service also runs the balancing controller when the scenario
       // puts one on it; as separate components they can still be split over processes.
       {"attitude_filter", {"attitude_filter", "balancing_controller", "motion_profile"}},

@@ -133,6 +133,7 @@ class ExtendedKalmanFilter {
     }
     guard();
     last_nis_ = r.dot(llt.solve(r));
+    last_log_det_s_ = 2.0 * llt.matrixL().toDenseMatrix().diagonal().array().log().sum();
     return true;
   }
 
@@ -141,6 +142,9 @@ class ExtendedKalmanFilter {
   const EkfOptions& options() const { return options_; }
   /// Normalised innovation squared r^T S^-1 r of the last successful update (0 before).
   double last_nis() const { return last_nis_; }
+  /// log det S of the last successful update: with the NIS, -2 log of the innovation's
+  /// Gaussian likelihood up to a constant (NIS + log det S), to compare two filters' fits.
+  double last_log_det_s() const { return last_log_det_s_; }
   /// How many times the covariance guard had to repair P.
   long guard_repairs() const { return guard_repairs_; }
 
@@ -153,6 +157,7 @@ class ExtendedKalmanFilter {
   State x_ = State::Zero();
   Covariance P_ = Covariance::Identity();
   double last_nis_ = 0.0;
+  double last_log_det_s_ = 0.0;
   long guard_repairs_ = 0;
 };
 

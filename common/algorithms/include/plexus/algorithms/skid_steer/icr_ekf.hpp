@@ -76,6 +76,10 @@ class IcrEkf {
   void reset(const Pose2& pose);
   /// Adaptive reset (eq. (22)): P = P_B, state kept.
   void reset_covariance_to_p_b();
+  /// Prior reset (plexus, docs/algorithms/skid_steer.md): the ICRs set to a terrain's learned
+  /// values `icr`, their covariance to diag(sd^2); the pose and its covariance (P_B's pose
+  /// block) as in the covariance reset; no cross-covariance. sd > 0, finite.
+  void reset_to_prior(const IcrParams& icr, const Eigen::Vector3d& sd);
 
   /// Prediction over dt > 0 with track speeds u. Returns false (estimate unchanged) if the
   /// step is not finite or the ICR estimate is singular. No allocation.
@@ -92,6 +96,8 @@ class IcrEkf {
   /// How many updates were followed by a track-side clamp.
   long side_clamps() const { return clamps_; }
   double last_nis() const { return ekf_.last_nis(); }
+  /// -2 log likelihood of the last update's innovation, up to a constant: NIS + log det S.
+  double last_neg2_log_likelihood() const { return ekf_.last_nis() + ekf_.last_log_det_s(); }
 
   /// The Euler transition f(x, u) and its Jacobian (above). Public for tests.
   static IcrVector transition(const IcrVector& x, const TrackSpeeds& u, double dt);
