@@ -75,6 +75,12 @@ plexus_pin(repro.icr_terrain_switch_prior.mislabelled ${SKID_SCENARIOS}/icr_terr
            MISSES reconvergence_time_switch1_s reconvergence_time_switch2_s
            CHECKS "reconvergence_time_switch1_s <= 5.06" "reconvergence_time_switch2_s <= 4.46" "resets == 2"
            ARGS --set services.ekf.icr_library=${PROJECT_SOURCE_DIR}/tests/data/icr_terrain_library_swapped.txt)
+# A user's terrains: the paper's vibration signatures with other ICRs, their own library
+# recorded first, then the switching run with it (measured 1.0 / 0.5 s).
+add_test(NAME repro.icr_terrain_switch_prior.custom_icr
+         COMMAND ${CMAKE_CURRENT_LIST_DIR}/scripts/prior_custom_icr.sh $<TARGET_FILE:plexus> ${SKID_SCENARIOS}
+                 ${SKID_RUNS}/prior_custom_icr)
+set_tests_properties(repro.icr_terrain_switch_prior.custom_icr PROPERTIES LABELS "repro")
 # The library is learned by a recorded run (deploy/training/icr_terrain_library.txt).
 skid_repro(icr_record_library icr_record_library --set services.library.output=${SKID_RUNS}/icr_terrain_library.txt)
 
