@@ -143,10 +143,15 @@ class IcrEkfComponent final : public Component {
 
  private:
   void write() {
-    const alg::IcrVector& x = ekf_.state();
+    // During a prior check the output is the prior's estimate until the paper's hypothesis
+    // is more likely by a factor e (summed -2 log likelihoods 2 apart), then the paper's:
+    // a wrong prior is not published for longer than the evidence needs.
+    constexpr double kLead = 2.0;
+    const alg::IcrEkf& f = checking_ > 0 && nis_paper_ + kLead < nis_prior_ ? shadow_ : ekf_;
+    const alg::IcrVector& x = f.state();
     for (int i = 0; i < 6; ++i) out_[static_cast<std::size_t>(i)] = x(i);
     out_[6] = static_cast<double>(resets_);
-    for (int i = 0; i < 3; ++i) out_[static_cast<std::size_t>(7 + i)] = std::sqrt(ekf_.covariance()(3 + i, 3 + i));
+    for (int i = 0; i < 3; ++i) out_[static_cast<std::size_t>(7 + i)] = std::sqrt(f.covariance()(3 + i, 3 + i));
   }
 
   /// After a prior reset: -2 log likelihood of the GPS innovations (NIS + log det S, summed
