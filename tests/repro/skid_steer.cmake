@@ -81,6 +81,12 @@ add_test(NAME repro.icr_terrain_switch_prior.custom_icr
          COMMAND ${CMAKE_CURRENT_LIST_DIR}/scripts/prior_custom_icr.sh $<TARGET_FILE:plexus> ${SKID_SCENARIOS}
                  ${SKID_RUNS}/prior_custom_icr)
 set_tests_properties(repro.icr_terrain_switch_prior.custom_icr PROPERTIES LABELS "repro")
+# The same with the paper's 1 s windows: as the covariance reset with them (5.5 / 4.5 s).
+plexus_pin(repro.icr_terrain_switch_prior.mislabelled_1s_windows ${SKID_SCENARIOS}/icr_terrain_switch_prior.yaml
+           MISSES reconvergence_time_switch1_s reconvergence_time_switch2_s
+           CHECKS "reconvergence_time_switch1_s <= 5.51" "reconvergence_time_switch2_s <= 4.51" "resets == 2"
+           ARGS --set services.classifier.hop_s=1.0
+                --set services.ekf.icr_library=${PROJECT_SOURCE_DIR}/tests/data/icr_terrain_library_swapped.txt)
 # The library is learned by a recorded run (deploy/training/icr_terrain_library.txt).
 skid_repro(icr_record_library icr_record_library --set services.library.output=${SKID_RUNS}/icr_terrain_library.txt)
 
