@@ -75,7 +75,13 @@ int main(int argc, char** argv) {
   app.add_option("--set", sets, "Parameter override key=value (with --part: dotted.key=value of the part)");
   net.add_to(app);
   app.add_option("--profile", profile, "QoS profile of the lockstep topics");
-  app.add_option("--timeout", timeout, "Lockstep: seconds to wait for one input before failing");
+  app.add_option("--timeout", timeout, "Lockstep: seconds to wait for one input before failing")->check(CLI::Validator(
+      [](std::string& v) {
+        char* end = nullptr;
+        const double x = std::strtod(v.c_str(), &end);
+        return end != v.c_str() && *end == '\0' && std::isfinite(x) && x > 0.0 ? std::string() : "must be > 0 s (got " + v + ")";
+      },
+      "SECONDS > 0"));
   app.add_option("--mode", mode, "realtime (default) or lockstep (steps with a plexus launch clock)")
       ->check(CLI::IsMember({"lockstep", "realtime"}));
   app.add_flag("--start-signal", start_signal, "Realtime: wait for the launcher's start signal (plexus launch)");
@@ -85,7 +91,10 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? 0 : kExitBadInput;
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
+    const std::string self = app.get_name().substr(app.get_name().rfind('/') + 1);
+    std::fprintf(stderr, "%s: %s (--help lists the options)\n", self.c_str(), e.what());  // one line
+    return kExitBadInput;
   }
   if (!part_file.empty()) prctl(PR_SET_PDEATHSIG, SIGTERM);  // under the launcher: never outlive it
   std::signal(SIGINT, on_signal);

@@ -114,7 +114,7 @@ set_tests_properties(tools.latency_loop PROPERTIES LABELS "tools" TIMEOUT 60)
 
 # Bad input: a one-line error naming the argument or file, exit 2.
 add_test(NAME tools.bad_topic_type COMMAND ${EXPECT} 2 "--type: unknown message type 'Nope'"
-         ${PLEXUS_CLI} topic echo tools/x --type Nope --domain 214 --wait 0)
+         ${PLEXUS_CLI} topic echo tools/x --type Nope --domain 214 --wait 1)
 add_test(NAME tools.bad_vendor COMMAND ${EXPECT} 2 "--dds: unknown DDS vendor 'opensplice'"
          ${PLEXUS_CLI} topic list --dds opensplice)
 add_test(NAME tools.missing_run_file COMMAND ${EXPECT} 2 "/nonexistent/run.sqlite: no such file"

@@ -396,7 +396,8 @@ Command add_launch_command(CLI::App& root) {
   c.app->add_option("--set", o->sets, "Override a scenario value: dotted.key=value (repeatable)");
   c.app->add_option("--out", o->out, "Run folder (default runs/<scenario>-<UTC time>)");
   c.app->add_option("--qos-file", o->qos_file, "QoS profiles (default deploy/qos.yaml)");
-  c.app->add_option("--timeout", o->timeout, "Seconds a process may stay silent before the run fails");
+  c.app->add_option("--timeout", o->timeout, "Seconds a process may stay silent before the run fails")
+      ->check(positive_seconds());
   c.app->add_flag("--json", o->json, "Print the metrics (and steps_per_s) as one JSON object");
   c.app->add_flag("--quiet,-q", o->quiet, "No live status line");
   c.app->add_flag("--report", o->report, "Then plot the run and print its metrics against the expectations (plexus report)");

@@ -173,7 +173,9 @@ Command add_record_command(CLI::App& root) {
   c.app->add_option("--topics", o->topics, "comma-separated topics (default: every topic with a writer)");
   c.app->add_option("--duration", o->duration, "stop after S seconds (0: until Ctrl-C or --count)");
   c.app->add_option("--count", o->count, "stop after N samples in total (0: no limit)");
-  c.app->add_option("--wait", o->wait, "--topics: seconds to wait for their writers to be discovered")->capture_default_str();
+  c.app->add_option("--wait", o->wait, "--topics: seconds to wait for their writers to be discovered")
+      ->capture_default_str()
+      ->check(positive_seconds());
   c.app->add_option("--qos", o->profile, "subscribe with this QoS profile (default: one matching every writer)");
   c.app->add_option("--qos-file", o->qos_file, "QoS profiles file (default: deploy/qos.yaml)");
   c.run = [o] { return run_record(*o); };

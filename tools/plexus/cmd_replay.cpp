@@ -248,7 +248,9 @@ Command add_replay_command(CLI::App& root) {
   c.app->add_flag("--restamp", o->restamp,
                   "shift data times too, to now (a realtime run reads the replay as live samples)");
   c.app->add_option("--service", o->service, "publish a heartbeat on health/<service> (for plexus launch)");
-  c.app->add_option("--wait", o->wait, "seconds to wait for subscribers before starting")->capture_default_str();
+  c.app->add_option("--wait", o->wait, "seconds to wait for subscribers before starting")
+      ->capture_default_str()
+      ->check(positive_seconds());
   c.app->add_option("--linger", o->linger, "seconds to keep the writers after the last sample")->capture_default_str();
   c.app->add_option("--qos", o->profile, "publish with this QoS profile (default: the recorded writers' QoS)");
   c.app->add_option("--qos-file", o->qos_file, "QoS profiles file (default: deploy/qos.yaml)");

@@ -292,7 +292,8 @@ Command add_topic_command(CLI::App& root) {
   c.app->require_subcommand(1);
   auto common = [o](CLI::App* s, bool reads) {
     add_dds_options(s, o->dds);
-    s->add_option("--wait", o->wait, "seconds to wait for discovery (list/info: 2; echo/hz: up to 5 for a writer)");
+    s->add_option("--wait", o->wait, "seconds to wait for discovery (list/info: 2; echo/hz: up to 5 for a writer)")
+        ->check(positive_seconds());
     s->add_flag("--json", o->json, "JSON output");
     if (reads) {
       s->add_option("topic", o->topic, "topic name")->required();

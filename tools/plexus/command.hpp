@@ -4,7 +4,9 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cmath>
 #include <functional>
+#include <string>
 
 namespace plexus::cli {
 
@@ -22,5 +24,18 @@ Command add_topic_command(CLI::App& root);
 Command add_record_command(CLI::App& root);
 Command add_replay_command(CLI::App& root);
 Command add_latency_command(CLI::App& root);
+
+/// A duration option that must be > 0 s (a zero or negative wait or timeout is refused,
+/// exit 2: "--timeout: must be > 0 s (got -1)").
+inline CLI::Validator positive_seconds() {
+  return CLI::Validator(
+      [](std::string& v) -> std::string {
+        char* end = nullptr;
+        const double x = std::strtod(v.c_str(), &end);
+        if (end == v.c_str() || *end != '\0' || !std::isfinite(x) || x <= 0.0) return "must be > 0 s (got " + v + ")";
+        return {};
+      },
+      "SECONDS > 0");
+}
 
 }  // namespace plexus::cli

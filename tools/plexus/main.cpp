@@ -3,6 +3,8 @@
 
 #include <cstdio>
 #include <exception>
+#include <new>
+#include <string>
 #include <vector>
 
 #include "command.hpp"
@@ -25,21 +27,45 @@ int main(int argc, char** argv) {
   commands.push_back(plexus::cli::add_latency_command(app));
   // Further subcommands register here.
 
+  // An unknown first word is named, with the commands there are (CLI11 would only say that
+  // a subcommand is required).
+  std::string known;
+  bool found = false;
+  for (const auto* sub : app.get_subcommands({})) {
+    known += (known.empty() ? "" : ", ") + sub->get_name();
+    found = found || (argc > 1 && sub->check_name(argv[1]));
+  }
+  if (argc > 1 && argv[1][0] != '-' && !found) {
+    std::fprintf(stderr, "plexus: unknown command '%s' (commands: %s)\n", argv[1], known.c_str());
+    return plexus::kExitBadInput;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    // CLI11 exits 0 for --help and 106/109... for usage errors: usage errors are bad input, exit 2.
-    const int code = app.exit(e);
-    return code == 0 ? 0 : plexus::kExitBadInput;
+    // CLI11 exits 0 for --help and 106/109... for usage errors: usage errors are bad input,
+    // exit 2, with a one-line error under the same prefix as the others.
+    if (e.get_exit_code() == 0) return app.exit(e);
+    std::string cmd = "plexus";
+    for (const auto* sub : app.get_subcommands()) cmd += " " + sub->get_name();
+    std::fprintf(stderr, "%s: %s (--help lists the options)\n", cmd.c_str(), e.what());
+    return plexus::kExitBadInput;
   }
+  // One prefix for every error line: "plexus <command>: ".
+  std::string prefix = "plexus";
+  for (auto& c : commands)
+    if (c.app->parsed()) prefix += " " + c.app->get_name();
   try {
     for (auto& c : commands)
       if (c.app->parsed()) return c.run();
   } catch (const plexus::InputError& e) {
-    std::fprintf(stderr, "plexus: error: %s\n", e.what());
+    std::fprintf(stderr, "%s: error: %s\n", prefix.c_str(), e.what());
+    return plexus::kExitBadInput;
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "%s: error: out of memory (a run too long, or an input too large, for this machine)\n",
+                 prefix.c_str());
     return plexus::kExitBadInput;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "plexus: failed: %s\n", e.what());
+    std::fprintf(stderr, "%s: failed: %s\n", prefix.c_str(), e.what());
     return 1;
   }
   return 1;

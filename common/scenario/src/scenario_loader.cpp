@@ -14,6 +14,7 @@
 #include "plexus/scenario/digest.hpp"
 #include "plexus/scenario/registry.hpp"
 #include "plexus/scenario/scenario.hpp"
+#include "plexus/scenario/evaluation.hpp"
 #include "wiring.hpp"
 
 namespace plexus::scenario {
@@ -179,7 +180,9 @@ struct Loader {
       if (sc.duration <= 0.0) top.fail("duration", "must be > 0 s");
       if (sc.step > sc.duration) top.fail("step", "must not exceed the duration");
       const double steps = sc.duration / sc.step;
-      if (steps > 1e9) top.fail("step", "gives more than 1e9 steps");
+      if (steps > 1e9)
+        top.fail("duration", format_number(sc.duration) + " s at a step of " + format_number(sc.step) +
+                                 " s is more than the 1e9 steps a run can hold");
       sc.steps = std::llround(steps);
       if (std::abs(steps - static_cast<double>(sc.steps)) > 1e-6)
         top.fail("duration", "must be a whole number of steps (duration / step = " + std::to_string(steps) + ")");
