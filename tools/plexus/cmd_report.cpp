@@ -1,5 +1,6 @@
 // plexus report RUN_DIR: PNG plots of a run folder's signals and a markdown table of its
 // metrics against the scenario's expectations (RUN_DIR/report.md, RUN_DIR/plots/*.png).
+// Exit codes: 0 every expectation met, 1 a FAIL row, 2 not a run folder.
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -14,10 +15,8 @@ Command add_report_command(CLI::App& root) {
   Command c;
   c.app = root.add_subcommand("report", "Plot a run folder written by `plexus sim` (gnuplot PNGs) and tabulate its metrics");
   c.app->add_option("run_dir", *dir, "Run folder")->required();
-  c.run = [dir] {
-    print_report(*dir);
-    return 0;
-  };
+  // Exit 1 when a row says FAIL (an expectation not met, or its metric missing), as `sim`.
+  c.run = [dir] { return print_report(*dir) > 0 ? 1 : 0; };
   return c;
 }
 

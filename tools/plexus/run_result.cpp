@@ -33,11 +33,12 @@ int finish_run(const scenario::Scenario& sc, const scenario::RunLog& log, double
   return ev.failures.empty() ? 0 : 1;
 }
 
-void print_report(const std::string& run_dir, bool to_stderr) {
+int print_report(const std::string& run_dir, bool to_stderr) {
   const auto r = scenario::write_report(run_dir);
   std::FILE* out = to_stderr ? stderr : stdout;
   std::fprintf(out, "\n%s\nreport: %s\n", r.table.c_str(), r.markdown.string().c_str());
   for (const auto& p : r.plots) std::fprintf(out, "  %s\n", p.string().c_str());
+  return r.failed;
 }
 
 }  // namespace plexus::cli

@@ -27,6 +27,7 @@ int finish_run(const scenario::Scenario& sc, const scenario::RunLog& log, double
 
 /// `plexus report` (and `launch --report`): writes the plots and report.md of a run folder,
 /// prints the metrics-against-expectations table (the paper comparison) and the files.
-void print_report(const std::string& run_dir, bool to_stderr = false);
+/// Returns the number of FAIL rows.
+int print_report(const std::string& run_dir, bool to_stderr = false);
 
 }  // namespace plexus::cli

@@ -174,6 +174,15 @@ Report write_report(const fs::path& run_dir) {
       result = (result == "-" || result == "pass") && e.holds(v) ? "pass" : "FAIL";
     }
     table << "| " << metric << " | " << format_number(v) << " | " << bound << " | " << result << " |\n";
+    if (result == "FAIL") ++report.failed;
+  }
+  // An expectation whose metric metrics.json lacks is a row too: missing, and FAIL.
+  for (const auto& [metric, es] : bounds) {
+    if (metrics.contains(metric)) continue;
+    std::string bound;
+    for (const auto& e : es) bound += (bound.empty() ? "" : ", ") + std::string(e.op_text()) + " " + format_number(e.bound);
+    table << "| " << metric << " | missing | " << bound << " | FAIL |\n";
+    ++report.failed;
   }
   report.table = table.str();
   md << report.table;

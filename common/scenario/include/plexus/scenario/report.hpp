@@ -22,6 +22,7 @@ struct Report {
   std::filesystem::path markdown;
   std::vector<std::filesystem::path> plots;
   std::string table;  ///< the metrics-against-expectations table (markdown), as in report.md
+  int failed = 0;     ///< FAIL rows: expectations not met, or whose metric is missing
 };
 
 /// Throws InputError when `run_dir` is not a readable run folder, std::runtime_error
