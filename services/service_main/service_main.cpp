@@ -49,6 +49,7 @@ int main(int argc, char** argv) {
                             ": a plexus service over DDS, on its own (--robot, --params, --set) or as part of `plexus "
                             "launch` (--part). Topics: docs/topics.md";
   CLI::App app{about};
+  app.set_version_flag("--version", std::string(PLEXUS_SERVICE_NAME) + " " + PLEXUS_VERSION);
   std::string part_file, profile = "lockstep", log_level = "warn", mode = "realtime";
   scenario::ServiceDdsOptions net;
   int priority = 0, cpu = -1;

@@ -13,7 +13,7 @@
 int main(int argc, char** argv) {
   CLI::App app{"plexus: distributed real-time runtime for robot estimation and control"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", "plexus 0.1.0");
+  app.set_version_flag("--version", std::string("plexus ") + PLEXUS_VERSION);
 
   std::vector<plexus::cli::Command> commands;
   commands.push_back(plexus::cli::add_demo_command(app));

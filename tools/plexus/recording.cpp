@@ -100,7 +100,23 @@ RecordingReader::RecordingReader(const std::string& path) : path_(path) {
     db_ = nullptr;
     throw InputError(path + ": cannot open recording");
   }
+  // A recording cut short (a copy interrupted, a full disk) can still open and list its
+  // topics; SQLite's own check finds it. quick_check reads every page: linear in the size.
   sqlite3_stmt* st = nullptr;
+  std::string check = "not run";
+  if (sqlite3_prepare_v2(db_, "PRAGMA quick_check", -1, &st, nullptr) == SQLITE_OK && sqlite3_step(st) == SQLITE_ROW)
+    check = reinterpret_cast<const char*>(sqlite3_column_text(st, 0));
+  else
+    check = sqlite3_errmsg(db_);
+  sqlite3_finalize(st);
+  st = nullptr;
+  for (auto& c : check)
+    if (c == '\n') c = ' ';  // one line
+  if (check != "ok") {
+    sqlite3_close(db_);
+    db_ = nullptr;
+    throw InputError(path + ": truncated or corrupt recording (SQLite: " + check + ")");
+  }
   if (sqlite3_prepare_v2(db_, "SELECT id, name, type, IFNULL(qos, '') FROM topics ORDER BY id", -1, &st, nullptr) !=
       SQLITE_OK) {
     sqlite3_close(db_);
