@@ -13,3 +13,8 @@ foreach(exe plexus plant_simulator localisation_observer motion_controller terra
                    -P ${PROJECT_SOURCE_DIR}/common/scenario/tests/cli/expect_cli.cmake)
   set_tests_properties(first_hour.version_${exe} PROPERTIES LABELS "cli")
 endforeach()
+add_test(NAME first_hour.record_keeps_existing_file
+         COMMAND ${PROJECT_SOURCE_DIR}/tests/scripts/record_keeps_file.sh $<TARGET_FILE:plexus> 149
+                 ${CMAKE_BINARY_DIR}/test-runs/first_hour/record_keeps_file)
+set_tests_properties(first_hour.record_keeps_existing_file PROPERTIES LABELS "cli;multiprocess" TIMEOUT 60
+                     RESOURCE_LOCK plexus_dds_domain_149)

@@ -157,8 +157,9 @@ int run_record(const RecordOpts& o) {
               o.out.c_str());
   if (n_topics == 0) {
     std::fprintf(stderr, "plexus record: no topic with a writer was discovered on domain %d\n", o.dds.domain);
-    return 1;
+    return 1;  // `file` is not committed: an existing recording at -o is left as it was
   }
+  file.commit();
   return 0;
 }
 
@@ -169,7 +170,7 @@ Command add_record_command(CLI::App& root) {
   Command c;
   c.app = root.add_subcommand("record", "Record topics to a SQLite file (CDR + receive and header times)");
   add_dds_options(c.app, o->dds);
-  c.app->add_option("-o,--output", o->out, "recording file to create (replaced if it exists)")->required();
+  c.app->add_option("-o,--output", o->out, "recording file to create (replaced, once the recording succeeds, if it exists)")->required();
   c.app->add_option("--topics", o->topics, "comma-separated topics (default: every topic with a writer)");
   c.app->add_option("--duration", o->duration, "stop after S seconds (0: until Ctrl-C or --count)");
   c.app->add_option("--count", o->count, "stop after N samples in total (0: no limit)");

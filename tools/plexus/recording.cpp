@@ -21,10 +21,10 @@ void exec(sqlite3* db, const char* sql, const std::string& path) {
 
 }  // namespace
 
-RecordingWriter::RecordingWriter(const std::string& path) : path_(path) {
+RecordingWriter::RecordingWriter(const std::string& path) : path_(path), partial_(path + ".partial") {
   std::error_code ec;
-  std::filesystem::remove(path, ec);
-  if (sqlite3_open_v2(path.c_str(), &db_, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE, nullptr) != SQLITE_OK) {
+  std::filesystem::remove(partial_, ec);
+  if (sqlite3_open_v2(partial_.c_str(), &db_, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE, nullptr) != SQLITE_OK) {
     const std::string msg = db_ ? sqlite3_errmsg(db_) : "out of memory";
     sqlite3_close(db_);
     db_ = nullptr;
@@ -53,10 +53,23 @@ RecordingWriter::RecordingWriter(const std::string& path) : path_(path) {
 
 RecordingWriter::~RecordingWriter() {
   if (insert_) sqlite3_finalize(insert_);
-  if (db_) {
-    sqlite3_exec(db_, "CREATE INDEX IF NOT EXISTS messages_time ON messages(receive_time_ns)", nullptr, nullptr, nullptr);
+  if (db_) {  // not committed: the recording failed
     sqlite3_close(db_);
+    std::error_code ec;
+    std::filesystem::remove(partial_, ec);
   }
+}
+
+void RecordingWriter::commit() {
+  if (!db_) return;
+  if (insert_) sqlite3_finalize(insert_);
+  insert_ = nullptr;
+  exec(db_, "CREATE INDEX IF NOT EXISTS messages_time ON messages(receive_time_ns)", partial_);
+  sqlite3_close(db_);
+  db_ = nullptr;
+  std::error_code ec;
+  std::filesystem::rename(partial_, path_, ec);
+  if (ec) throw InputError(path_ + ": cannot write the recording (" + ec.message() + ")");
 }
 
 int64_t RecordingWriter::add_topic(const std::string& name, const std::string& type, const std::string& qos_json) {

@@ -30,9 +30,13 @@ struct RecordedMessage {
 
 class RecordingWriter {
  public:
-  /// Creates `path` (replacing an existing file). InputError if it cannot be created.
+  /// Records into `path`.partial (InputError if it cannot be created); commit() renames it
+  /// over `path`. Without commit() (a failed recording) the partial file is removed and an
+  /// existing `path` is left as it was.
   explicit RecordingWriter(const std::string& path);
   ~RecordingWriter();
+  /// Indexes the recording, closes it and renames it to `path` (replacing an existing file).
+  void commit();
   int64_t add_topic(const std::string& name, const std::string& type, const std::string& qos_json);
   /// Inserts a batch in one transaction.
   void insert(const std::vector<RecordedMessage>& batch);
@@ -41,6 +45,7 @@ class RecordingWriter {
   sqlite3* db_ = nullptr;
   sqlite3_stmt* insert_ = nullptr;
   std::string path_;
+  std::string partial_;
 };
 
 class RecordingReader {
