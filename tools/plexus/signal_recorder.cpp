@@ -41,6 +41,7 @@ distributed::LockstepClock::SampleTap SignalRecorder::tap(const std::vector<scen
 
 std::size_t SignalRecorder::write() {
   file_.insert(taken_);
+  file_.commit();  // the run ended: the recording replaces any file at its path
   return taken_.size();
 }
 

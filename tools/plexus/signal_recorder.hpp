@@ -23,7 +23,7 @@ class SignalRecorder {
 
   /// The clock's tap: serialises each sample with its receive and header times.
   distributed::LockstepClock::SampleTap tap(const std::vector<scenario::SignalSpec>& signals);
-  /// Writes everything taken. Returns the number of samples.
+  /// Writes everything taken and commits the file (recording.hpp). Returns the number of samples.
   std::size_t write();
 
  private:
