@@ -28,3 +28,11 @@ set_tests_properties(first_hour.unknown_command first_hour.error_prefix_names_th
                      first_hour.duration_beyond_the_step_limit first_hour.duration_beyond_memory
                      first_hour.negative_timeout first_hour.zero_wait first_hour.service_zero_timeout
                      PROPERTIES LABELS "cli")
+# --join: the values the help lists are the values the parser takes (origin_time was refused).
+add_test(NAME first_hour.latency_join_origin_time
+         COMMAND ${EXPECT} 2 "/nonexistent/run.sqlite: no such file"
+         $<TARGET_FILE:plexus> latency pipeline /nonexistent/run.sqlite --join origin_time)
+add_test(NAME first_hour.latency_join_lists_the_values
+         COMMAND ${EXPECT} 2 "--join: origin not in \\{auto,origin_time,data_time\\}"
+         $<TARGET_FILE:plexus> latency pipeline /nonexistent/run.sqlite --join origin)
+set_tests_properties(first_hour.latency_join_origin_time first_hour.latency_join_lists_the_values PROPERTIES LABELS "cli")
