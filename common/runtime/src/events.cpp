@@ -25,7 +25,7 @@ std::string Event::describe() const {
   std::string s = std::string(to_string(kind)) + " on topic '" + topic + "': local " + local;
   if (kind == EventKind::incompatible_qos) s += ", policy " + policy;
   if (!remote.empty()) s += ", remote " + remote;
-  if (kind == EventKind::liveliness_changed) s += alive ? " (alive)" : " (not alive)";
+  if (kind == EventKind::liveliness_changed) s += alive ? " (alive)" : writer_left ? " (writer left)" : " (not alive)";
   s += " (total " + std::to_string(total_count);
   if (kind == EventKind::matched || kind == EventKind::unmatched || kind == EventKind::liveliness_changed)
     s += ", now " + std::to_string(current_count);
@@ -38,7 +38,7 @@ void Participant::emit(const Event& e) const {
   static RateLimiter limiters[7];
   const bool problem = e.kind == EventKind::deadline_missed || e.kind == EventKind::incompatible_qos ||
                        e.kind == EventKind::liveliness_lost || e.kind == EventKind::sample_lost ||
-                       (e.kind == EventKind::liveliness_changed && !e.alive);
+                       (e.kind == EventKind::liveliness_changed && !e.alive && !e.writer_left);
   uint64_t suppressed = 0;
   if (!problem) {
     spdlog::info("{}", e.describe());  // (un)matching happens at start-up and shutdown, not in steady state

@@ -209,6 +209,9 @@ class CycloneReader final : public ReaderBackend {
     auto* self = static_cast<CycloneReader*>(arg);
     Event e = self->base(EventKind::liveliness_changed);
     e.alive = s.alive_count_change > 0;
+    // Alive count down without a not-alive count up: the writer was removed (its lease did
+    // not expire), as every writer is when a run ends.
+    e.writer_left = s.alive_count_change < 0 && s.not_alive_count_change <= 0;
     e.current_count = static_cast<int32_t>(s.alive_count);
     e.total_count = static_cast<int32_t>(s.alive_count + s.not_alive_count);
     e.remote = self->owner_.describe_matched(r, s.last_publication_handle, true);

@@ -205,6 +205,9 @@ class FastReader final : public ReaderBackend, public fdds::DataReaderListener {
   void on_liveliness_changed(fdds::DataReader*, const fdds::LivelinessChangedStatus& s) override {
     Event e = base(EventKind::liveliness_changed);
     e.alive = s.alive_count_change > 0;
+    // Alive count down without a not-alive count up: the writer was removed (its lease did
+    // not expire), as every writer is when a run ends.
+    e.writer_left = s.alive_count_change < 0 && s.not_alive_count_change <= 0;
     e.current_count = s.alive_count;
     e.total_count = s.alive_count + s.not_alive_count;
     e.remote = owner_.describe_remote(s.last_publication_handle);

@@ -30,6 +30,9 @@ struct Event {
   int32_t total_count = 0;       ///< cumulative count reported by the vendor
   int32_t current_count = 0;     ///< matched / alive count now, where the status has one
   bool alive = false;            ///< liveliness_changed: the remote writer is alive
+  /// liveliness_changed, not alive: the writer went away (deleted, its participant left)
+  /// rather than failing to assert its liveliness. A normal end of a run, not a problem.
+  bool writer_left = false;
 
   /// One line, for logs and tests.
   std::string describe() const;
