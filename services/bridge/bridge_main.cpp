@@ -124,6 +124,8 @@ int main(int argc, char** argv) {
       if (alone.input_rates.empty()) alone.input_rates.push_back("cmd=100");
       sc = scenario::load_standalone(alone, sets, true);
     }
+    // A launched process keeps quiet about the scenario's warnings: `plexus launch` said them once.
+    scenario::log_warnings(sc, {}, !part_file.empty());
     if (sc.sources.size() != 1)
       throw InputError(sc.file + ": a bridge serves exactly one robot whose `source` is " + name);
     const auto& [robot, src] = *sc.sources.begin();

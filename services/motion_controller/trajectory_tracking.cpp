@@ -17,10 +17,10 @@
 #include <string>
 #include <vector>
 
-#include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 
 #include "plexus/algorithms/unicycle/tracking_controller.hpp"
+#include "plexus/base/logging.hpp"
 #include "plexus/scenario/registry.hpp"
 #include "services/common/input_values.hpp"
 #include "services/motion_controller/controller_inputs.hpp"
@@ -32,10 +32,7 @@ namespace alg = plexus::algorithms;
 
 /// Warnings go to stderr (stdout carries `plexus sim --json`).
 spdlog::logger& unicycle_log() {
-  static const std::shared_ptr<spdlog::logger> logger = [] {
-    auto l = spdlog::get("scenario.unicycle");
-    return l ? l : spdlog::stderr_color_mt("scenario.unicycle");
-  }();
+  static const std::shared_ptr<spdlog::logger> logger = named_logger("scenario.unicycle");
   return *logger;
 }
 
@@ -91,7 +88,8 @@ class TrajectoryTrackingComponent final : public Component {
       return;
     }
     if (const auto warning = alg::check_gain_condition(ctl_.params(), *v_rm))
-      c.warn(c.name + " (reference " + ref_.signal() + "): " + *warning);  // logged once the scenario is valid
+      c.warn(c.name + ": gain condition (15) of paper 000 not met against reference " + ref_.signal(),
+             c.name + " (reference " + ref_.signal() + "): " + *warning);  // logged once the scenario is valid
   }
 
   bool output_feedback_;

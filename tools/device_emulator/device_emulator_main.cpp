@@ -175,6 +175,8 @@ int main(int argc, char** argv) {
         throw InputError("--step " + app["--step"]->as<std::string>() + ": expected seconds >= 0.00001 (at most 100 kHz)");
       sc = scenario::load_standalone(alone, sets, true);
     }
+    // A launched process keeps quiet about the scenario's warnings: `plexus launch` said them once.
+    scenario::log_warnings(sc, {}, !part_file.empty());
     if (!(sc.step >= kMinStep))
       throw InputError(sc.file + ": step " + std::to_string(sc.step) + ": expected seconds >= 0.00001 (at most 100 kHz)");
     const int64_t watchdog_ns = watchdog_ms * 1'000'000;

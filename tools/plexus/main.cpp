@@ -9,6 +9,7 @@
 
 #include "command.hpp"
 #include "plexus/base/input_error.hpp"
+#include "plexus/base/logging.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"plexus: distributed real-time runtime for robot estimation and control"};
@@ -55,6 +56,8 @@ int main(int argc, char** argv) {
   for (auto& c : commands)
     if (c.app->parsed()) prefix += " " + c.app->get_name();
   try {
+    // Every log line of every command on stderr, in the one format (stdout carries --json).
+    plexus::init_logging(prefix, "", "warn");
     for (auto& c : commands)
       if (c.app->parsed()) return c.run();
   } catch (const plexus::InputError& e) {

@@ -18,6 +18,25 @@ spdlog::level::level_enum parse_log_level(std::string_view name, std::string_vie
                    "' (expected trace, debug, info, warn, error, critical or off)");
 }
 
+namespace {
+// One line format for every logger of every plexus program: ISO time, level, [source] text.
+constexpr const char* kPattern = "%Y-%m-%dT%H:%M:%S.%e %^%-5l%$ [%n] %v";
+}  // namespace
+
+std::shared_ptr<spdlog::logger> named_logger(const std::string& name) {
+  if (auto l = spdlog::get(name)) return l;
+  auto logger = std::make_shared<spdlog::logger>(name, std::make_shared<spdlog::sinks::stderr_color_sink_mt>());
+  logger->set_pattern(kPattern);
+  logger->set_level(spdlog::default_logger()->level());
+  logger->flush_on(spdlog::level::warn);
+  try {
+    spdlog::register_logger(logger);
+  } catch (const spdlog::spdlog_ex&) {  // registered by another thread meanwhile
+    if (auto l = spdlog::get(name)) return l;
+  }
+  return logger;
+}
+
 std::shared_ptr<spdlog::logger> init_logging(std::string_view service, std::string_view robot,
                                              std::string_view level) {
   const auto lvl = parse_log_level(level, "--log-level");
@@ -25,7 +44,7 @@ std::shared_ptr<spdlog::logger> init_logging(std::string_view service, std::stri
   if (!robot.empty()) tag += "/" + std::string(robot);
   auto sink = std::make_shared<spdlog::sinks::stderr_color_sink_mt>();
   auto logger = std::make_shared<spdlog::logger>(tag, sink);
-  logger->set_pattern("%Y-%m-%dT%H:%M:%S.%e %^%-5l%$ [%n] %v");
+  logger->set_pattern(kPattern);
   logger->set_level(lvl);
   logger->flush_on(spdlog::level::warn);
   spdlog::set_default_logger(logger);

@@ -26,8 +26,10 @@ std::string resolve_signal(const std::string& robot, const std::map<std::string,
 
 std::string ComponentConfig::signal_for(const std::string& port) const { return resolve_signal(robot, remap, port); }
 
-void ComponentConfig::warn(std::string text) const {
-  if (warnings) warnings->push_back(std::move(text));
+std::string Component::default_signal(const std::string& port) const { return resolve_signal(robot_, {}, port); }
+
+void ComponentConfig::warn(std::string text, std::string detail) const {
+  if (warnings) warnings->push_back({std::move(text), std::move(detail)});
 }
 
 Component::Component(const ComponentConfig& config) : name_(config.name), robot_(config.robot), remap_(config.remap) {}

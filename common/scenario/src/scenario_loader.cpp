@@ -6,10 +6,10 @@
 #include <set>
 #include <stdexcept>
 
-#include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 
 #include "plexus/base/input_error.hpp"
+#include "plexus/base/logging.hpp"
 #include "plexus/base/yaml_reader.hpp"
 #include "plexus/scenario/digest.hpp"
 #include "plexus/scenario/registry.hpp"
@@ -60,7 +60,6 @@ struct Loader {
   std::set<std::string> hosts;
   std::set<std::string> robot_names;
   std::vector<std::pair<YAML::Node, uint64_t>> derived_seeds;  // written into the resolved tree
-  std::vector<std::string> warnings;                            // components' warnings, logged once valid
 
   int64_t period_of(const YamlMap& section) const {
     if (!section.has("rate")) return 1;
@@ -99,7 +98,7 @@ struct Loader {
     }
     cfg.base_step = sc.step;
     cfg.base_dir = sc.base_dir;
-    cfg.warnings = &warnings;
+    cfg.warnings = &sc.warnings;
     cfg.period_steps = period_of(section);
     if (section.has("seed")) {
       const long long seed = section.required<long long>("seed");
@@ -109,11 +108,16 @@ struct Loader {
       cfg.seed = derive_seed(sc.seed, cfg.name);
       derived_seeds.emplace_back(node, cfg.seed);
     }
+    std::map<std::string, std::string> remap_where;
     if (section.has("remap")) {
       const YamlMap remap = section.map("remap");
-      for (const auto& port : remap.keys()) cfg.remap[port] = remap.required<std::string>(port);
+      for (const auto& port : remap.keys()) {
+        cfg.remap[port] = remap.required<std::string>(port);
+        remap_where[port] = remap.where(remap.node(port)) + ": " + remap.key_path(port);
+      }
     }
     ScenarioComponent out;
+    out.remap_where = std::move(remap_where);
     if (service) {
       if (section.has("robot")) {
         cfg.robot = section.required<std::string>("robot");
@@ -407,14 +411,8 @@ Scenario load_root(YAML::Node root, const std::string& origin, const std::vector
   try {
     apply_overrides(root, overrides);
     sc.resolved = root;
-    Loader loader{sc, {}, {}, {}, {}};
+    Loader loader{sc, {}, {}, {}};
     loader.load(YamlMap(root, origin));
-    // Valid: now the components' warnings (on stderr: stdout carries `plexus sim --json`).
-    static const std::shared_ptr<spdlog::logger> log = [] {
-      auto l = spdlog::get("scenario");
-      return l ? l : spdlog::stderr_color_mt("scenario");
-    }();
-    for (const auto& w : loader.warnings) log->warn("{}", w);
   } catch (const InputError& e) {
     throw InputError(attribute_to_override(e.what(), origin, overrides));
   }
@@ -445,6 +443,16 @@ bool parse_component_kind(const std::string& name, ComponentKind& kind) {
       return true;
     }
   return false;
+}
+
+void log_warnings(const Scenario& scenario, const std::string& where_details, bool quiet) {
+  // On stderr, as every log line: stdout carries `plexus sim --json`.
+  auto log = named_logger("scenario");
+  for (const auto& w : scenario.warnings) {
+    const std::string details = w.detail.empty() ? std::string() : where_details;
+    log->log(quiet ? spdlog::level::info : spdlog::level::warn, "{}{}", w.text, details);
+    if (!w.detail.empty()) log->info("{}", w.detail);
+  }
 }
 
 }  // namespace plexus::scenario

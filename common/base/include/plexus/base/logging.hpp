@@ -18,6 +18,11 @@ namespace plexus {
 std::shared_ptr<spdlog::logger> init_logging(std::string_view service, std::string_view robot = {},
                                              std::string_view level = "info");
 
+/// A logger for one part of a program ("scenario", "scenario.unicycle"): the same stderr
+/// sink and line format as init_logging's, at the default logger's level. Created on first
+/// use and registered, so every caller with the same name shares it.
+std::shared_ptr<spdlog::logger> named_logger(const std::string& name);
+
 /// Parses an spdlog level name; throws InputError naming `origin` for an unknown one.
 spdlog::level::level_enum parse_log_level(std::string_view name, std::string_view origin);
 

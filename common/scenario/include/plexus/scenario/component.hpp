@@ -37,6 +37,12 @@ enum class ComponentKind { plant = 0, sensor = 1, reference = 2, estimator = 3, 
 const char* to_string(ComponentKind kind);
 
 /// Everything a component factory gets: the section it is built from and its place in the run.
+/// A warning about a scenario's configuration, raised by a component while it is built.
+struct ScenarioWarning {
+  std::string text;    ///< one short line: what and where ("controller: gain condition (15) not met")
+  std::string detail;  ///< the full explanation (values, bounds, consequences); may be empty
+};
+
 struct ComponentConfig {
   std::string name;        ///< instance name: `<robot>/plant`, `<robot>/<sensor>` or the service name
   std::string key;         ///< its key in the scenario: the sensor or service name, or "plant"
@@ -52,13 +58,14 @@ struct ComponentConfig {
   /// launched process, the original scenario's, not its part's; for a service on its own,
   /// its parameter file's).
   std::string base_dir;
-  /// Where warn() collects: the loader logs them once the whole scenario is valid, so a bad
-  /// parameter gives its one-line error and nothing else.
-  std::vector<std::string>* warnings = nullptr;
+  /// Where warn() collects: Scenario::warnings, kept until the whole scenario is valid, so
+  /// a bad parameter gives its one-line error and nothing else.
+  std::vector<ScenarioWarning>* warnings = nullptr;
 
-  /// A warning about the configuration (a gain condition the parameters violate), logged on
-  /// stderr after validation.
-  void warn(std::string text) const;
+  /// A warning about the configuration (a gain condition the parameters violate): `text` is
+  /// one short line for the console, `detail` the full explanation for the run's records
+  /// (scenario::log_warnings says where each goes).
+  void warn(std::string text, std::string detail = {}) const;
 
   /// Period in seconds (period_steps * base_step).
   double period() const { return static_cast<double>(period_steps) * base_step; }
@@ -136,6 +143,8 @@ class Component {
   virtual void hold(int64_t k, double t);
 
   const std::string& name() const { return name_; }
+  /// The signal `port` would bind to without the scenario's remap.
+  std::string default_signal(const std::string& port) const;
   const std::vector<std::unique_ptr<InputPort>>& inputs() const { return inputs_; }
   const std::vector<std::unique_ptr<OutputPort>>& outputs() const { return outputs_; }
 

@@ -40,6 +40,9 @@ struct ScenarioComponent {
   std::string restart = "on_failure";
   /// Seconds between the process's death and its restart (systemd's RestartSec), >= 0.
   double restart_delay = 0.0;
+  /// port -> "file:line: services.x.remap.port" of each `remap` entry, so that a wiring error
+  /// a remap causes names the remap.
+  std::map<std::string, std::string> remap_where;
 };
 
 /// A signal this document reads but does not produce: a part of a scenario (one process's
@@ -106,7 +109,15 @@ struct Scenario {
   std::vector<Expectation> expectations;
   /// Robot -> its source; robots without a `source` key are simulated (absent here).
   std::map<std::string, RobotSource> sources;
+  /// What the components found questionable in their parameters (log_warnings).
+  std::vector<ScenarioWarning> warnings;
 };
+
+/// Logs a scenario's warnings once each: the short text at warn level, with `where_details`
+/// appended when the details are recorded elsewhere (" (details: <run>/summary.md)"), and the
+/// detail at info level. `quiet`: both at info (a process that `plexus launch` started:
+/// the launcher, which loads the whole scenario, has already said it).
+void log_warnings(const Scenario& scenario, const std::string& where_details = {}, bool quiet = false);
 
 /// Steps of a run that goes on until it is stopped (Scenario::until_stopped).
 inline constexpr int64_t kUntilStopped = int64_t{1} << 60;
