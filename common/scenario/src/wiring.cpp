@@ -20,22 +20,55 @@ void check_width(const ScenarioComponent& c, const Port& p) {
                      " fields; a signal has 1 to " + std::to_string(kMaxSignalFields));
 }
 
+// The remap entry of a component's port, if the scenario remapped it (else empty).
+std::string remap_of(const ScenarioComponent& c, const std::string& port) {
+  const auto it = c.remap_where.find(port);
+  return it == c.remap_where.end() ? std::string() : it->second;
+}
+
+// An input nobody produces: when a remap moved its producer away or pointed the reader
+// elsewhere, the error names that remap entry, not the reader.
+[[noreturn]] void no_producer(const std::vector<ScenarioComponent>& components, const ScenarioComponent& reader,
+                              const Port& in) {
+  for (const auto& c : components)
+    for (const auto& out : c.component->outputs())
+      if (const auto where = remap_of(c, out->port()); !where.empty() && c.component->default_signal(out->port()) == in.signal())
+        throw InputError(where + ": sends " + c.component->name() + "'s output '" + out->port() + "' to '" +
+                         out->signal() + "', so nothing produces '" + in.signal() + "', read by " + reader.where +
+                         " (port '" + in.port() + "')");
+  if (const auto where = remap_of(reader, in.port()); !where.empty())
+    throw InputError(where + ": reads port '" + in.port() + "' from '" + in.signal() + "', which no component produces");
+  throw InputError(reader.where + ": input '" + in.signal() + "' (port '" + in.port() +
+                   "') is produced by no component; remap the port or add its producer");
+}
+
 }  // namespace
 
 Wiring wire(const Scenario& scenario) {
   const auto& components = scenario.components;
   Wiring w;
   std::map<std::string, std::size_t> by_name;
+  std::vector<std::pair<std::size_t, std::string>> produced_by;  // per signal: component and port
   w.outputs.resize(components.size());
   w.inputs.resize(components.size());
   for (std::size_t ci = 0; ci < components.size(); ++ci) {
     const auto& c = components[ci];
     for (const auto& out : c.component->outputs()) {
       check_width(c, *out);
-      if (auto it = by_name.find(out->signal()); it != by_name.end())
+      if (auto it = by_name.find(out->signal()); it != by_name.end()) {
+        // Two producers of one signal: a remap that made it so is the culprit, not the other one.
+        const auto& [first_ci, first_port] = produced_by[it->second];
+        if (const auto where = remap_of(c, out->port()); !where.empty())
+          throw InputError(where + ": sends " + c.component->name() + "'s output '" + out->port() + "' to '" +
+                           out->signal() + "', which " + w.signals[it->second].producer + " already produces");
+        if (const auto where = remap_of(components[first_ci], first_port); !where.empty())
+          throw InputError(where + ": sends " + w.signals[it->second].producer + "'s output '" + first_port + "' to '" +
+                           out->signal() + "', which " + c.component->name() + " produces");
         throw InputError(c.where + ": output '" + out->signal() + "' is already produced by " +
                          w.signals[it->second].producer);
+      }
       by_name[out->signal()] = w.signals.size();
+      produced_by.emplace_back(ci, out->port());
       w.outputs[ci].push_back({out.get(), w.signals.size()});
       w.signals.push_back({out->signal(), out->fields(), c.period_steps, c.component->name(),
                            c.kind == ComponentKind::plant, out->message()});
@@ -61,14 +94,13 @@ Wiring wire(const Scenario& scenario) {
         spec.message = in->message();
         it = by_name.emplace(spec.name, w.signals.size()).first;
         w.signals.push_back(std::move(spec));
+        produced_by.emplace_back(ci, in->port());
         // Without a stage the reader reads it as from an earlier stage (no delay).
         const bool staged = ext != scenario.inputs.end() && ext->second.staged;
         w.producer_kind.push_back(staged ? ext->second.stage : ComponentKind::plant);
         w.external.push_back(w.signals.size() - 1);
       }
-      if (it == by_name.end())
-        throw InputError(c.where + ": input '" + in->signal() + "' (port '" + in->port() +
-                         "') is produced by no component; remap the port or add its producer");
+      if (it == by_name.end()) no_producer(components, c, *in);
       InputBinding b;
       b.port = in.get();
       b.signal = it->second;

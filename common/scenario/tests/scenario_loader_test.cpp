@@ -121,13 +121,21 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"service_qos", with("robot: r1", "robot: r1\n    qos: ''"), "t.yaml:20: services.driver.qos: must name a QoS profile"},
         BadCase{"remap_unknown_port", with("robot: r1", "robot: r1\n    remap: {command: r1/cmd2}"),
                 "t.yaml:20: services.driver.remap: 'constant_command' has no port 'command'"},
+        // A remap that takes a signal away from its reader is named, not the reader it starves.
         BadCase{"input_unbound", with("robot: r1", "robot: r1\n    remap: {cmd: r1/cmd2}"),
+                "t.yaml:20: services.driver.remap.cmd: sends driver's output 'cmd' to 'r1/cmd2', so nothing produces "
+                "'r1/cmd', read by t.yaml:8: robots.r1.plant (port 'cmd')"},
+        BadCase{"input_remapped_to_nothing", with("y0: -1.0", "y0: -1.0\n      remap: {cmd: r1/nothing}"),
+                "t.yaml:10: robots.r1.plant.remap.cmd: reads port 'cmd' from 'r1/nothing', which no component produces"},
+        BadCase{"input_without_producer", with("type: constant_command\n    robot: r1\n    v: 1.0\n    omega: 0.0",
+                                               "type: circle_reference\n    robot: r1\n    radius: 1.0\n    speed: 0.5"),
                 "t.yaml:8: robots.r1.plant: input 'r1/cmd' (port 'cmd') is produced by no component; remap the port "
                 "or add its producer"},
         BadCase{"input_field", with("fields: [x, y]", "fields: [x, z]"),
                 "t.yaml:12: robots.r1.sensors.gps: input 'r1/truth/state' has no field 'z' (it has: x, y, theta)"},
         BadCase{"output_twice", with("robot: r1", "robot: r1\n    remap: {cmd: r1/truth/state}"),
-                "t.yaml:18: services.driver: output 'r1/truth/state' is already produced by r1/plant"},
+                "t.yaml:20: services.driver.remap.cmd: sends driver's output 'cmd' to 'r1/truth/state', which r1/plant "
+                "already produces"},
         BadCase{"sensor_name", with("      gps:", "      g.ps:"),
                 "t.yaml:12: robots.r1.sensors.g.ps: invalid sensor name (letters, digits, '_' and '-', at most 64)"},
         BadCase{"metrics_not_list", with("metrics:\n  - {name: final_x, type: value_final, signal: r1/truth/state, field: x}",
