@@ -22,6 +22,7 @@
 #include "launch_plan.hpp"
 #include "realtime_run.hpp"
 #include "log_relay.hpp"
+#include "qos_names.hpp"
 #include "status_console.hpp"
 #include "command.hpp"
 #include "run_result.hpp"
@@ -38,7 +39,11 @@ namespace plexus::cli {
 namespace {
 
 std::atomic<bool> g_stop{false};
-void on_signal(int) { g_stop = true; }
+std::atomic<int> g_signal{0};  // the SIGINT / SIGTERM that interrupted the run (0: none)
+void on_signal(int s) {
+  g_signal = s;
+  g_stop = true;
+}
 
 struct LaunchOptions {
   std::string scenario;
@@ -114,9 +119,7 @@ int run_launch(const LaunchOptions& o) {
     throw InputError("--vendor " + vendor_of.begin()->first + ": no such process (processes: plant_simulator or a service name)");
 
   // Every QoS profile the scenario names must exist before anything starts.
-  for (const auto& c : sc.components)
-    if (!c.qos.empty() && !profiles.contains(c.qos))
-      throw InputError(c.where + ".qos: unknown QoS profile '" + c.qos + "' in " + qos_file);
+  check_qos_names(sc, profiles, qos_file);
 
   std::unique_ptr<SignalRecorder> recorder;
   if (!o.record.empty()) {
@@ -126,7 +129,7 @@ int run_launch(const LaunchOptions& o) {
     recorder = std::make_unique<SignalRecorder>(o.record, qos);  // file errors: exit 2 before anything starts
   }
 
-  init_logging("launch", "", o.quiet ? "error" : "warn");
+  init_logging("plexus launch", "", "warn");  // --quiet drops the status line, not the warnings
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
   std::vector<std::string> common{"--domain", std::to_string(domain), "--qos-file", qos_file,
@@ -159,8 +162,8 @@ int run_launch(const LaunchOptions& o) {
   }
   // The run folder is fixed now: the children's logs go to <run>/logs/<process>.log (on a
   // host without the clock, to <run>-<host>/logs), each line also on stderr, prefixed.
-  const std::string run_dir = !o.out.empty() ? o.out
-                              : scenario::default_run_folder(sc.name).string() + (runs_clock ? "" : "-" + o.host);
+  const std::string run_dir = scenario::prepare_run_folder(o.out, sc.name, runs_clock ? "" : "-" + o.host).string();
+  if (runs_clock) log_scenario_warnings(sc, run_dir);  // once per run: the services' own processes keep quiet
   StatusConsole console(!o.quiet);
   const ConsoleLogging console_logging(console);
   LogRelay relay(std::filesystem::path(run_dir) / "logs", console);
@@ -255,8 +258,15 @@ int run_launch(const LaunchOptions& o) {
   } stop_on_exit{stop_all};
   auto failure = [&](const std::string& what) {
     stop_all();
-    std::fprintf(stderr, "plexus launch: %s\n", died.empty() ? what.c_str() : died.c_str());
+    const std::string why = died.empty() ? what : died;
+    scenario::mark_run_folder(run_dir, "failed: " + why);
+    std::fprintf(stderr, "plexus launch: %s\n", why.c_str());
     return 1;
+  };
+  const int64_t launched_ns = monotonic_ns();
+  auto interrupted = [&] {
+    stop_all();
+    return interrupted_run("plexus launch", g_signal, run_dir, static_cast<double>(monotonic_ns() - launched_ns) * 1e-9);
   };
 
   scenario::RunLog log;
@@ -275,8 +285,10 @@ int run_launch(const LaunchOptions& o) {
       return false;
     };
     while (running() && !g_stop) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    if (g_signal) return interrupted();
     stop_all();
     if (!died.empty()) return failure(died);
+    scenario::mark_run_folder(run_dir, "complete");
     if (!o.quiet) std::fprintf(stderr, "plexus launch --host %s: %zu processes done\n", o.host.c_str(), procs.size());
     return 0;
   }
@@ -289,8 +301,10 @@ int run_launch(const LaunchOptions& o) {
       run_active = false;
       console.clear();
     } catch (const distributed::LockstepError& e) {
+      if (g_signal) return interrupted();
       return failure(e.what());
     }
+    if (g_signal) return interrupted();
     stop_all();
     if (!died.empty()) return failure(died);
     RunSummary summary;
@@ -307,6 +321,7 @@ int run_launch(const LaunchOptions& o) {
     summary.extra["restarts"] = restarts;
     if (!r.fault.empty()) summary.extra["fault"] = r.fault;
     for (const auto& [name, l] : r.latency.items()) {
+      if (l["samples"].get<int>() == 0) continue;  // no sensor sample reached it (an open-loop command)
       char line[256];
       std::snprintf(line, sizeof line, "latency sensor -> %s: p50 %.0f us, p99 %.0f us (%d samples)", name.c_str(),
                     l["p50_us"].get<double>(), l["p99_us"].get<double>(), l["samples"].get<int>());
@@ -353,8 +368,10 @@ int run_launch(const LaunchOptions& o) {
     wall = static_cast<double>(monotonic_ns() - start) * 1e-9;
     console.clear();
   } catch (const distributed::LockstepError& e) {
+    if (g_signal) return interrupted();
     return failure(e.what());
   }
+  if (g_signal) return interrupted();
   stop_all();
   if (recorder) recorder->write();
 
@@ -394,7 +411,7 @@ Command add_launch_command(CLI::App& root) {
   c.app->add_option("--vendor", o->vendors, "Vendor of one process: PROCESS=fast|cyclone (repeatable)");
   c.app->add_option("--domain", o->domain, "DDS domain id (default: the scenario's)")->check(CLI::Range(0, 232));
   c.app->add_option("--set", o->sets, "Override a scenario value: dotted.key=value (repeatable)");
-  c.app->add_option("--out", o->out, "Run folder (default runs/<scenario>-<UTC time>)");
+  c.app->add_option("-o,--out", o->out, "Run folder (default runs/<scenario>-<UTC time>)");
   c.app->add_option("--qos-file", o->qos_file, "QoS profiles (default deploy/qos.yaml)");
   c.app->add_option("--timeout", o->timeout, "Seconds a process may stay silent before the run fails")
       ->check(positive_seconds());

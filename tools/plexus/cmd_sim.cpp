@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "command.hpp"
+#include "qos_names.hpp"
 #include "run_result.hpp"
 #include "seed_sweep.hpp"
 #include "plexus/base/clock.hpp"
@@ -30,7 +31,7 @@ namespace {
 struct SimOptions {
   std::string scenario;
   std::vector<std::string> sets;
-  std::string out;
+  std::string out, qos_file;
   bool json = false;
   bool quiet = false;
   bool list = false;
@@ -55,8 +56,13 @@ int run_sim(const SimOptions& o) {
   for (const auto& [robot, src] : sc.sources)
     throw InputError(src.where + ": robot " + robot + "'s source is " + scenario::to_string(src.type) +
                      "; `plexus sim` simulates every robot: run it with `plexus launch` (clock.mode: realtime)");
+  // The QoS profiles it names, as `plexus launch` checks them (sim itself runs without DDS).
+  const std::string qos_file = o.qos_file.empty() ? rt::default_qos_file() : o.qos_file;
+  check_qos_names(sc, rt::QosProfiles::load(qos_file), qos_file);
   if (o.seeds > 0) return run_seed_sweep({o.scenario, overrides, o.seeds, o.out, o.json, o.quiet});
 
+  const auto dir = scenario::prepare_run_folder(o.out, sc.name);
+  log_scenario_warnings(sc, dir);
   scenario::ProgressBar bar(!o.quiet);
   const int64_t start = monotonic_ns();
   const scenario::RunLog log = scenario::run_scenario(sc, [&](int64_t k, int64_t n) { bar.update(k, n); });
@@ -66,7 +72,7 @@ int run_sim(const SimOptions& o) {
   char headline[256];
   std::snprintf(headline, sizeof headline, "scenario %s: %lld steps, %.3g s simulated in %.3g s", sc.name.c_str(),
                 static_cast<long long>(sc.steps), sc.duration, wall);
-  return finish_run(sc, log, wall, o.out, o.json, o.quiet, {headline, nlohmann::ordered_json::object(), {}});
+  return finish_run(sc, log, wall, dir, o.json, o.quiet, {headline, nlohmann::ordered_json::object(), {}});
 }
 
 }  // namespace
@@ -78,7 +84,8 @@ Command add_sim_command(CLI::App& root) {
   c.app->add_option("scenario", opts->scenario, "Scenario file (YAML, see docs/scenarios.md)");
   c.app->add_option("--set", opts->sets, "Override a scenario value: dotted.key=value (repeatable)")
       ->allow_extra_args(false);
-  c.app->add_option("--out", opts->out, "Run folder (default runs/<scenario>-<UTC time>)");
+  c.app->add_option("-o,--out", opts->out, "Run folder (default runs/<scenario>-<UTC time>)");
+  c.app->add_option("--qos-file", opts->qos_file, "QoS profiles the scenario's `qos` keys name (default deploy/qos.yaml)");
   c.app->add_flag("--json", opts->json, "Print the metrics as one JSON object on stdout");
   c.app->add_flag("--quiet,-q", opts->quiet, "No progress bar, no run folder line");
   c.app->add_option("--seeds", opts->seeds,

@@ -1,5 +1,6 @@
 #include "run_result.hpp"
 
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -11,10 +12,9 @@
 
 namespace plexus::cli {
 
-int finish_run(const scenario::Scenario& sc, const scenario::RunLog& log, double wall_seconds, const std::string& out,
-               bool json, bool quiet, const RunSummary& summary) {
+int finish_run(const scenario::Scenario& sc, const scenario::RunLog& log, double wall_seconds,
+               const std::filesystem::path& dir, bool json, bool quiet, const RunSummary& summary) {
   const scenario::Evaluation ev = scenario::evaluate(sc, log);
-  const auto dir = out.empty() ? scenario::default_run_folder(sc.name) : std::filesystem::path(out);
   scenario::write_run_folder(dir, sc, log, ev, wall_seconds);
   if (!summary.extra.empty()) std::ofstream(dir / "launch.json") << summary.extra.dump(2) << "\n";
   if (json) {
@@ -31,6 +31,18 @@ int finish_run(const scenario::Scenario& sc, const scenario::RunLog& log, double
   if (!quiet) std::fprintf(stderr, "run folder: %s\n", dir.string().c_str());
   for (const auto& f : ev.failures) std::fprintf(stderr, "%s\n", f.c_str());
   return ev.failures.empty() ? 0 : 1;
+}
+
+int interrupted_run(const std::string& command, int signal, const std::filesystem::path& dir, double wall_seconds) {
+  const std::string name = signal == SIGINT ? "SIGINT" : signal == SIGTERM ? "SIGTERM" : "signal " + std::to_string(signal);
+  scenario::mark_run_folder(dir, "interrupted (" + name + ")");
+  std::fprintf(stderr, "%s: interrupted (%s) after %.1f s; run folder %s is incomplete (not scored)\n", command.c_str(),
+               name.c_str(), wall_seconds, dir.string().c_str());
+  return 128 + signal;
+}
+
+void log_scenario_warnings(const scenario::Scenario& sc, const std::filesystem::path& dir) {
+  scenario::log_warnings(sc, " (details: " + (dir / "summary.md").string() + ")");
 }
 
 int print_report(const std::string& run_dir, bool to_stderr) {

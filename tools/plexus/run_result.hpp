@@ -2,6 +2,7 @@
 // evaluate the metrics, write the run folder, print the result.
 #pragma once
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -19,11 +20,20 @@ struct RunSummary {
   std::vector<std::string> lines;                               ///< text lines after the metrics
 };
 
-/// Evaluates the run, writes the run folder (`out`, or runs/<scenario>-<time>), prints the
-/// metrics and digest (text, or one JSON object with `--json`), the run folder line unless
+/// Evaluates the run, writes the run folder `dir` (from scenario::prepare_run_folder), prints
+/// the metrics and digest (text, or one JSON object with `--json`), the run folder line unless
 /// quiet, and every failed expectation. Returns 0 if every expectation holds, else 1.
-int finish_run(const scenario::Scenario& sc, const scenario::RunLog& log, double wall_seconds, const std::string& out,
-               bool json, bool quiet, const RunSummary& summary);
+int finish_run(const scenario::Scenario& sc, const scenario::RunLog& log, double wall_seconds,
+               const std::filesystem::path& dir, bool json, bool quiet, const RunSummary& summary);
+
+/// A run stopped by SIGINT or SIGTERM before its end: the run folder `dir` is marked
+/// "interrupted (SIG...)" (no metrics: a partial run is not scored) and one line says so.
+/// Returns the exit code, 128 + the signal (130 for Ctrl-C), as a shell reports it.
+int interrupted_run(const std::string& command, int signal, const std::filesystem::path& dir, double wall_seconds);
+
+/// Logs the scenario's warnings once, short, pointing at the run folder's summary.md for the
+/// details (written there by finish_run).
+void log_scenario_warnings(const scenario::Scenario& sc, const std::filesystem::path& dir);
 
 /// `plexus report` (and `launch --report`): writes the plots and report.md of a run folder,
 /// prints the metrics-against-expectations table (the paper comparison) and the files.

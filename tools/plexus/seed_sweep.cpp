@@ -63,7 +63,8 @@ nlohmann::ordered_json SeedStatistics::to_json() const {
 
 int run_seed_sweep(const SeedSweepOptions& o) {
   const scenario::Scenario first = scenario::load_scenario(o.scenario, o.overrides);
-  const auto dir = o.out.empty() ? scenario::default_run_folder(first.name + "-seeds") : std::filesystem::path(o.out);
+  const auto dir = scenario::prepare_run_folder(o.out, first.name + "-seeds");
+  scenario::log_warnings(first, " (details: " + (dir / ("seed-" + std::to_string(first.seed)) / "summary.md").string() + ")");
   std::vector<uint64_t> seeds;
   std::vector<std::string> names;
   std::map<std::string, std::vector<double>> values;
@@ -94,8 +95,8 @@ int run_seed_sweep(const SeedSweepOptions& o) {
     stats[name] = summarise(values[name]);
     j[name] = stats[name].to_json();
   }
-  std::filesystem::create_directories(dir);
   std::ofstream(dir / "seeds.json") << j.dump(2) << "\n";
+  scenario::mark_run_folder(dir, "complete");
 
   if (o.json) {
     std::cout << j.dump() << std::endl;

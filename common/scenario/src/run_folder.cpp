@@ -87,6 +87,10 @@ void write_summary(const fs::path& p, const Scenario& sc, const Evaluation& ev, 
   out << "\n" << (ev.failures.empty() ? "All expectations met." : "Expectations failed:") << "\n";
   for (const auto& f : ev.failures) out << "\n- " << f;
   out << "\n";
+  if (!sc.warnings.empty()) {
+    out << "\n## Warnings\n";
+    for (const auto& w : sc.warnings) out << "\n- " << (w.detail.empty() ? w.text : w.detail) << "\n";
+  }
 }
 
 }  // namespace
@@ -98,6 +102,57 @@ fs::path default_run_folder(const std::string& scenario_name) {
   char stamp[32];
   std::strftime(stamp, sizeof stamp, "%Y%m%dT%H%M%SZ", &utc);
   return fs::path("runs") / (scenario_name + "-" + stamp);
+}
+
+bool is_run_folder(const fs::path& dir) {
+  std::error_code ec;
+  if (fs::exists(dir / kRunStatusFile, ec)) return true;
+  // Written before run folders carried a status file: the files every run folder has.
+  return fs::exists(dir / "scenario.resolved.yaml", ec) && fs::exists(dir / "metrics.json", ec);
+}
+
+fs::path prepare_run_folder(const std::string& out, const std::string& scenario_name, const std::string& suffix) {
+  std::error_code ec;
+  fs::path dir;
+  if (!out.empty()) {
+    dir = out;
+    if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
+      throw InputError("--out " + out + ": exists and is not a folder");
+    if (fs::exists(dir, ec) && !fs::is_empty(dir, ec)) {
+      // An earlier run's folder is emptied so that nothing of that run mixes into this one's
+      // report; anything else is the user's and stays untouched.
+      if (!is_run_folder(dir))
+        throw InputError("--out " + out + ": the folder is not empty and is not a plexus run folder (choose another)");
+      for (const auto& entry : fs::directory_iterator(dir, ec)) fs::remove_all(entry.path(), ec);
+      if (ec) throw InputError("--out " + out + ": cannot empty the earlier run's folder: " + ec.message());
+    }
+    fs::create_directories(dir, ec);
+    if (ec) throw InputError("--out " + out + ": cannot create the folder: " + ec.message());
+  } else {
+    // runs/<scenario>-<UTC time>: create_directory is atomic, so two runs started in the same
+    // second (or at once) get two folders, the later one with -2, -3, ...
+    const fs::path base = default_run_folder(scenario_name).string() + suffix;
+    fs::create_directories(base.parent_path(), ec);
+    for (int n = 1; n <= 1000 && dir.empty(); ++n) {
+      const fs::path candidate = n == 1 ? base : fs::path(base.string() + "-" + std::to_string(n));
+      if (fs::create_directory(candidate, ec)) dir = candidate;
+      else if (ec) throw InputError(candidate.string() + ": cannot create the run folder: " + ec.message());
+    }
+    if (dir.empty()) throw InputError(base.string() + ": 1000 run folders of this name already exist");
+  }
+  mark_run_folder(dir, "running");
+  return dir;
+}
+
+void mark_run_folder(const fs::path& dir, const std::string& status) {
+  open_out(dir / kRunStatusFile) << status << '\n';
+}
+
+std::string run_folder_status(const fs::path& dir) {
+  std::ifstream in(dir / kRunStatusFile);
+  std::string line;
+  if (!in || !std::getline(in, line)) return is_run_folder(dir) ? "complete" : "";
+  return line;
 }
 
 std::string signal_file_name(const std::string& signal) {
@@ -126,6 +181,7 @@ void write_run_folder(const fs::path& dir, const Scenario& scenario, const RunLo
     if (!r.series.empty()) write_series_csv(dir / "series" / (name + ".csv"), name, r);
   open_out(dir / "metrics.json") << evaluation.to_json().dump(2) << '\n';
   write_summary(dir / "summary.md", scenario, evaluation, wall_seconds);
+  mark_run_folder(dir, "complete");
 }
 
 }  // namespace plexus::scenario

@@ -20,10 +20,33 @@ namespace plexus::scenario {
 /// `runs/<name>-<UTC yyyymmddThhmmssZ>` under the current directory.
 std::filesystem::path default_run_folder(const std::string& scenario_name);
 
+/// The file in a run folder that says how far the run got: "running", "complete" (it ran to
+/// its end; its expectations may still have failed), "interrupted (SIGINT)", "failed: ...".
+inline constexpr const char* kRunStatusFile = "status";
+
+/// Creates the folder a run writes to, before the run starts. `out` (--out) if given: an
+/// earlier plexus run folder there is emptied first (nothing of that run mixes into this
+/// one's report); a non-empty folder that is not a run folder is refused (InputError).
+/// Otherwise a new `runs/<name>-<UTC time><suffix>`, made unique with -2, -3, ... when runs
+/// start in the same second. The folder is marked "running".
+std::filesystem::path prepare_run_folder(const std::string& out, const std::string& scenario_name,
+                                         const std::string& suffix = {});
+
+/// Writes the run's status (see kRunStatusFile).
+void mark_run_folder(const std::filesystem::path& dir, const std::string& status);
+
+/// The status of a run folder ("complete" for one written before the status file existed;
+/// empty if `dir` is not a run folder).
+std::string run_folder_status(const std::filesystem::path& dir);
+
+/// A folder a plexus run wrote (it has a status file, or the files every run folder has).
+bool is_run_folder(const std::filesystem::path& dir);
+
 /// The file name a signal is stored under in signals/ (without directory).
 std::string signal_file_name(const std::string& signal);
 
-/// Writes the run folder (creating it); throws InputError if it cannot be written.
+/// Writes the run folder (creating it) and marks it "complete"; throws InputError if it
+/// cannot be written.
 void write_run_folder(const std::filesystem::path& dir, const Scenario& scenario, const RunLog& log,
                       const Evaluation& evaluation, double wall_seconds);
 
