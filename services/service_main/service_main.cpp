@@ -31,6 +31,7 @@
 #include "plexus/distributed/service_catalog.hpp"
 #include "plexus/scenario/overrides.hpp"
 #include "services/service_main/service_dds_options.hpp"
+#include "services/service_main/service_help.hpp"
 #include "services/common/standalone_scenario.hpp"
 
 namespace {
@@ -47,8 +48,16 @@ int main(int argc, char** argv) {
   using namespace plexus;
   const std::string about = std::string(kName) +
                             ": a plexus service over DDS, on its own (--robot, --params, --set) or as part of `plexus "
-                            "launch` (--part). Topics: docs/topics.md";
+                            "launch` (--part)";
   CLI::App app{about};
+  const auto& catalog = distributed::service_catalog();
+  std::vector<std::string_view> hosted_types;
+  for (const auto& entry : catalog)
+    if (entry.name == std::string_view(kName)) hosted_types = entry.types;
+  // What it runs and its topics, built only when help is asked for.
+  for (int i = 1; i < argc; ++i)
+    if (std::string_view(argv[i]) == "--help" || std::string_view(argv[i]) == "-h")
+      app.footer(scenario::hosted_help(kName, hosted_types, kPlant));
   app.set_version_flag("--version", std::string(PLEXUS_SERVICE_NAME) + " " + PLEXUS_VERSION);
   std::string part_file, profile = "lockstep", log_level = "warn", mode = "realtime";
   scenario::ServiceDdsOptions net;
@@ -60,9 +69,7 @@ int main(int argc, char** argv) {
   alone.program = kName;
   alone.robot_section = kPlant;
   alone.name = kName;
-  const auto& catalog = distributed::service_catalog();
-  for (const auto& entry : catalog)
-    if (entry.name == std::string_view(kName)) alone.type = std::string(entry.types.front());
+  if (!hosted_types.empty()) alone.type = std::string(hosted_types.front());
   app.add_option("--part", part_file, "This process's part of a scenario (written by plexus launch)");
   app.add_option("--robot", alone.robot, "Robot whose topics it uses (<robot>/<topic>; default r1)");
   app.add_option("--name", alone.name, "Service name (default: the executable's)");
@@ -76,7 +83,7 @@ int main(int argc, char** argv) {
   app.add_option("--set", sets, "Parameter override key=value (with --part: dotted.key=value of the part)");
   net.add_to(app);
   app.add_option("--profile", profile, "QoS profile of the lockstep topics");
-  app.add_option("--timeout", timeout, "Lockstep: seconds to wait for one input before failing")->check(CLI::Validator(
+  app.add_option("--timeout", timeout, "Seconds to wait for one input (lockstep) or for the start signal (--start-signal) before failing")->check(CLI::Validator(
       [](std::string& v) {
         char* end = nullptr;
         const double x = std::strtod(v.c_str(), &end);
@@ -111,6 +118,8 @@ int main(int argc, char** argv) {
     } else {
       sc = scenario::load_standalone(alone, sets, realtime);
     }
+    // A launched process keeps quiet about the scenario's warnings: `plexus launch` said them once.
+    scenario::log_warnings(sc, {}, !part_file.empty());
     // Each executable hosts its own component types (component_host: any).
     std::string hosted_names;
     for (const auto& c : sc.components) {
@@ -135,6 +144,7 @@ int main(int argc, char** argv) {
       ro.loop.priority = priority;
       ro.loop.cpu = cpu;
       ro.wait_for_start = start_signal;
+      if (app.count("--timeout")) ro.start_timeout_s = timeout;  // the longest wait for the start signal too
       distributed::RealtimeHost host(sc, hosted, *participant, profiles, ro);
       const auto r = host.run(g_stop);
       spdlog::info("ran {} ticks: {} holds, {} stale and {} late input reads, {} refused samples, jitter p99 {:.1f} us, "
