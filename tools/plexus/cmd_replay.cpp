@@ -25,6 +25,7 @@
 #include "plexus/base/clock.hpp"
 #include "plexus/base/input_error.hpp"
 #include "plexus/distributed/lockstep.hpp"
+#include "plexus/scenario/evaluation.hpp"
 #include "plexus/distributed/realtime.hpp"
 #include "plexus/msg/messages.hpp"
 #include "recording.hpp"
@@ -36,7 +37,7 @@ namespace {
 struct ReplayOpts {
   DdsOptions dds;
   std::string file, topics, qos_file, profile, clock_topic = "lockstep/clock";
-  double rate_scale = 1.0, rate = 0, wait = 2.0, linger = 1.0;
+  double rate_scale = 1.0, rate = 0, wait = 2.0, linger = 1.0, timeout = 10.0;
   bool fast = false, lockstep = false, verbatim = false, restamp = false, summary = false, json = false;
   std::string service;
 };
@@ -177,17 +178,27 @@ int run_replay(const ReplayOpts& o) {
   const int64_t shift = wall_time_ns() - msgs.front().receive_time_ns;
   const int64_t t0 = msgs.front().receive_time_ns;
   std::size_t i = 0;
+  uint64_t ticks = 0;  // lockstep ticks received
   while (i < msgs.size() && !g_stop) {
     beat(msg::SERVICE_RUNNING);
     // The group published now: one sample, or (lockstep) every sample whose data time is
     // due at the clock's step (header data time <= the step's simulated time).
     std::size_t group_end = i + 1;
     if (o.lockstep) {
+      // A bounded wait for the next tick: a clock that never came or went silent is an error.
       bool got = false;
+      const int64_t give_up = monotonic_ns() + static_cast<int64_t>(o.timeout * 1e9);
       while (!got && !g_stop) {
         if (clock->wait(50'000'000)) got = clock->take(tick, nullptr);
+        if (!got && monotonic_ns() > give_up)
+          throw std::runtime_error(
+              ticks == 0 ? "no lockstep clock on '" + o.clock_topic + "' within " + scenario::format_number(o.timeout) +
+                               " s: nothing runs the clock (`plexus launch SCENARIO --external PROCESS` does)"
+                         : "the lockstep clock on '" + o.clock_topic + "' stopped: no tick for " +
+                               scenario::format_number(o.timeout) + " s after " + std::to_string(ticks) + " ticks");
       }
       if (!got) break;
+      ++ticks;
       const auto& t = *static_cast<const msg::ClockStep*>(tick);
       if (t.step_index() == distributed::kEndOfRun) break;
       group_end = i;
@@ -244,6 +255,9 @@ Command add_replay_command(CLI::App& root) {
                   "follow the lockstep clock on --clock-topic: at each ClockStep, the samples whose header data time "
                   "is due (<= the step's time); stops at the end of the run");
   c.app->add_option("--clock-topic", o->clock_topic, "clock topic for --lockstep")->capture_default_str();
+  c.app->add_option("--timeout", o->timeout, "--lockstep: seconds without a clock tick before giving up")
+      ->capture_default_str()
+      ->check(positive_seconds());
   c.app->add_flag("--verbatim", o->verbatim, "keep the recorded header times (byte-identical samples)");
   c.app->add_flag("--restamp", o->restamp,
                   "shift data times too, to now (a realtime run reads the replay as live samples)");
@@ -252,7 +266,7 @@ Command add_replay_command(CLI::App& root) {
       ->capture_default_str()
       ->check(positive_seconds());
   c.app->add_option("--linger", o->linger, "seconds to keep the writers after the last sample")->capture_default_str();
-  c.app->add_option("--qos", o->profile, "publish with this QoS profile (default: the recorded writers' QoS)");
+  c.app->add_option("--profile", o->profile, "publish with this QoS profile (default: the recorded writers' QoS)");
   c.app->add_option("--qos-file", o->qos_file, "QoS profiles file (default: deploy/qos.yaml)");
   c.app->add_flag("--summary", o->summary, "print the recording's topics, counts and CDR digests; publish nothing");
   c.app->add_flag("--json", o->json, "--summary as JSON");

@@ -11,6 +11,7 @@
 #include "plexus/base/clock.hpp"
 #include "plexus/base/input_error.hpp"
 #include "plexus/distributed/lockstep.hpp"
+#include "plexus/scenario/evaluation.hpp"
 #include "plexus/scenario/step_executor.hpp"
 #include "input_guard.hpp"
 
@@ -181,11 +182,16 @@ RealtimeReport RealtimeHost::run(const std::atomic<bool>& stop) {
   msg::ClockStep go;
   go.sim_time_ns(0);  // alone: the grid starts now
   int64_t next_hb = 0;
+  if (m.opt.wait_for_start)
+    spdlog::info("{}: waiting up to {} s for the start signal of plexus launch", m.opt.service,
+                 scenario::format_number(m.opt.start_timeout_s));
   while (m.opt.wait_for_start && !m.start.take(go)) {
     if (stop) return m.report;
     const int64_t now = monotonic_ns();
-    if (now > give_up) throw InputError(m.opt.service + ": no start signal from the launcher within " +
-                                        std::to_string(m.opt.start_timeout_s) + " s");
+    if (now > give_up)
+      throw InputError(m.opt.service + ": no start signal from plexus launch within " +
+                       scenario::format_number(m.opt.start_timeout_s) +
+                       " s (--start-signal waits for a launcher; without it the service starts at once)");
     if (now >= next_hb) {
       m.publish_heartbeat(msg::SERVICE_WAITING, {});
       next_hb = now + 200'000'000;
