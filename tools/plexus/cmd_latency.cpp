@@ -14,6 +14,7 @@
 #include <regex>
 #include <set>
 #include <sstream>
+#include <exception>
 #include <thread>
 
 #include "child_process.hpp"
@@ -261,17 +262,23 @@ int run_loop(const LoopOpts& o) {
   std::vector<double> lateness(n);  // preallocated: the loop only stores
   std::string refused;
   // The loop runs in its own thread so the real-time settings do not stick to this one.
+  std::exception_ptr failed;  // a bad option the loop refuses (a CPU that does not exist): exit 2 here
   std::thread th([&] {
-    rt::PeriodicLoop loop({.rate_hz = o.rate, .priority = o.priority, .cpu = o.cpu, .lock_memory = true});
-    refused = loop.refused();
-    loop.start();
-    for (std::size_t i = 0; i < n; ++i) {
-      const auto t = loop.wait_next();
-      lateness[i] = static_cast<double>(t.wake_ns - t.deadline_ns) * 1e-3;
-      loop.end_compute();
+    try {
+      rt::PeriodicLoop loop({.rate_hz = o.rate, .priority = o.priority, .cpu = o.cpu, .lock_memory = true});
+      refused = loop.refused();
+      loop.start();
+      for (std::size_t i = 0; i < n; ++i) {
+        const auto t = loop.wait_next();
+        lateness[i] = static_cast<double>(t.wake_ns - t.deadline_ns) * 1e-3;
+        loop.end_compute();
+      }
+    } catch (...) {
+      failed = std::current_exception();
     }
   });
   th.join();
+  if (failed) std::rethrow_exception(failed);
   Percentiles a = percentiles(lateness);
   const bool prio_refused = refused.find("priority") != std::string::npos || refused.find("SCHED_FIFO") != std::string::npos;
 
@@ -521,7 +528,7 @@ Command add_latency_command(CLI::App& root) {
   ping->add_option("--rate", po->rate, "pings per second (0: back to back)")->capture_default_str();
   ping->add_option("--count", po->count, "measured round trips")->capture_default_str();
   ping->add_option("--domain", po->domain, "DDS domain (the baseline uses domain + 1)")->capture_default_str();
-  ping->add_option("--out", po->out, "directory for the PNG histogram and JSON");
+  ping->add_option("-o,--out", po->out, "directory for the PNG histogram and JSON");
   ping->add_flag("--no-baseline", po->no_baseline, "skip the vendor baseline");
   ping->add_flag("--json", po->json, "one JSON object");
 
@@ -531,7 +538,7 @@ Command add_latency_command(CLI::App& root) {
   loop->add_option("--duration", lo->duration, "seconds")->capture_default_str();
   loop->add_option("--priority", lo->priority, "SCHED_FIFO priority (0: none)")->capture_default_str();
   loop->add_option("--cpu", lo->cpu, "pin to this CPU (-1: no affinity)")->capture_default_str();
-  loop->add_option("--out", lo->out, "directory for the PNG histogram");
+  loop->add_option("-o,--out", lo->out, "directory for the PNG histogram");
   loop->add_flag("--no-cyclictest", lo->no_cyclictest, "skip the cyclictest baseline");
   loop->add_flag("--json", lo->json, "one JSON object");
 
@@ -547,7 +554,7 @@ Command add_latency_command(CLI::App& root) {
       ->check(CLI::IsMember({"auto", "origin_time", "data_time"}));
   pipe->add_option("--duration", pp->duration, "--live: seconds to record")->capture_default_str();
   add_dds_options(pipe, pp->dds);
-  pipe->add_option("--out", pp->out, "directory for the PNG histogram");
+  pipe->add_option("-o,--out", pp->out, "directory for the PNG histogram");
   pipe->add_flag("--json", pp->json, "one JSON object");
 
   c.run = [po, lo, pp, ping, loop, pipe] {

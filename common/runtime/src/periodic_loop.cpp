@@ -2,6 +2,7 @@
 
 #include <sched.h>
 #include <sys/mman.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -41,24 +42,34 @@ PeriodicLoop::PeriodicLoop(const LoopOptions& o) {
   compute_.assign(o.stats_window, 0);
   scratch_.assign(o.stats_window, 0);
 
-  auto refuse = [this](const std::string& what, int err) {
+  // A refusal the system may lift: a warning, with the advice that fits why it was refused.
+  auto refuse = [this](const std::string& what, int err, const char* capability, const char* limit) {
     const std::string msg = what + " refused (" + std::strerror(err) + ")";
     refused_ += (refused_.empty() ? "" : "; ") + msg;
-    spdlog::warn("{}: the loop runs without it. Grant CAP_SYS_NICE / CAP_IPC_LOCK or raise rtprio and memlock "
-                 "in /etc/security/limits.conf to enable it.",
-                 msg);
+    if (err == EPERM || err == EACCES)
+      spdlog::warn("{}: the loop runs without it. Grant {} or raise {} in /etc/security/limits.conf to enable it.", msg,
+                   capability, limit);
+    else
+      spdlog::warn("{}: the loop runs without it.", msg);
   };
-  if (o.lock_memory && mlockall(MCL_CURRENT | MCL_FUTURE) != 0) refuse("mlockall", errno);
+  // A CPU that does not exist is a wrong argument, not a missing permission.
+  const long cpus = sysconf(_SC_NPROCESSORS_CONF);
+  if (o.cpu >= 0 && cpus > 0 && o.cpu >= cpus)
+    throw InputError("loop CPU " + std::to_string(o.cpu) + ": no such CPU (this machine has CPUs 0.." +
+                     std::to_string(cpus - 1) + ")");
+  if (o.lock_memory && mlockall(MCL_CURRENT | MCL_FUTURE) != 0) refuse("mlockall", errno, "CAP_IPC_LOCK", "memlock");
   if (o.cpu >= 0) {
     cpu_set_t set;
     CPU_ZERO(&set);
     CPU_SET(o.cpu, &set);
-    if (sched_setaffinity(0, sizeof(set), &set) != 0) refuse("CPU affinity to CPU " + std::to_string(o.cpu), errno);
+    if (sched_setaffinity(0, sizeof(set), &set) != 0)
+      refuse("CPU affinity to CPU " + std::to_string(o.cpu), errno, "CAP_SYS_NICE", "rtprio");
   }
   if (o.priority > 0) {
     sched_param sp{};
     sp.sched_priority = o.priority;
-    if (sched_setscheduler(0, SCHED_FIFO, &sp) != 0) refuse("SCHED_FIFO priority " + std::to_string(o.priority), errno);
+    if (sched_setscheduler(0, SCHED_FIFO, &sp) != 0)
+      refuse("SCHED_FIFO priority " + std::to_string(o.priority), errno, "CAP_SYS_NICE", "rtprio");
   }
 }
 
