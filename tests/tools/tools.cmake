@@ -88,7 +88,7 @@ add_test(NAME tools.replay_rate_fast
          COMMAND ${TOOLS_DIR}/record_replay.sh ${BIN_DIR} fast 220 ${CMAKE_BINARY_DIR}/test-runs/tools/replay_rate_fast --rate 200)
 add_test(NAME tools.replay_fast_cyclone
          COMMAND ${TOOLS_DIR}/record_replay.sh ${BIN_DIR} cyclone 221 ${CMAKE_BINARY_DIR}/test-runs/tools/replay_fast_cyclone
-                 --fast --qos lockstep)
+                 --fast --profile lockstep)
 # Replay in lockstep standing in for the plant simulator: the services must compute exactly
 # the recorded run's signals. Both vendors, and a Cyclone replay feeding Fast DDS services.
 foreach(pair "fast;fast;222" "cyclone;cyclone;223" "fast;cyclone;224")

@@ -39,7 +39,7 @@ struct TopicReader {
 
 int run_record(const RecordOpts& o) {
   rt::parse_vendor(o.dds.dds);
-  if (o.out.empty()) throw InputError("-o/--output: a recording file is required");
+  if (o.out.empty()) throw InputError("-o/--out: a recording file is required");
   if (!(o.duration >= 0)) throw InputError("--duration: must be >= 0 seconds");
   if (o.count < 0) throw InputError("--count: must be >= 0");
   if (!(o.wait >= 0 && o.wait <= 600)) throw InputError("--wait: must be in 0..600 seconds");
@@ -170,14 +170,14 @@ Command add_record_command(CLI::App& root) {
   Command c;
   c.app = root.add_subcommand("record", "Record topics to a SQLite file (CDR + receive and header times)");
   add_dds_options(c.app, o->dds);
-  c.app->add_option("-o,--output", o->out, "recording file to create (replaced, once the recording succeeds, if it exists)")->required();
+  c.app->add_option("-o,--out", o->out, "recording file to create (replaced, once the recording succeeds, if it exists)")->required();
   c.app->add_option("--topics", o->topics, "comma-separated topics (default: every topic with a writer)");
   c.app->add_option("--duration", o->duration, "stop after S seconds (0: until Ctrl-C or --count)");
   c.app->add_option("--count", o->count, "stop after N samples in total (0: no limit)");
   c.app->add_option("--wait", o->wait, "--topics: seconds to wait for their writers to be discovered")
       ->capture_default_str()
       ->check(positive_seconds());
-  c.app->add_option("--qos", o->profile, "subscribe with this QoS profile (default: one matching every writer)");
+  c.app->add_option("--profile", o->profile, "subscribe with this QoS profile (default: one matching every writer)");
   c.app->add_option("--qos-file", o->qos_file, "QoS profiles file (default: deploy/qos.yaml)");
   c.run = [o] { return run_record(*o); };
   return c;

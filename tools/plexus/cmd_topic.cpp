@@ -300,7 +300,7 @@ Command add_topic_command(CLI::App& root) {
       s->add_option("--type", o->type, "message type (plexus::msg::Pose2D or Pose2D); default: the writers' type");
       s->add_option("--count", o->count, "stop after N samples (0: no limit)");
       s->add_option("--duration", o->duration, "stop after S seconds (0: no limit)");
-      s->add_option("--qos", o->profile, "subscribe with this QoS profile (default: one matching every writer)");
+      s->add_option("--profile", o->profile, "subscribe with this QoS profile (default: one matching every writer)");
       s->add_option("--qos-file", o->qos_file, "QoS profiles file (default: deploy/qos.yaml)");
     }
   };
