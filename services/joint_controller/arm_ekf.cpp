@@ -22,8 +22,13 @@ namespace alg = plexus::algorithms;
 
 alg::FlexibleJointEkfParams read_ekf(const ComponentConfig& c) {
   const YamlMap& p = c.params();
-  alg::FlexibleJointEkfParams e;
+  const std::string tuning = p.optional<std::string>("tuning", "robust");
+  if (tuning != "robust" && tuning != "paper") p.fail("tuning", "must be robust or paper");
+  alg::FlexibleJointEkfParams e = tuning == "robust" ? alg::FlexibleJointEkfParams::robust() : alg::FlexibleJointEkfParams::paper();
   e.model = read_model(p);
+  e.disturbance = p.optional<bool>("disturbance", e.disturbance);
+  e.q_disturbance = p.optional<double>("q_disturbance", e.q_disturbance);
+  e.q_tau_rate = p.optional<double>("q_tau_rate", e.q_tau_rate);
   e.q = p.optional<double>("q", e.q);
   e.r = p.optional<double>("r", e.r);
   e.p0 = p.optional<double>("p0", e.p0);

@@ -36,6 +36,7 @@ alg::VdcParams read_vdc(const ComponentConfig& c) {
   v.theta_lower = p.optional<double>("theta_lower", v.theta_lower);
   v.theta_upper = p.optional<double>("theta_upper", v.theta_upper);
   v.theta_initial = p.optional<double>("theta_initial", v.theta_initial);
+  v.disturbance_compensation = p.optional<double>("disturbance_compensation", v.disturbance_compensation);
   v.step = c.period();
   return v;
 }

@@ -1,5 +1,6 @@
 #include "plexus/algorithms/arm/flexible_joint_ekf.hpp"
 
+#include <cstdlib>
 #include <string>
 
 #include "plexus/algorithms/core/validation.hpp"
@@ -9,7 +10,16 @@ namespace {
 constexpr const char* kWhere = "flexible_joint_ekf";
 }
 
-FlexibleJointEkf::FlexibleJointEkf(const FlexibleJointEkfParams& p) : params_(p), n_(p.model.dof()), dyn_(p.model) {
+FlexibleJointEkfParams FlexibleJointEkfParams::paper() { return {}; }
+
+FlexibleJointEkfParams FlexibleJointEkfParams::robust() {
+  FlexibleJointEkfParams p;
+  p.disturbance = true;
+  return p;
+}
+
+FlexibleJointEkf::FlexibleJointEkf(const FlexibleJointEkfParams& p)
+    : params_(p), n_(p.model.dof()), m_((p.disturbance ? 5 : 4) * n_), iphi_(m_ - 2 * n_), dyn_(p.model) {
   validation::require_positive(kWhere, "q", p.q);
   validation::require_positive(kWhere, "r", p.r);
   validation::require_positive(kWhere, "p0", p.p0);
@@ -17,12 +27,18 @@ FlexibleJointEkf::FlexibleJointEkf(const FlexibleJointEkfParams& p) : params_(p)
   validation::require_positive(kWhere, "step", p.step);
   validation::require_positive(kWhere, "accel_filter_hz", p.accel_filter_hz);
   validation::require_positive(kWhere, "fd_step", p.fd_step);
+  if (p.disturbance) validation::require_positive(kWhere, "q_disturbance", p.q_disturbance);
+  if (p.q_tau_rate != 0.0) validation::require_positive(kWhere, "q_tau_rate", p.q_tau_rate);
   k_.resize(n_), j_.resize(n_), f_.resize(n_);
   for (int i = 0; i < n_; ++i) {
     const ArmJoint& jt = p.model.joints[static_cast<std::size_t>(i)];
     k_(i) = jt.stiffness, j_(i) = jt.motor_inertia, f_(i) = jt.friction;
   }
-  const int m = 4 * n_;
+  const int m = m_;
+  qdiag_ = Vector::Constant(m, p.q);
+  if (p.q_tau_rate > 0.0) qdiag_.segment(n_, n_).setConstant(p.q_tau_rate);
+  if (p.disturbance) qdiag_.segment(2 * n_, n_).setConstant(p.q_disturbance);
+  d_ = Vector::Zero(n_);
   for (Vector* v : {&x_, &k1_, &k2_, &k3_, &k4_, &xt_}) *v = Vector::Zero(m);
   for (Matrix* a : {&p_, &fjac_, &p1_, &p2_, &p3_, &p4_, &pt_, &tmp_}) *a = Matrix::Zero(m, m);
   for (Vector* v : {&q_, &qd_, &qdd_, &qdd_plus_, &qdd_minus_, &tau_, &qp_, &jq_, &jqd_, &jtau_}) *v = Vector::Zero(n_);
@@ -34,39 +50,52 @@ FlexibleJointEkf::FlexibleJointEkf(const FlexibleJointEkfParams& p) : params_(p)
 }
 
 void FlexibleJointEkf::reset(const Vector& x0) {
-  if (x0.size() != 4 * n_) validation::fail(kWhere, "x0 size", "4 n = " + std::to_string(4 * n_), static_cast<double>(x0.size()));
-  x_ = x0;
-  p_ = params_.p0 * Matrix::Identity(4 * n_, 4 * n_);
+  if (x0.size() != 4 * n_ && x0.size() != m_) {
+    validation::fail(kWhere, "x0 size", "4 n = " + std::to_string(4 * n_) + (m_ != 4 * n_ ? " or 5 n = " + std::to_string(m_) : ""),
+                     static_cast<double>(x0.size()));
+  }
+  if (x0.size() == m_) {
+    x_ = x0;
+  } else {
+    x_.setZero();
+    x_.head(2 * n_) = x0.head(2 * n_);
+    x_.tail(2 * n_) = x0.tail(2 * n_);
+  }
+  p_ = params_.p0 * Matrix::Identity(m_, m_);
   accel_.reset();
   has_y_prev_ = false;
   link_state(x_);
   fb_.q = q_, fb_.qd = qd_, fb_.qdd.setZero(), fb_.qddd.setZero();
   fb_.tau = x_.segment(0, n_), fb_.taud = x_.segment(n_, n_);
-  fb_.phi = x_.segment(2 * n_, n_), fb_.phid = x_.segment(3 * n_, n_);
+  fb_.phi = x_.segment(iphi_, n_), fb_.phid = x_.segment(iphi_ + n_, n_);
+  if (params_.disturbance) d_ = x_.segment(2 * n_, n_);
 }
 
 void FlexibleJointEkf::link_state(const Vector& x) {
-  // Eq. (17): q = phi - K^{-1} tau, q' = phi' - K^{-1} tau'.
-  q_ = x.segment(2 * n_, n_) - x.segment(0, n_).cwiseQuotient(k_);
-  qd_ = x.segment(3 * n_, n_) - x.segment(n_, n_).cwiseQuotient(k_);
+  // Eq. (17): q = phi - K^{-1} tau, q' = phi' - K^{-1} tau'; tau_ = tau + d drives the links.
+  q_ = x.segment(iphi_, n_) - x.segment(0, n_).cwiseQuotient(k_);
+  qd_ = x.segment(iphi_ + n_, n_) - x.segment(n_, n_).cwiseQuotient(k_);
+  tau_ = x.segment(0, n_);
+  if (params_.disturbance) tau_ += x.segment(2 * n_, n_);
 }
 
 void FlexibleJointEkf::dynamics(const Vector& x, const Vector& u, Vector& dx) {
   link_state(x);
-  tau_ = x.segment(0, n_);
   dyn_.forward_dynamics(q_, qd_, tau_, qdd_);
   // phi'' = J^{-1} (u - tau - F phi'), stored in the phi' rows, then tau'' = K (phi'' - q'') (eq. (35)).
-  dx.segment(3 * n_, n_) = (u - tau_ - f_.cwiseProduct(x.segment(3 * n_, n_))).cwiseQuotient(j_);
-  dx.segment(n_, n_) = k_.cwiseProduct(dx.segment(3 * n_, n_) - qdd_);
+  const int ip = iphi_, iv = iphi_ + n_;
+  dx.segment(iv, n_) = (u - x.segment(0, n_) - f_.cwiseProduct(x.segment(iv, n_))).cwiseQuotient(j_);
+  dx.segment(n_, n_) = k_.cwiseProduct(dx.segment(iv, n_) - qdd_);
   dx.segment(0, n_) = x.segment(n_, n_);
-  dx.segment(2 * n_, n_) = x.segment(3 * n_, n_);
+  dx.segment(ip, n_) = x.segment(iv, n_);
+  if (params_.disturbance) dx.segment(2 * n_, n_).setZero();  // d' = 0 (a random walk)
 }
 
 void FlexibleJointEkf::link_jerk(const Vector& x) {
   // Header comment: q''' by a central difference of the forward dynamics along (q', q'', tau')
   // at x (q_, qd_, qdd_, tau_ hold the link state of x from dynamics()).
   constexpr double e = 1e-5;  // s
-  const auto taud = x.segment(n_, n_);
+  const auto taud = x.segment(n_, n_);  // d' = 0
   for (const double sign : {1.0, -1.0}) {
     jq_ = q_ + (sign * e) * qd_;
     jqd_ = qd_ + (sign * e) * qdd_;
@@ -80,7 +109,6 @@ void FlexibleJointEkf::jacobian(const Vector& x, const Vector& /*u*/, Matrix& f)
   const int n = n_;
   f.setZero();
   link_state(x);
-  tau_ = x.segment(0, n);
   dyn_.forward_dynamics(q_, qd_, tau_, qdd_);
   minv_ = dyn_.last_mass_factor().solve(Matrix::Identity(n, n));
   a_.setZero();
@@ -102,19 +130,21 @@ void FlexibleJointEkf::jacobian(const Vector& x, const Vector& /*u*/, Matrix& f)
       column(true, c, b_);
     }
   }
+  const int ip = iphi_, iv = iphi_ + n;
   for (int i = 0; i < n; ++i) {
     f(i, n + i) = 1.0;          // d tau / d tau'
-    f(2 * n + i, 3 * n + i) = 1.0;  // d phi / d phi'
-    f(3 * n + i, i) = -1.0 / j_(i);                 // d phi'' / d tau
-    f(3 * n + i, 3 * n + i) = -f_(i) / j_(i);       // d phi'' / d phi'
-    f(n + i, 3 * n + i) = -k_(i) * f_(i) / j_(i);   // K d phi'' / d phi'
+    f(ip + i, iv + i) = 1.0;  // d phi / d phi'
+    f(iv + i, i) = -1.0 / j_(i);                 // d phi'' / d tau
+    f(iv + i, iv + i) = -f_(i) / j_(i);       // d phi'' / d phi'
+    f(n + i, iv + i) = -k_(i) * f_(i) / j_(i);   // K d phi'' / d phi'
     f(n + i, i) = -k_(i) / j_(i);                    // K d phi'' / d tau
     for (int c = 0; c < n; ++c) {
       // -K dq''/d(.) through tau directly (M^{-1}) and through q = phi - tau/K, q' = phi' - tau'/K.
       f(n + i, c) += -k_(i) * minv_(i, c) + k_(i) * a_(i, c) / k_(c);
       f(n + i, n + c) += k_(i) * b_(i, c) / k_(c);
-      f(n + i, 2 * n + c) += -k_(i) * a_(i, c);
-      f(n + i, 3 * n + c) += -k_(i) * b_(i, c);
+      f(n + i, ip + c) += -k_(i) * a_(i, c);
+      f(n + i, iv + c) += -k_(i) * b_(i, c);
+      if (params_.disturbance) f(n + i, 2 * n + c) = -k_(i) * minv_(i, c);  // -K dq''/dd
     }
   }
 }
@@ -124,7 +154,7 @@ void FlexibleJointEkf::riccati(const Matrix& p, Matrix& dp) {
   const int m = 2 * n_;
   tmp_.noalias() = fjac_ * p;
   dp = tmp_ + tmp_.transpose();
-  dp.diagonal().array() += params_.q;
+  dp.diagonal() += qdiag_;
   dp.noalias() -= (1.0 / params_.r) * (p.rightCols(m) * p.bottomRows(m));
 }
 
@@ -167,12 +197,17 @@ void FlexibleJointEkf::update(const Vector& u, const Vector& y, double dt) {
   y_prev_ = y;
   has_y_prev_ = true;
   dynamics(x_, u, k1_);  // also sets q_, qd_ (eq. (17)) and the model's q'' in qdd_
+  if (std::getenv("ARMX_NOD_FB") && params_.disturbance) {
+    tau_ = x_.segment(0, n_);
+    dyn_.forward_dynamics(q_, qd_, tau_, qdd_);
+  }
   fb_.q = q_, fb_.qd = qd_;
   const Vector& differentiated = accel_.update(qd_);  // section 4: q'' by a filtered differentiator of q'
   fb_.qdd = params_.acceleration == LinkAcceleration::kModel ? qdd_ : differentiated;
   link_jerk(x_);
   fb_.tau = x_.segment(0, n_), fb_.taud = x_.segment(n_, n_);
-  fb_.phi = x_.segment(2 * n_, n_), fb_.phid = x_.segment(3 * n_, n_);
+  fb_.phi = x_.segment(iphi_, n_), fb_.phid = x_.segment(iphi_ + n_, n_);
+  if (params_.disturbance) d_ = x_.segment(2 * n_, n_);
 }
 
 }  // namespace plexus::algorithms

@@ -88,6 +88,9 @@ VdcController::VdcController(const VdcParams& p) : params_(p), n_(p.model.dof())
   }
   validation::require_positive(kWhere, "derivative_step", p.derivative_step);
   validation::require_positive(kWhere, "step", p.step);
+  if (!(p.disturbance_compensation >= 0.0 && p.disturbance_compensation <= 1.0)) {
+    validation::fail(kWhere, "disturbance_compensation", "in [0, 1]", p.disturbance_compensation);
+  }
 
   links_.resize(static_cast<std::size_t>(n_));
   stiffness_.resize(n_), motor_inertia_.resize(n_), friction_.resize(n_);
@@ -105,7 +108,7 @@ VdcController::VdcController(const VdcParams& p) : params_(p), n_(p.model.dof())
   }
   const Eigen::VectorXd z = Eigen::VectorXd::Zero(n_);
   qr_d_ = qr_dd_ = qr_ddd_ = qr_dddd_ = tau_od_ = ts_ = ts_rate_ = u_ = z;
-  q_e_ = qd_e_ = qr_d_e_ = qr_dd_e_ = tau_od_1_ = tau_od_2_ = z;
+  q_e_ = qd_e_ = qr_d_e_ = qr_dd_e_ = tau_od_1_ = tau_od_2_ = dist_ = z;
   reset();
 }
 
@@ -182,6 +185,11 @@ const Eigen::VectorXd& VdcController::step(const ArmReferenceSample& ref, const 
   // tau_od' and tau_od'' (header comment): the link recursion at t = e and 2e along the
   // second-order Taylor path of (q, q', q_r', q_r''), then at t = 0 last, so the links keep
   // the nominal pass for the adaptation below.
+  if (p.disturbance_compensation > 0.0) {
+    // d^ = ID_theta^(q, q', q'') - tau (the link recursion with q_r' = q', q_r'' = q'').
+    required_link_torques(fb.q, fb.qd, fb.qd, fb.qdd, dist_);
+    dist_ = p.disturbance_compensation * (dist_ - fb.tau);
+  }
   const double e = p.derivative_step;
   for (const int m : {1, 2}) {
     const double t = m * e, t2 = 0.5 * t * t;
@@ -201,7 +209,7 @@ const Eigen::VectorXd& VdcController::step(const ArmReferenceSample& ref, const 
     const double ts_acc = (ts_(i) > p.ts_min(i) && ts_(i) < p.ts_max(i)) ? p.k_i(i) * ea : 0.0;
     const double taud_od = (4.0 * tau_od_1_(i) - 3.0 * tau_od_(i) - tau_od_2_(i)) / (2.0 * e);
     const double taudd_od = (tau_od_(i) - 2.0 * tau_od_1_(i) + tau_od_2_(i)) / (e * e);
-    const double tau_r = tau_od_(i) + p.k_p(i) * ev + ts_(i);                                   // (20)
+    const double tau_r = tau_od_(i) - dist_(i) + p.k_p(i) * ev + ts_(i);                       // (20)
     const double taud_r = taud_od + p.k_p(i) * ea + ts_rate_(i);
     const double taudd_r = taudd_od + p.k_p(i) * ej + ts_acc;
     const double phi_d = fb.q(i) + tau_r / stiffness_(i);                                       // (22)

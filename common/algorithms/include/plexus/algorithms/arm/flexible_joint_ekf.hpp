@@ -33,6 +33,14 @@
 // central difference of the forward dynamics along the estimate's own derivative,
 //   q''' = [FD(q + e q', q' + e q'', tau + e tau') - FD(q - e q', q' - e q'', tau - e tau')] / 2e,
 // e = 1e-5 s, with q'' the model's (algebraic, no lag; the link side of eq. (35)).
+//
+// Disturbance state (not in the paper; issue 18, docs/algorithms/arm.md "Model error"):
+// with `disturbance` on, x = [tau, tau', d, phi, phi'] (5n) where d is a lumped link-side
+// torque the nominal model misses (payload, mass and inertia errors):
+//   M(q) q'' + C(q, q') q' + G(q) = tau + d,   d' = w_d,  E[w_d w_d^T] = q_disturbance I,
+// so q'' = M^{-1} (tau + d - C q' - G) everywhere above (tau'', A, B, the feedback's q'' and
+// q'''), and df2/dd = -K M^{-1}. The measured states stay last, so H = [0 I] as before.
+// `q_tau_rate` (> 0) replaces q on the tau' rows when set (Q = diag(q, q_tau_rate, q_d, q, q)).
 #pragma once
 
 #include <Eigen/Core>
@@ -58,6 +66,15 @@ struct FlexibleJointEkfParams {
   double fd_step = 1e-6;          ///< rad, rad/s: central-difference step of A and B, > 0
   EkfJacobian jacobian = EkfJacobian::kFull;
   LinkAcceleration acceleration = LinkAcceleration::kModel;
+  bool disturbance = false;      ///< augment x with a link-side disturbance torque d per joint (header)
+  double q_disturbance = 1e4;    ///< (N m)^2/s: process noise of d, > 0 (used with `disturbance`)
+  double q_tau_rate = 0.0;       ///< process noise of the tau' rows; 0: the same as q; else > 0
+
+  /// Paper 004 section 4.2: Q = 4 I, R = 0.1 I, P(0) = I, no disturbance state (the defaults).
+  static FlexibleJointEkfParams paper();
+  /// The robust tuning (issue 18; docs/algorithms/arm.md "Model error"): the paper's filter
+  /// plus the disturbance state, for an arm whose model is wrong.
+  static FlexibleJointEkfParams robust();
 };
 
 class FlexibleJointEkf {
@@ -69,7 +86,10 @@ class FlexibleJointEkf {
   explicit FlexibleJointEkf(const FlexibleJointEkfParams& params);
 
   int dof() const { return n_; }
-  /// Sets x^ = [tau, tau', phi, phi'] and P = p0 I; resets the q'' differentiator.
+  /// Length of x: 4 n, or 5 n with the disturbance state.
+  int state_size() const { return m_; }
+  /// Sets x^ = [tau, tau', phi, phi'] (d = 0 with the disturbance state), or the whole
+  /// [tau, tau', d, phi, phi'], and P = p0 I; resets the q'' differentiator.
   void reset(const Vector& x0);
 
   /// Integrates the observer over dt with input u (held) and measurement y = [phi, phi'].
@@ -85,6 +105,8 @@ class FlexibleJointEkf {
   const Matrix& covariance() const { return p_; }
   /// Link- and motor-side feedback from the estimate (q, q', q'', q''', tau, tau', phi, phi').
   const ArmFeedback& feedback() const { return fb_; }
+  /// The disturbance estimate d^ (zero without the disturbance state).
+  const Vector& disturbance() const { return d_; }
 
  private:
   void link_state(const Vector& x);  // fills q_, qd_ from x
@@ -93,11 +115,15 @@ class FlexibleJointEkf {
 
   FlexibleJointEkfParams params_;
   int n_;
+  int m_;        ///< state size (4n or 5n)
+  int iphi_;     ///< offset of phi in x (2n or 3n); phi' follows
+  Vector qdiag_; ///< diagonal of Q
+  Vector d_;     ///< d^ (zero without the disturbance state)
   ArmRigidBodyDynamics dyn_;
   Vector k_, j_, f_;
   Vector x_, k1_, k2_, k3_, k4_, xt_, innovation_;
   Matrix p_, fjac_, p1_, p2_, p3_, p4_, pt_, tmp_;
-  Vector q_, qd_, qdd_, qdd_plus_, qdd_minus_, tau_, qp_;
+  Vector q_, qd_, qdd_, qdd_plus_, qdd_minus_, tau_, qp_;  ///< tau_: tau + d, the torque on the links
   Vector jq_, jqd_, jtau_;  ///< shifted link state of the jerk difference
   Matrix minv_, a_, b_;
   Vector y_prev_;
