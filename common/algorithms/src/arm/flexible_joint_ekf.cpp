@@ -1,6 +1,5 @@
 #include "plexus/algorithms/arm/flexible_joint_ekf.hpp"
 
-#include <cstdlib>
 #include <string>
 
 #include "plexus/algorithms/core/validation.hpp"
@@ -43,7 +42,7 @@ FlexibleJointEkf::FlexibleJointEkf(const FlexibleJointEkfParams& p)
   for (Matrix* a : {&p_, &fjac_, &p1_, &p2_, &p3_, &p4_, &pt_, &tmp_}) *a = Matrix::Zero(m, m);
   for (Vector* v : {&q_, &qd_, &qdd_, &qdd_plus_, &qdd_minus_, &tau_, &qp_, &jq_, &jqd_, &jtau_}) *v = Vector::Zero(n_);
   innovation_ = y_prev_ = Vector::Zero(2 * n_);
-  minv_ = a_ = b_ = Matrix::Zero(n_, n_);
+  minv_ = a_ = b_ = did_q_ = did_qd_ = Matrix::Zero(n_, n_);
   fb_ = ArmFeedback::zero(n_);
   accel_.configure(n_, p.accel_filter_hz, p.step);
   reset(Vector::Zero(m));
@@ -92,17 +91,11 @@ void FlexibleJointEkf::dynamics(const Vector& x, const Vector& u, Vector& dx) {
 }
 
 void FlexibleJointEkf::link_jerk(const Vector& x) {
-  // Header comment: q''' by a central difference of the forward dynamics along (q', q'', tau')
-  // at x (q_, qd_, qdd_, tau_ hold the link state of x from dynamics()).
-  constexpr double e = 1e-5;  // s
-  const auto taud = x.segment(n_, n_);  // d' = 0
-  for (const double sign : {1.0, -1.0}) {
-    jq_ = q_ + (sign * e) * qd_;
-    jqd_ = qd_ + (sign * e) * qdd_;
-    jtau_ = tau_ + (sign * e) * taud;
-    dyn_.forward_dynamics(jq_, jqd_, jtau_, sign > 0 ? qdd_plus_ : qdd_minus_);
-  }
-  fb_.qddd = (qdd_plus_ - qdd_minus_) / (2.0 * e);
+  // Header comment: q''' = M^{-1} (tau' - dID(q', q'')), at the forward-dynamics pass of
+  // dynamics(x) (q_, qd_, qdd_ hold the link state of x; d' = 0).
+  dyn_.tangent(qd_, qdd_, qdd_plus_);
+  qdd_minus_ = x.segment(n_, n_) - qdd_plus_;
+  fb_.qddd = dyn_.mass_factor().solve(qdd_minus_);
 }
 
 void FlexibleJointEkf::jacobian(const Vector& x, const Vector& /*u*/, Matrix& f) {
@@ -110,25 +103,14 @@ void FlexibleJointEkf::jacobian(const Vector& x, const Vector& /*u*/, Matrix& f)
   f.setZero();
   link_state(x);
   dyn_.forward_dynamics(q_, qd_, tau_, qdd_);
-  minv_ = dyn_.last_mass_factor().solve(Matrix::Identity(n, n));
+  minv_ = dyn_.mass_factor().solve(Matrix::Identity(n, n));
   a_.setZero();
   b_.setZero();
   if (params_.jacobian == EkfJacobian::kFull) {
-    // A = dq''/dq, B = dq''/dq' by central differences of the forward dynamics.
-    const double h = params_.fd_step;
-    auto column = [&](bool velocity, int c, Matrix& out) {
-      qp_ = velocity ? qd_ : q_;
-      for (const double sign : {1.0, -1.0}) {
-        qp_(c) += sign * h;
-        dyn_.forward_dynamics(velocity ? q_ : qp_, velocity ? qp_ : qd_, tau_, sign > 0 ? qdd_plus_ : qdd_minus_);
-        qp_(c) -= sign * h;
-      }
-      out.col(c) = (qdd_plus_ - qdd_minus_) / (2.0 * h);
-    };
-    for (int c = 0; c < n; ++c) {
-      column(false, c, a_);
-      column(true, c, b_);
-    }
+    // A = dq''/dq = -M^{-1} dID/dq, B = dq''/dq' = -M^{-1} dID/dq' (exact tangents).
+    dyn_.derivatives(did_q_, did_qd_);
+    a_.noalias() = -minv_ * did_q_;
+    b_.noalias() = -minv_ * did_qd_;
   }
   const int ip = iphi_, iv = iphi_ + n;
   for (int i = 0; i < n; ++i) {
@@ -197,10 +179,6 @@ void FlexibleJointEkf::update(const Vector& u, const Vector& y, double dt) {
   y_prev_ = y;
   has_y_prev_ = true;
   dynamics(x_, u, k1_);  // also sets q_, qd_ (eq. (17)) and the model's q'' in qdd_
-  if (std::getenv("ARMX_NOD_FB") && params_.disturbance) {
-    tau_ = x_.segment(0, n_);
-    dyn_.forward_dynamics(q_, qd_, tau_, qdd_);
-  }
   fb_.q = q_, fb_.qd = qd_;
   const Vector& differentiated = accel_.update(qd_);  // section 4: q'' by a filtered differentiator of q'
   fb_.qdd = params_.acceleration == LinkAcceleration::kModel ? qdd_ : differentiated;

@@ -10,8 +10,9 @@
 //
 // Jacobian F = df/dx:
 //  - kFull (default): exact, including the dependence of M, C, G on q(phi, tau) and
-//    q'(phi', tau'); with A = dq''/dq, B = dq''/dq' (central differences of the KDL forward
-//    dynamics, step `fd_step`):
+//    q'(phi', tau'); with A = dq''/dq = -M^{-1} dID/dq, B = dq''/dq' = -M^{-1} dID/dq'
+//    (exact: the tangents of chain_dynamics.hpp; `fd_step` is no longer used, kept so that
+//    existing parameter sets stay valid):
 //      df2/dtau = K (-J^{-1} - M^{-1} + A K^{-1}),  df2/dtau' = K B K^{-1},
 //      df2/dphi = -K A,                               df2/dphi' = -K (J^{-1} F + B),
 //      df4/dtau = -J^{-1},                             df4/dphi' = -J^{-1} F.
@@ -30,9 +31,11 @@
 //    `accel_filter_hz`). Its lag destabilises the VDC phi_r'' loop at 1 kHz (measured, see
 //    docs/algorithms/arm.md), so it is not the default.
 // q^''' (the VDC's phi_r'' needs tau_r'' and so the link jerk): always from the model, the
-// central difference of the forward dynamics along the estimate's own derivative,
-//   q''' = [FD(q + e q', q' + e q'', tau + e tau') - FD(q - e q', q' - e q'', tau - e tau')] / 2e,
-// e = 1e-5 s, with q'' the model's (algebraic, no lag; the link side of eq. (35)).
+// time derivative of the forward dynamics along the estimate's own derivative,
+//   q''' = M^{-1} (tau' - dID/dq q' - dID/dq' q'')
+// with q'' the model's (algebraic, no lag; the link side of eq. (35)); this is the limit of
+// the central difference [FD(q + e q', q' + e q'', tau + e tau') - FD(q - e q', ...)] / 2e
+// used before (e = 1e-5 s).
 //
 // Disturbance state (not in the paper; issue 18, docs/algorithms/arm.md "Model error"):
 // with `disturbance` on, x = [tau, tau', d, phi, phi'] (5n) where d is a lumped link-side
@@ -48,7 +51,7 @@
 #include "plexus/algorithms/arm/arm_feedback.hpp"
 #include "plexus/algorithms/arm/arm_model.hpp"
 #include "plexus/algorithms/arm/filtered_differentiator.hpp"
-#include "plexus/algorithms/arm/rigid_body_dynamics.hpp"
+#include "plexus/algorithms/arm/chain_dynamics.hpp"
 
 namespace plexus::algorithms {
 
@@ -119,13 +122,13 @@ class FlexibleJointEkf {
   int iphi_;     ///< offset of phi in x (2n or 3n); phi' follows
   Vector qdiag_; ///< diagonal of Q
   Vector d_;     ///< d^ (zero without the disturbance state)
-  ArmRigidBodyDynamics dyn_;
+  ArmChainDynamics dyn_;
   Vector k_, j_, f_;
   Vector x_, k1_, k2_, k3_, k4_, xt_, innovation_;
   Matrix p_, fjac_, p1_, p2_, p3_, p4_, pt_, tmp_;
   Vector q_, qd_, qdd_, qdd_plus_, qdd_minus_, tau_, qp_;  ///< tau_: tau + d, the torque on the links
   Vector jq_, jqd_, jtau_;  ///< shifted link state of the jerk difference
-  Matrix minv_, a_, b_;
+  Matrix minv_, a_, b_, did_q_, did_qd_;
   Vector y_prev_;
   bool has_y_prev_ = false;
   ArmFeedback fb_;
