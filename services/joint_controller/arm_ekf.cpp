@@ -69,7 +69,7 @@ class ArmEkfComponent final : public Component {
       // Steady motion (at rest when phi' = 0): q ~ phi, q' ~ phi', q'' = 0, so
       // tau = C(q, q') q' + G(q) and tau' = 0 (the springs hold the arm).
       const Eigen::VectorXd zero = Eigen::VectorXd::Zero(n_);
-      rest_.bias(y_.head(n_), y_.tail(n_), g_);
+      rest_.inverse_dynamics(y_.head(n_), y_.tail(n_), zero, g_);  // C q' + G
       x0_ << g_, zero, y_;
       ekf_.reset(x0_);
       started_ = true;
@@ -91,7 +91,7 @@ class ArmEkfComponent final : public Component {
   static alg::ArmModel ekf_params_model(const ComponentConfig& c) { return read_model(c.params()); }
 
   alg::FlexibleJointEkf ekf_;
-  alg::ArmRigidBodyDynamics rest_;
+  alg::ArmChainDynamics rest_;
   int n_;
   double h_;
   Eigen::VectorXd u_, y_, x0_, g_;
