@@ -29,6 +29,9 @@ alg::FlexibleJointEkfParams read_ekf(const ComponentConfig& c) {
   e.disturbance = p.optional<bool>("disturbance", e.disturbance);
   e.q_disturbance = p.optional<double>("q_disturbance", e.q_disturbance);
   e.q_tau_rate = p.optional<double>("q_tau_rate", e.q_tau_rate);
+  e.payload = p.optional<bool>("payload", e.payload);
+  e.q_payload = p.optional<double>("q_payload", e.q_payload);
+  e.p0_payload = p.optional<double>("p0_payload", e.p0_payload);
   e.q = p.optional<double>("q", e.q);
   e.r = p.optional<double>("r", e.r);
   e.p0 = p.optional<double>("p0", e.p0);

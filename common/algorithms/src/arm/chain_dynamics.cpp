@@ -37,6 +37,9 @@ ArmChainDynamics::ArmChainDynamics(const ArmModel& model) : n_(model.dof()) {
     k.v.setZero(), k.a.setZero(), k.f.setZero(), k.xv.setZero(), k.xa.setZero(), k.iv.setZero();
     k.dv.setZero(), k.da.setZero(), k.df.setZero();
   }
+  const ArmLink& last = model.links.back();
+  last_inertia_ = links_.back().inertia;
+  unit_point_ = spatial::spatial_inertia(spatial::link_parameters(1.0, Eigen::Vector3d(last.length, 0.0, 0.0), Eigen::Vector3d::Zero()));
   base_acceleration_.setZero();
   base_acceleration_.head<3>() = -model.gravity;
   qd_ = qdd_ = h_ = zero_ = unit_ = dtau_ = Eigen::VectorXd::Zero(n_);
@@ -125,11 +128,32 @@ void ArmChainDynamics::forward_dynamics(const Eigen::VectorXd& q, const Eigen::V
   pass_has_qdd_ = false;  // the stored pass is at q'' = 0; tangent() redoes it at q''
 }
 
-void ArmChainDynamics::tangent(const Eigen::VectorXd& dq, const Eigen::VectorXd& dqd, Eigen::VectorXd& dtau) {
+void ArmChainDynamics::set_extra_payload(double mass) {
+  if (mass == extra_payload_) return;
+  extra_payload_ = mass;
+  links_.back().inertia = last_inertia_ + mass * unit_point_;
+}
+
+void ArmChainDynamics::ensure_pass_with_qdd() {
   if (!pass_has_qdd_) {
     rnea(qd_, qdd_, h_);
     pass_has_qdd_ = true;
   }
+}
+
+void ArmChainDynamics::payload_regressor(Eigen::VectorXd& y) {
+  ensure_pass_with_qdd();
+  // F = M_p A_n + crf(V_n) M_p V_n for a unit point mass, carried to the base.
+  const Link& tip = links_.back();
+  spatial::Vector6 f = unit_point_ * tip.a + spatial::cross_force(tip.v, unit_point_ * tip.v);
+  for (int i = n_ - 1; i >= 0; --i) {
+    y(i) = f(kAngular);
+    if (i > 0) f = spatial::force_to_parent(links_[static_cast<std::size_t>(i)].from_parent, f);
+  }
+}
+
+void ArmChainDynamics::tangent(const Eigen::VectorXd& dq, const Eigen::VectorXd& dqd, Eigen::VectorXd& dtau) {
+  ensure_pass_with_qdd();
   const spatial::Vector6 zero = spatial::Vector6::Zero();
   for (int i = 0; i < n_; ++i) {
     Link& k = links_[static_cast<std::size_t>(i)];

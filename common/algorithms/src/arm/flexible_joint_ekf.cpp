@@ -18,7 +18,12 @@ FlexibleJointEkfParams FlexibleJointEkfParams::robust() {
 }
 
 FlexibleJointEkf::FlexibleJointEkf(const FlexibleJointEkfParams& p)
-    : params_(p), n_(p.model.dof()), m_((p.disturbance ? 5 : 4) * n_), iphi_(m_ - 2 * n_), dyn_(p.model) {
+    : params_(p),
+      n_(p.model.dof()),
+      m_((p.disturbance ? 5 : 4) * n_ + (p.payload ? 1 : 0)),
+      ipay_((p.disturbance ? 3 : 2) * n_),
+      iphi_(m_ - 2 * n_),
+      dyn_(p.model) {
   validation::require_positive(kWhere, "q", p.q);
   validation::require_positive(kWhere, "r", p.r);
   validation::require_positive(kWhere, "p0", p.p0);
@@ -28,6 +33,8 @@ FlexibleJointEkf::FlexibleJointEkf(const FlexibleJointEkfParams& p)
   validation::require_positive(kWhere, "fd_step", p.fd_step);
   if (p.disturbance) validation::require_positive(kWhere, "q_disturbance", p.q_disturbance);
   if (p.q_tau_rate != 0.0) validation::require_positive(kWhere, "q_tau_rate", p.q_tau_rate);
+  if (p.payload) validation::require_positive(kWhere, "q_payload", p.q_payload);
+  if (p.payload) validation::require_positive(kWhere, "p0_payload", p.p0_payload);
   k_.resize(n_), j_.resize(n_), f_.resize(n_);
   for (int i = 0; i < n_; ++i) {
     const ArmJoint& jt = p.model.joints[static_cast<std::size_t>(i)];
@@ -37,6 +44,8 @@ FlexibleJointEkf::FlexibleJointEkf(const FlexibleJointEkfParams& p)
   qdiag_ = Vector::Constant(m, p.q);
   if (p.q_tau_rate > 0.0) qdiag_.segment(n_, n_).setConstant(p.q_tau_rate);
   if (p.disturbance) qdiag_.segment(2 * n_, n_).setConstant(p.q_disturbance);
+  if (p.payload) qdiag_(ipay_) = p.q_payload;
+  yp_ = Vector::Zero(n_);
   d_ = Vector::Zero(n_);
   for (Vector* v : {&x_, &k1_, &k2_, &k3_, &k4_, &xt_}) *v = Vector::Zero(m);
   for (Matrix* a : {&p_, &fjac_, &p1_, &p2_, &p3_, &p4_, &pt_, &tmp_}) *a = Matrix::Zero(m, m);
@@ -50,7 +59,7 @@ FlexibleJointEkf::FlexibleJointEkf(const FlexibleJointEkfParams& p)
 
 void FlexibleJointEkf::reset(const Vector& x0) {
   if (x0.size() != 4 * n_ && x0.size() != m_) {
-    validation::fail(kWhere, "x0 size", "4 n = " + std::to_string(4 * n_) + (m_ != 4 * n_ ? " or 5 n = " + std::to_string(m_) : ""),
+    validation::fail(kWhere, "x0 size", "4 n = " + std::to_string(4 * n_) + (m_ != 4 * n_ ? " or " + std::to_string(m_) : ""),
                      static_cast<double>(x0.size()));
   }
   if (x0.size() == m_) {
@@ -61,6 +70,7 @@ void FlexibleJointEkf::reset(const Vector& x0) {
     x_.tail(2 * n_) = x0.tail(2 * n_);
   }
   p_ = params_.p0 * Matrix::Identity(m_, m_);
+  if (params_.payload) p_(ipay_, ipay_) = params_.p0_payload;
   accel_.reset();
   has_y_prev_ = false;
   link_state(x_);
@@ -76,6 +86,7 @@ void FlexibleJointEkf::link_state(const Vector& x) {
   qd_ = x.segment(iphi_ + n_, n_) - x.segment(n_, n_).cwiseQuotient(k_);
   tau_ = x.segment(0, n_);
   if (params_.disturbance) tau_ += x.segment(2 * n_, n_);
+  if (params_.payload) dyn_.set_extra_payload(x(ipay_));
 }
 
 void FlexibleJointEkf::dynamics(const Vector& x, const Vector& u, Vector& dx) {
@@ -88,6 +99,7 @@ void FlexibleJointEkf::dynamics(const Vector& x, const Vector& u, Vector& dx) {
   dx.segment(0, n_) = x.segment(n_, n_);
   dx.segment(ip, n_) = x.segment(iv, n_);
   if (params_.disturbance) dx.segment(2 * n_, n_).setZero();  // d' = 0 (a random walk)
+  if (params_.payload) dx(ipay_) = 0.0;                       // m_p' = 0
 }
 
 void FlexibleJointEkf::link_jerk(const Vector& x) {
@@ -111,6 +123,11 @@ void FlexibleJointEkf::jacobian(const Vector& x, const Vector& /*u*/, Matrix& f)
     dyn_.derivatives(did_q_, did_qd_);
     a_.noalias() = -minv_ * did_q_;
     b_.noalias() = -minv_ * did_qd_;
+  }
+  if (params_.payload) {
+    dyn_.payload_regressor(yp_);
+    qp_.noalias() = minv_ * yp_;  // -dq''/dm_p
+    for (int i = 0; i < n; ++i) f(n + i, ipay_) = k_(i) * qp_(i);
   }
   const int ip = iphi_, iv = iphi_ + n;
   for (int i = 0; i < n; ++i) {

@@ -58,6 +58,12 @@ class ArmChainDynamics {
   void tangent(const Eigen::VectorXd& dq, const Eigen::VectorXd& dqd, Eigen::VectorXd& dtau);
   /// dID/dq and dID/dq' of the last pass (n x n each: 2n tangents).
   void derivatives(Eigen::MatrixXd& dtau_dq, Eigen::MatrixXd& dtau_dqd);
+  /// Changes the tip point mass (kg, any sign: an estimate of the model's error) on top of
+  /// the model's payload_mass; cheap (one 6x6 update).
+  void set_extra_payload(double mass);
+  /// dID/dm of the last pass: the joint torques a unit point mass at the tip needs for the
+  /// motion (q, q', q'') (gravity included).
+  void payload_regressor(Eigen::VectorXd& y);
   /// Cholesky factor of the M(q) of the last forward_dynamics().
   const Eigen::LLT<Eigen::MatrixXd>& mass_factor() const { return llt_; }
 
@@ -74,7 +80,11 @@ class ArmChainDynamics {
   void frames(const Eigen::VectorXd& q);
   void rnea(const Eigen::VectorXd& qd, const Eigen::VectorXd& qdd, Eigen::VectorXd& tau);
 
+  void ensure_pass_with_qdd();
+
   int n_;
+  double extra_payload_ = 0.0;
+  spatial::Matrix6 last_inertia_, unit_point_;  ///< the last link's model inertia; a unit mass at its tip
   bool pass_has_qdd_ = false;           ///< the stored pass is at (q, q', q''), not at q'' = 0
   spatial::Vector6 base_acceleration_;  ///< [-g; 0]
   std::vector<Link> links_;

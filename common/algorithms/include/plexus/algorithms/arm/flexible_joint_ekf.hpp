@@ -44,6 +44,12 @@
 // so q'' = M^{-1} (tau + d - C q' - G) everywhere above (tau'', A, B, the feedback's q'' and
 // q'''), and df2/dd = -K M^{-1}. The measured states stay last, so H = [0 I] as before.
 // `q_tau_rate` (> 0) replaces q on the tau' rows when set (Q = diag(q, q_tau_rate, q_d, q, q)).
+// Payload state (also issue 18): with `payload` on, one more state m_p (kg), an unknown point
+// mass at the tip of the last link added to the model's (x = [tau, tau', (d), m_p, phi, phi']):
+//   M(q; m_p) q'' + C(q, q'; m_p) q' + G(q; m_p) = tau (+ d),   m_p' = w_p,  E[w_p^2] = q_payload,
+// P(0) = p0_payload for it; df2/dm_p = K M^{-1} Y_p(q, q', q'') with Y_p the torques a unit tip
+// mass needs (ArmChainDynamics::payload_regressor). A constant error is then a constant state:
+// no lag, little noise.
 #pragma once
 
 #include <Eigen/Core>
@@ -72,6 +78,9 @@ struct FlexibleJointEkfParams {
   bool disturbance = false;      ///< augment x with a link-side disturbance torque d per joint (header)
   double q_disturbance = 1e4;    ///< (N m)^2/s: process noise of d, > 0 (used with `disturbance`)
   double q_tau_rate = 0.0;       ///< process noise of the tau' rows; 0: the same as q; else > 0
+  bool payload = false;          ///< augment x with an unknown tip mass m_p (header)
+  double q_payload = 1.0;        ///< kg^2/s: process noise of m_p, > 0 (used with `payload`)
+  double p0_payload = 1.0;       ///< kg^2: initial variance of m_p, > 0 (used with `payload`)
 
   /// Paper 004 section 4.2: Q = 4 I, R = 0.1 I, P(0) = I, no disturbance state (the defaults).
   static FlexibleJointEkfParams paper();
@@ -89,10 +98,10 @@ class FlexibleJointEkf {
   explicit FlexibleJointEkf(const FlexibleJointEkfParams& params);
 
   int dof() const { return n_; }
-  /// Length of x: 4 n, or 5 n with the disturbance state.
+  /// Length of x: 4 n, + n with the disturbance state, + 1 with the payload state.
   int state_size() const { return m_; }
-  /// Sets x^ = [tau, tau', phi, phi'] (d = 0 with the disturbance state), or the whole
-  /// [tau, tau', d, phi, phi'], and P = p0 I; resets the q'' differentiator.
+  /// Sets x^ = [tau, tau', phi, phi'] (d = 0, m_p = 0 with those states), or the whole x,
+  /// and P = p0 I (p0_payload for m_p); resets the q'' differentiator.
   void reset(const Vector& x0);
 
   /// Integrates the observer over dt with input u (held) and measurement y = [phi, phi'].
@@ -110,6 +119,8 @@ class FlexibleJointEkf {
   const ArmFeedback& feedback() const { return fb_; }
   /// The disturbance estimate d^ (zero without the disturbance state).
   const Vector& disturbance() const { return d_; }
+  /// The tip-mass estimate m_p^ (kg; zero without the payload state).
+  double payload() const { return params_.payload ? x_(ipay_) : 0.0; }
 
  private:
   void link_state(const Vector& x);  // fills q_, qd_ from x
@@ -119,7 +130,8 @@ class FlexibleJointEkf {
   FlexibleJointEkfParams params_;
   int n_;
   int m_;        ///< state size (4n or 5n)
-  int iphi_;     ///< offset of phi in x (2n or 3n); phi' follows
+  int ipay_;     ///< offset of m_p in x (with the payload state)
+  int iphi_;     ///< offset of phi in x; phi' follows
   Vector qdiag_; ///< diagonal of Q
   Vector d_;     ///< d^ (zero without the disturbance state)
   ArmChainDynamics dyn_;
@@ -129,6 +141,7 @@ class FlexibleJointEkf {
   Vector q_, qd_, qdd_, qdd_plus_, qdd_minus_, tau_, qp_;  ///< tau_: tau + d, the torque on the links
   Vector jq_, jqd_, jtau_;  ///< shifted link state of the jerk difference
   Matrix minv_, a_, b_, did_q_, did_qd_;
+  Vector yp_;  ///< payload regressor
   Vector y_prev_;
   bool has_y_prev_ = false;
   ArmFeedback fb_;
