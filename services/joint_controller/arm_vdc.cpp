@@ -4,7 +4,8 @@
 //   the arm model keys (services/common/arm_model_params.hpp: model, dof, length ..
 //   stiffness, gravity, payload_mass) + k_b, rho, lambda, k_p, k_i, ts_min, ts_max,
 //   lambda_q, lambda_phi, lambda_tau, k_phi, k_tau (lists; default Table 3), theta_lower
-//   (0.6), theta_upper (1.8), theta_initial (1.0).
+//   (0.6), theta_upper (1.8), theta_initial (1.0), disturbance_compensation (robust preset:
+//   see `tuning`), torque_limit (list, N m; default none), tuning (robust | paper).
 //   in reference {q1.., dq1.., ddq1.., dddq1..} (JointReference), estimate {q1.., dq1..,
 //   ddq1.., dddq1.., tau1.., dtau1.., phi1.., dphi1..} (LinkJointState);
 //   out cmd {u1..un} (JointCommand; 0 until both inputs exist).
@@ -37,6 +38,10 @@ alg::VdcParams read_vdc(const ComponentConfig& c) {
   v.theta_upper = p.optional<double>("theta_upper", v.theta_upper);
   v.theta_initial = p.optional<double>("theta_initial", v.theta_initial);
   v.disturbance_compensation = p.optional<double>("disturbance_compensation", v.disturbance_compensation);
+  if (p.has("torque_limit")) {
+    v.torque_limit = Eigen::VectorXd::Zero(model.dof());
+    read_into(p, "torque_limit", v.torque_limit);
+  }
   v.step = c.period();
   return v;
 }

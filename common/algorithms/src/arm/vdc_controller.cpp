@@ -88,6 +88,7 @@ VdcController::VdcController(const VdcParams& p) : params_(p), n_(p.model.dof())
   }
   validation::require_positive(kWhere, "derivative_step", p.derivative_step);
   validation::require_positive(kWhere, "step", p.step);
+  if (p.torque_limit.size() != 0) require_vector("torque_limit", p.torque_limit, n_, Sign::positive);
   if (!(p.disturbance_compensation >= 0.0 && p.disturbance_compensation <= 1.0)) {
     validation::fail(kWhere, "disturbance_compensation", "in [0, 1]", p.disturbance_compensation);
   }
@@ -108,13 +109,14 @@ VdcController::VdcController(const VdcParams& p) : params_(p), n_(p.model.dof())
   }
   const Eigen::VectorXd z = Eigen::VectorXd::Zero(n_);
   qr_d_ = qr_dd_ = qr_ddd_ = qr_dddd_ = tau_od_ = ts_ = ts_rate_ = u_ = z;
-  q_e_ = qd_e_ = qr_d_e_ = qr_dd_e_ = tau_od_1_ = tau_od_2_ = dist_ = z;
+  q_e_ = qd_e_ = qr_d_e_ = qr_dd_e_ = tau_od_1_ = tau_od_2_ = dist_ = saturated_ = z;
   reset();
 }
 
 void VdcController::reset() {
   for (Link& k : links_) k.theta = params_.theta_initial * k.nominal;
   ts_.setZero();
+  saturated_.setZero();
 }
 
 void VdcController::required_link_torques(const Eigen::VectorXd& q, const Eigen::VectorXd& qd,
@@ -200,12 +202,14 @@ const Eigen::VectorXd& VdcController::step(const ArmReferenceSample& ref, const 
     required_link_torques(q_e_, qd_e_, qr_d_e_, qr_dd_e_, m == 1 ? tau_od_1_ : tau_od_2_);
   }
   required_link_torques(fb.q, fb.qd, qr_d_, qr_dd_, tau_od_);
-  adapt();
+  if (saturated_.cwiseAbs().maxCoeff() == 0.0) adapt();  // anti-windup: held while a drive saturates
   for (int i = 0; i < n_; ++i) {
     const double ev = qr_d_(i) - fb.qd(i);      // q_r' - q'
     const double ea = qr_dd_(i) - fb.qdd(i);    // q_r'' - q''
     const double ej = qr_ddd_(i) - fb.qddd(i);  // q_r''' - q'''
-    ts_rate_(i) = p_function_step(ts_(i), p.k_i(i), ev, p.ts_min(i), p.ts_max(i), p.step);     // (21)
+    // (21); anti-windup: no integration towards a limit the output was clamped at.
+    const bool hold = saturated_(i) * ev > 0.0;
+    ts_rate_(i) = hold ? 0.0 : p_function_step(ts_(i), p.k_i(i), ev, p.ts_min(i), p.ts_max(i), p.step);
     const double ts_acc = (ts_(i) > p.ts_min(i) && ts_(i) < p.ts_max(i)) ? p.k_i(i) * ea : 0.0;
     const double taud_od = (4.0 * tau_od_1_(i) - 3.0 * tau_od_(i) - tau_od_2_(i)) / (2.0 * e);
     const double taudd_od = (tau_od_(i) - 2.0 * tau_od_1_(i) + tau_od_2_(i)) / (e * e);
@@ -221,6 +225,12 @@ const Eigen::VectorXd& VdcController::step(const ArmReferenceSample& ref, const 
                            p.lambda_tau(i) * (taud_r - fb.taud(i));
     u_(i) = motor_inertia_(i) * phir_dd + friction_(i) * phir_d + p.k_phi(i) * (phir_d - fb.phid(i)) + tau_r +
             p.k_tau(i) * (tau_r - fb.tau(i));                                                   // (18)
+    saturated_(i) = 0.0;
+    if (p.torque_limit.size() != 0) {
+      const double limit = p.torque_limit(i);
+      if (u_(i) > limit) u_(i) = limit, saturated_(i) = 1.0;
+      if (u_(i) < -limit) u_(i) = -limit, saturated_(i) = -1.0;
+    }
   }
   return u_;
 }

@@ -65,6 +65,11 @@ struct VdcParams {
   /// link model at the observer's estimate (the observer's disturbance state when it has
   /// one), scaled by this factor in [0, 1] (0: the paper's (20)).
   double disturbance_compensation = 0.0;
+  /// Drive torque limit per joint (N m, > 0), empty: none (the paper). The output u is
+  /// clamped to it, and anti-windup (docs/algorithms/arm.md "Torque limit"): while a joint's
+  /// output was clamped at the previous step, its integral t_s (21) does not integrate
+  /// towards the limit, and the parameter adaptation (10) of every link is held.
+  Eigen::VectorXd torque_limit;
 
   /// Table 3 gains for the paper's 2-DoF arm.
   static VdcParams paper_2dof();
@@ -101,6 +106,8 @@ class VdcController {
   const Eigen::VectorXd& ts() const { return ts_; }
   /// d^ of the last step (zero without disturbance compensation).
   const Eigen::VectorXd& disturbance() const { return dist_; }
+  /// Per joint: +1 / -1 when the last output was clamped at the upper / lower limit, else 0.
+  const Eigen::VectorXd& saturation() const { return saturated_; }
   const VdcParams& params() const { return params_; }
 
  private:
@@ -119,7 +126,7 @@ class VdcController {
   std::vector<Link> links_;
   Eigen::VectorXd stiffness_, motor_inertia_, friction_;
   Eigen::VectorXd qr_d_, qr_dd_, qr_ddd_, qr_dddd_, tau_od_, ts_, ts_rate_, u_;
-  Eigen::VectorXd q_e_, qd_e_, qr_d_e_, qr_dd_e_, tau_od_1_, tau_od_2_, dist_;
+  Eigen::VectorXd q_e_, qd_e_, qr_d_e_, qr_dd_e_, tau_od_1_, tau_od_2_, dist_, saturated_;
 };
 
 }  // namespace plexus::algorithms
