@@ -10,6 +10,7 @@
 //   ddq1.., dddq1.., tau1.., dtau1.., phi1.., dphi1..} (LinkJointState);
 //   out cmd {u1..un} (JointCommand; 0 until both inputs exist).
 #include <memory>
+#include <string>
 #include <utility>
 
 #include "plexus/algorithms/arm/vdc_controller.hpp"
@@ -28,6 +29,11 @@ alg::VdcParams read_vdc(const ComponentConfig& c) {
   alg::VdcParams v = p.optional<std::string>("model", "paper_2dof") == "paper_2dof" ? alg::VdcParams::paper_2dof()
                                                                                      : alg::VdcParams::uniform(model);
   v.model = model;
+  // tuning: robust (default; docs/algorithms/arm.md "Model error") feeds half of the
+  // observer's model residual forward; paper is eqs. (18)-(23) as printed.
+  const std::string tuning = p.optional<std::string>("tuning", "robust");
+  if (tuning != "robust" && tuning != "paper") p.fail("tuning", "must be robust or paper");
+  v.disturbance_compensation = tuning == "robust" ? alg::VdcParams::kRobustDisturbanceCompensation : 0.0;
   for (auto [key, vec] : {std::pair{"k_b", &v.k_b}, {"rho", &v.rho}, {"lambda", &v.lambda}, {"k_p", &v.k_p},
                           {"k_i", &v.k_i}, {"ts_min", &v.ts_min}, {"ts_max", &v.ts_max}, {"lambda_q", &v.lambda_q},
                           {"lambda_phi", &v.lambda_phi}, {"lambda_tau", &v.lambda_tau}, {"k_phi", &v.k_phi},

@@ -12,8 +12,14 @@ constexpr const char* kWhere = "flexible_joint_ekf";
 FlexibleJointEkfParams FlexibleJointEkfParams::paper() { return {}; }
 
 FlexibleJointEkfParams FlexibleJointEkfParams::robust() {
+  // docs/algorithms/arm.md "Model error": the tip mass absorbs a payload (and most of a mass
+  // error) as a constant, the disturbance torque the rest; values from the sweep there.
   FlexibleJointEkfParams p;
   p.disturbance = true;
+  p.q_disturbance = 3e6;
+  p.payload = true;
+  p.q_payload = 1e4;
+  p.p0_payload = 1e3;
   return p;
 }
 

@@ -85,7 +85,8 @@ struct FlexibleJointEkfParams {
   /// Paper 004 section 4.2: Q = 4 I, R = 0.1 I, P(0) = I, no disturbance state (the defaults).
   static FlexibleJointEkfParams paper();
   /// The robust tuning (issue 18; docs/algorithms/arm.md "Model error"): the paper's filter
-  /// plus the disturbance state, for an arm whose model is wrong.
+  /// plus the tip-mass state (q_payload 1e4, p0_payload 1e3) and the disturbance state
+  /// (q_disturbance 3e6), for an arm whose model is wrong. The services' default.
   static FlexibleJointEkfParams robust();
 };
 

@@ -71,6 +71,9 @@ struct VdcParams {
   /// towards the limit, and the parameter adaptation (10) of every link is held.
   Eigen::VectorXd torque_limit;
 
+  /// disturbance_compensation of the robust tuning (docs/algorithms/arm.md "Model error").
+  static constexpr double kRobustDisturbanceCompensation = 0.5;
+
   /// Table 3 gains for the paper's 2-DoF arm.
   static VdcParams paper_2dof();
   /// Table 3 joint-2 / link-2 gains repeated for every joint of `model`.
