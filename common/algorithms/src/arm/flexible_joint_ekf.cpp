@@ -53,7 +53,7 @@ FlexibleJointEkf::FlexibleJointEkf(const FlexibleJointEkfParams& p)
   if (p.payload) qdiag_(ipay_) = p.q_payload;
   yp_ = Vector::Zero(n_);
   d_ = Vector::Zero(n_);
-  for (Vector* v : {&x_, &k1_, &k2_, &k3_, &k4_, &xt_}) *v = Vector::Zero(m);
+  for (Vector* v : {&x_, &k1_, &k2_, &k3_, &k4_, &xt_, &pass_x_}) *v = Vector::Zero(m);
   for (Matrix* a : {&p_, &fjac_, &p1_, &p2_, &p3_, &p4_, &pt_, &tmp_}) *a = Matrix::Zero(m, m);
   for (Vector* v : {&q_, &qd_, &qdd_, &qdd_plus_, &qdd_minus_, &tau_, &qp_, &jq_, &jqd_, &jtau_}) *v = Vector::Zero(n_);
   innovation_ = y_prev_ = Vector::Zero(2 * n_);
@@ -95,9 +95,18 @@ void FlexibleJointEkf::link_state(const Vector& x) {
   if (params_.payload) dyn_.set_extra_payload(x(ipay_));
 }
 
-void FlexibleJointEkf::dynamics(const Vector& x, const Vector& u, Vector& dx) {
+void FlexibleJointEkf::model_pass(const Vector& x) {
+  // The forward dynamics at x, unless the last pass of dyn_ was at this very x (the Jacobian
+  // and the first RK4 stage of an update, and the feedback of the previous update, share it).
   link_state(x);
+  if (pass_valid_ && x == pass_x_) return;
   dyn_.forward_dynamics(q_, qd_, tau_, qdd_);
+  pass_x_ = x;
+  pass_valid_ = true;
+}
+
+void FlexibleJointEkf::dynamics(const Vector& x, const Vector& u, Vector& dx) {
+  model_pass(x);
   // phi'' = J^{-1} (u - tau - F phi'), stored in the phi' rows, then tau'' = K (phi'' - q'') (eq. (35)).
   const int ip = iphi_, iv = iphi_ + n_;
   dx.segment(iv, n_) = (u - x.segment(0, n_) - f_.cwiseProduct(x.segment(iv, n_))).cwiseQuotient(j_);
@@ -119,8 +128,7 @@ void FlexibleJointEkf::link_jerk(const Vector& x) {
 void FlexibleJointEkf::jacobian(const Vector& x, const Vector& /*u*/, Matrix& f) {
   const int n = n_;
   f.setZero();
-  link_state(x);
-  dyn_.forward_dynamics(q_, qd_, tau_, qdd_);
+  model_pass(x);
   minv_ = dyn_.mass_factor().solve(Matrix::Identity(n, n));
   a_.setZero();
   b_.setZero();
@@ -156,11 +164,30 @@ void FlexibleJointEkf::jacobian(const Vector& x, const Vector& /*u*/, Matrix& f)
 
 void FlexibleJointEkf::riccati(const Matrix& p, Matrix& dp) {
   // P' = F P + P F^T + Q - P H^T R^{-1} H P   (eq. (32)-(33)), H = [0 I] selects phi, phi'.
-  const int m = 2 * n_;
-  tmp_.noalias() = fjac_ * p;
+  // F P by rows, from the structure of F (jacobian()): the tau and phi rows of F select the
+  // tau' and phi' rows of P, the d and m_p rows are zero, only the tau' rows are dense and
+  // the phi' rows have two diagonal blocks. Small products are coefficient-based (Eigen's
+  // blocked product costs more than it saves below ~16 x 16).
+  const int n = n_, m2 = 2 * n_, ip = iphi_, iv = iphi_ + n_;
+  const bool small = m_ <= 24;
+  tmp_.setZero();
+  tmp_.topRows(n) = p.middleRows(n, n);
+  if (small) {
+    tmp_.middleRows(n, n).noalias() = fjac_.middleRows(n, n).lazyProduct(p);
+  } else {
+    tmp_.middleRows(n, n).noalias() = fjac_.middleRows(n, n) * p;
+  }
+  tmp_.middleRows(ip, n) = p.middleRows(iv, n);
+  for (int i = 0; i < n; ++i) {
+    tmp_.row(iv + i) = fjac_(iv + i, i) * p.row(i) + fjac_(iv + i, iv + i) * p.row(iv + i);
+  }
   dp = tmp_ + tmp_.transpose();
   dp.diagonal() += qdiag_;
-  dp.noalias() -= (1.0 / params_.r) * (p.rightCols(m) * p.bottomRows(m));
+  if (small) {
+    dp.noalias() -= (1.0 / params_.r) * p.rightCols(m2).lazyProduct(p.bottomRows(m2));
+  } else {
+    dp.noalias() -= (1.0 / params_.r) * (p.rightCols(m2) * p.bottomRows(m2));
+  }
 }
 
 void FlexibleJointEkf::update(const Vector& u, const Vector& y, double dt) {

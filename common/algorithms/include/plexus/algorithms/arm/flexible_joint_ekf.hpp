@@ -125,6 +125,7 @@ class FlexibleJointEkf {
 
  private:
   void link_state(const Vector& x);  // fills q_, qd_ from x
+  void model_pass(const Vector& x);  // link_state(x) and the forward dynamics at x into qdd_ (cached)
   void link_jerk(const Vector& x);   // fb_.qddd at x, after dynamics(x, ...)
   void riccati(const Matrix& p, Matrix& dp);
 
@@ -143,6 +144,8 @@ class FlexibleJointEkf {
   Vector jq_, jqd_, jtau_;  ///< shifted link state of the jerk difference
   Matrix minv_, a_, b_, did_q_, did_qd_;
   Vector yp_;  ///< payload regressor
+  Vector pass_x_;            ///< the x of dyn_'s last forward-dynamics pass
+  bool pass_valid_ = false;
   Vector y_prev_;
   bool has_y_prev_ = false;
   ArmFeedback fb_;

@@ -120,9 +120,14 @@ class VdcController {
     spatial::Vector6 v, vr, dvr, fr;
     spatial::Regressor y;
     spatial::Vector13 theta, lo, hi, nominal;
+    spatial::Matrix6 inertia;  ///< M_B(theta^), refreshed at each step
   };
 
   void adapt();
+  /// The recursion of required_link_torques with M_B(theta^) as it stands; the regressors
+  /// Y_i (for the adaptation) only when `regressor`.
+  void link_torques(const Eigen::VectorXd& q, const Eigen::VectorXd& qd, const Eigen::VectorXd& qr_d,
+                    const Eigen::VectorXd& qr_dd, Eigen::VectorXd& tau_od, bool regressor);
 
   VdcParams params_;
   int n_;
