@@ -40,3 +40,30 @@ add_test(NAME cli.arm_bad_disturbance_compensation
 set_tests_properties(cli.arm_bad_observer_tuning cli.arm_bad_controller_tuning cli.arm_bad_plant_torque_limit
                      cli.arm_controller_torque_limit_size cli.arm_bad_q_disturbance cli.arm_bad_payload_prior
                      cli.arm_bad_disturbance_compensation PROPERTIES LABELS "cli")
+
+# Table 4 with an actuator torque limit of 50 / 15 N m (the paper's peaks, 46.33 / 14.39, rounded
+# up) in the plant and the controller (anti-windup): the settling times still meet Table 4
+# (measured 0.139 / 0.142 s; expectations of arm_vdc_ekf.yaml), the torques stay within the
+# limit, and the RMS misses are bounded near the measured 1.427 / 1.183 mrad (without the
+# limit 1.286 / 1.129, repro.arm_vdc_ekf).
+plexus_pin(repro.arm_vdc_ekf_torque_limit ${PROJECT_SOURCE_DIR}/deploy/scenarios/arm_vdc_ekf.yaml MISSES none
+           ARGS --set robots.arm.plant.torque_limit=[50,15] --set services.controller.torque_limit=[50,15]
+           CHECKS "max_torque_1_nm <= 50" "max_torque_2_nm <= 15" "rms_e1_mrad >= 1.28" "rms_e1_mrad <= 1.57"
+                  "rms_e2_mrad >= 1.06" "rms_e2_mrad <= 1.31" "rms_e1_steady_mrad <= 0.04" "rms_e2_steady_mrad <= 0.04")
+
+# 3-DoF and 6-DoF uniform chains (arm_vdc_ekf_3dof.yaml; Table 3's joint-2 gains on every
+# joint) carrying 1.6 kg at the tip (40 % of a link), unknown to observer and controller,
+# default (robust) tuning, from rest. 3-DoF: every joint inside the band after 2 s (measured
+# 0.1 / 0.2 / 0.2 mrad). 6-DoF: stable but outside the band (measured 4.0 / 2.5 / 2.5 mrad on
+# joints 1-3; without payload 3.8 / 2.5 / 1.5): the proximal joints carry up to five links with
+# gains tuned for one (docs/algorithms/arm.md); the misses are pinned so that they cannot get
+# worse unnoticed.
+plexus_pin(repro.arm_vdc_ekf_3dof_payload ${PROJECT_SOURCE_DIR}/deploy/scenarios/arm_vdc_ekf_3dof.yaml MISSES none
+           ARGS --set robots.arm.plant.payload_mass=1.6
+           CHECKS "max_error_after_2s_q1_rad <= 5e-4" "max_error_after_2s_q2_rad <= 5e-4" "max_error_after_2s_q3_rad <= 5e-4")
+plexus_pin(repro.arm_vdc_ekf_6dof_payload ${PROJECT_SOURCE_DIR}/deploy/scenarios/arm_vdc_ekf_3dof.yaml
+           MISSES max_error_after_2s_q1_rad max_error_after_2s_q2_rad max_error_after_2s_q3_rad
+           ARGS --set robots.arm.plant.payload_mass=1.6 --set robots.arm.plant.dof=6 --set robots.arm.sensors.joint_states.dof=6
+                --set services.reference.dof=6 --set services.observer.dof=6 --set services.controller.dof=6
+           CHECKS "max_error_after_2s_q1_rad <= 5e-3" "max_error_after_2s_q2_rad <= 3.5e-3" "max_error_after_2s_q3_rad <= 3.5e-3"
+                  "rms_e1_steady_mrad <= 2.5" "rms_e2_steady_mrad <= 2")
