@@ -22,8 +22,16 @@ namespace alg = plexus::algorithms;
 
 alg::FlexibleJointEkfParams read_ekf(const ComponentConfig& c) {
   const YamlMap& p = c.params();
-  alg::FlexibleJointEkfParams e;
+  const std::string tuning = p.optional<std::string>("tuning", "robust");
+  if (tuning != "robust" && tuning != "paper") p.fail("tuning", "must be robust or paper");
+  alg::FlexibleJointEkfParams e = tuning == "robust" ? alg::FlexibleJointEkfParams::robust() : alg::FlexibleJointEkfParams::paper();
   e.model = read_model(p);
+  e.disturbance = p.optional<bool>("disturbance", e.disturbance);
+  e.q_disturbance = p.optional<double>("q_disturbance", e.q_disturbance);
+  e.q_tau_rate = p.optional<double>("q_tau_rate", e.q_tau_rate);
+  e.payload = p.optional<bool>("payload", e.payload);
+  e.q_payload = p.optional<double>("q_payload", e.q_payload);
+  e.p0_payload = p.optional<double>("p0_payload", e.p0_payload);
   e.q = p.optional<double>("q", e.q);
   e.r = p.optional<double>("r", e.r);
   e.p0 = p.optional<double>("p0", e.p0);
@@ -64,7 +72,7 @@ class ArmEkfComponent final : public Component {
       // Steady motion (at rest when phi' = 0): q ~ phi, q' ~ phi', q'' = 0, so
       // tau = C(q, q') q' + G(q) and tau' = 0 (the springs hold the arm).
       const Eigen::VectorXd zero = Eigen::VectorXd::Zero(n_);
-      rest_.bias(y_.head(n_), y_.tail(n_), g_);
+      rest_.inverse_dynamics(y_.head(n_), y_.tail(n_), zero, g_);  // C q' + G
       x0_ << g_, zero, y_;
       ekf_.reset(x0_);
       started_ = true;
@@ -86,7 +94,7 @@ class ArmEkfComponent final : public Component {
   static alg::ArmModel ekf_params_model(const ComponentConfig& c) { return read_model(c.params()); }
 
   alg::FlexibleJointEkf ekf_;
-  alg::ArmRigidBodyDynamics rest_;
+  alg::ArmChainDynamics rest_;
   int n_;
   double h_;
   Eigen::VectorXd u_, y_, x0_, g_;

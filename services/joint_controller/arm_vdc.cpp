@@ -4,11 +4,13 @@
 //   the arm model keys (services/common/arm_model_params.hpp: model, dof, length ..
 //   stiffness, gravity, payload_mass) + k_b, rho, lambda, k_p, k_i, ts_min, ts_max,
 //   lambda_q, lambda_phi, lambda_tau, k_phi, k_tau (lists; default Table 3), theta_lower
-//   (0.6), theta_upper (1.8), theta_initial (1.0).
+//   (0.6), theta_upper (1.8), theta_initial (1.0), disturbance_compensation (robust preset:
+//   see `tuning`), torque_limit (list, N m; default none), tuning (robust | paper).
 //   in reference {q1.., dq1.., ddq1.., dddq1..} (JointReference), estimate {q1.., dq1..,
 //   ddq1.., dddq1.., tau1.., dtau1.., phi1.., dphi1..} (LinkJointState);
 //   out cmd {u1..un} (JointCommand; 0 until both inputs exist).
 #include <memory>
+#include <string>
 #include <utility>
 
 #include "plexus/algorithms/arm/vdc_controller.hpp"
@@ -27,6 +29,11 @@ alg::VdcParams read_vdc(const ComponentConfig& c) {
   alg::VdcParams v = p.optional<std::string>("model", "paper_2dof") == "paper_2dof" ? alg::VdcParams::paper_2dof()
                                                                                      : alg::VdcParams::uniform(model);
   v.model = model;
+  // tuning: robust (default; docs/algorithms/arm.md "Model error") feeds half of the
+  // observer's model residual forward; paper is eqs. (18)-(23) as printed.
+  const std::string tuning = p.optional<std::string>("tuning", "robust");
+  if (tuning != "robust" && tuning != "paper") p.fail("tuning", "must be robust or paper");
+  v.disturbance_compensation = tuning == "robust" ? alg::VdcParams::kRobustDisturbanceCompensation : 0.0;
   for (auto [key, vec] : {std::pair{"k_b", &v.k_b}, {"rho", &v.rho}, {"lambda", &v.lambda}, {"k_p", &v.k_p},
                           {"k_i", &v.k_i}, {"ts_min", &v.ts_min}, {"ts_max", &v.ts_max}, {"lambda_q", &v.lambda_q},
                           {"lambda_phi", &v.lambda_phi}, {"lambda_tau", &v.lambda_tau}, {"k_phi", &v.k_phi},
@@ -36,6 +43,11 @@ alg::VdcParams read_vdc(const ComponentConfig& c) {
   v.theta_lower = p.optional<double>("theta_lower", v.theta_lower);
   v.theta_upper = p.optional<double>("theta_upper", v.theta_upper);
   v.theta_initial = p.optional<double>("theta_initial", v.theta_initial);
+  v.disturbance_compensation = p.optional<double>("disturbance_compensation", v.disturbance_compensation);
+  if (p.has("torque_limit")) {
+    v.torque_limit = Eigen::VectorXd::Zero(model.dof());
+    read_into(p, "torque_limit", v.torque_limit);
+  }
   v.step = c.period();
   return v;
 }

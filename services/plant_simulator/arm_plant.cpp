@@ -4,7 +4,8 @@
 //   the arm model keys (services/common/arm_model_params.hpp: model, dof, length .. stiffness,
 //     gravity, payload_mass) + q0 (list, default 0), dq0 (list, default 0: at rest): the
 //     arm starts in steady motion at (q0, dq0), motors at dq0, springs holding C q' + G;
-//     max_substep (s, default 1e-4: RK4 sub-step inside each plant period).
+//     max_substep (s, default 1e-4: RK4 sub-step inside each plant period), torque_limit
+//     (list, N m per joint, > 0; default none: the drive applies any torque).
 //   in cmd {u1..un} (JointCommand); out truth/state {q1..qn, dq1..dqn, phi1..phin,
 //     dphi1..dphin, tau1..taun} (FlexibleJointTruth: link side, motor side, joint torque;
 //     for metrics).
@@ -21,11 +22,20 @@ namespace {
 
 namespace alg = plexus::algorithms;
 
+alg::FlexibleJointArmParams read_plant(const YamlMap& p) {
+  alg::FlexibleJointArmParams a{read_model(p), p.optional<double>("max_substep", 1e-4), {}};
+  if (p.has("torque_limit")) {
+    a.torque_limit = Eigen::VectorXd::Zero(a.model.dof());
+    read_into(p, "torque_limit", a.torque_limit);
+  }
+  return a;
+}
+
 class FlexibleJointArmComponent final : public Component {
  public:
   explicit FlexibleJointArmComponent(const ComponentConfig& c)
       : Component(c),
-        plant_({read_model(c.params()), c.params().optional<double>("max_substep", 1e-4)}),
+        plant_(read_plant(c.params())),
         n_(plant_.dof()),
         h_(c.period()),
         u_(Eigen::VectorXd::Zero(n_)),

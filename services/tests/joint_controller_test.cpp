@@ -171,10 +171,12 @@ TEST(ArmCtPd, BadParametersAreConfigurationErrors) {
 
 // --- arm_vdc ----------------------------------------------------------------------------
 
+// `tuning: paper`: eqs. (18)-(23) as printed, VdcParams::paper_2dof(); the default (robust)
+// is checked by ArmVdc.DefaultIsTheRobustTuning.
 const std::string kVdc = R"(name: ctl_part
 step: 0.001
 services:
-  ctl: {type: arm_vdc, robot: r4}
+  ctl: {type: arm_vdc, robot: r4, tuning: paper}
 )";
 
 TEST(ArmVdc, MatchesTheAlgorithmStepByStep) {
@@ -195,6 +197,32 @@ TEST(ArmVdc, MatchesTheAlgorithmStepByStep) {
   EXPECT_GT(std::abs(s.out("r4/cmd", "u1")), 1.0);
 }
 
+TEST(ArmVdc, DefaultIsTheRobustTuning) {
+  // Without `tuning`, the controller feeds half of the observer's model residual forward
+  // (issue 18; docs/algorithms/arm.md "Model error").
+  ServiceUnderTest s(R"(name: ctl_part
+step: 0.001
+services:
+  ctl: {type: arm_vdc, robot: r4}
+)");
+  alg::VdcParams p = alg::VdcParams::paper_2dof();
+  p.step = 0.001;
+  p.disturbance_compensation = alg::VdcParams::kRobustDisturbanceCompensation;
+  alg::VdcController ref(p), paper(alg::VdcParams::paper_2dof());
+  for (int64_t k = 0; k < 3; ++k) {
+    feed_controller(s, k);
+    s.step(k);
+    const double t = 0.001 * static_cast<double>(k);
+    const auto sample = reference_of({0.12 + t, -0.08}, {0.3, 0.9}, {0.1, -0.4}, {0.0, 0.2});
+    const auto& u = ref.step(sample, feedback_of(estimate_at(k)));
+    const auto& u_paper = paper.step(sample, feedback_of(estimate_at(k)));
+    const auto m = s.published<msg::JointCommand>("r4/cmd");
+    EXPECT_NEAR(m.effort()[0], u(0), 1e-9 * std::abs(u(0)) + 1e-12) << k;
+    EXPECT_NEAR(m.effort()[1], u(1), 1e-9 * std::abs(u(1)) + 1e-12) << k;
+    EXPECT_GT(std::abs(u(0) - u_paper(0)), 1e-6) << k;  // the compensation is on
+  }
+}
+
 TEST(ArmVdc, BadSamplesAreRefusedAndLeaveTheCommandAlone) {
   expect_refused_without_effect(kVdc, {}, {"r4/cmd"}, 6, 3, feed_controller, bad_controller_inputs());
 }
@@ -210,10 +238,12 @@ TEST(ArmVdc, BadParametersAreConfigurationErrors) {
 
 // --- arm_ekf ----------------------------------------------------------------------------
 
+// `tuning: paper`: Q = 4 I, no model-error states (FlexibleJointEkfParams{}); the default
+// (robust) is checked by ArmEkf.DefaultIsTheRobustTuning.
 const std::string kEkf = R"(name: ekf_part
 step: 0.001
 services:
-  ekf: {type: arm_ekf, robot: r4}
+  ekf: {type: arm_ekf, robot: r4, tuning: paper}
 )";
 
 msg::JointState encoders(const ServiceUnderTest& s, int64_t k, Vector2d phi, Vector2d dphi) {
@@ -293,6 +323,40 @@ TEST(ArmEkf, UpdatesMatchTheAlgorithm) {
     }
   }
   EXPECT_NE(s.out("r4/estimate", "dtau1"), 0.0);  // the update moved the torque rate
+}
+
+TEST(ArmEkf, DefaultIsTheRobustTuning) {
+  // Without `tuning`, the observer carries the tip-mass and disturbance states (issue 18).
+  ServiceUnderTest s(R"(name: ekf_part
+step: 0.001
+services:
+  ekf: {type: arm_ekf, robot: r4}
+)");
+  alg::FlexibleJointEkfParams p = alg::FlexibleJointEkfParams::robust();
+  p.step = 0.001;
+  alg::FlexibleJointEkf ref(p);
+  ASSERT_EQ(ref.state_size(), 11);
+  alg::ArmRigidBodyDynamics dyn(p.model);
+  for (int64_t k = 0; k < 4; ++k) {
+    feed_ekf(s, k);
+    s.step(k);
+    Eigen::VectorXd y(4);
+    y << phi_at(k), dphi_at(k);
+    if (k == 0) {
+      Eigen::VectorXd g(2), x0(8);
+      dyn.bias(phi_at(0), dphi_at(0), g);
+      x0 << g, Eigen::VectorXd::Zero(2), y;
+      ref.reset(x0);
+    } else {
+      ref.update(kU, y, 0.001);
+    }
+    const auto& fb = ref.feedback();
+    for (int i = 0; i < 2; ++i) {
+      const std::string j = std::to_string(i + 1);
+      EXPECT_NEAR(s.out("r4/estimate", "dtau" + j), fb.taud(i), 1e-9 * std::abs(fb.taud(i)) + 1e-12) << k;
+      EXPECT_NEAR(s.out("r4/estimate", "ddq" + j), fb.qdd(i), 1e-9 * std::abs(fb.qdd(i)) + 1e-12) << k;
+    }
+  }
 }
 
 TEST(ArmEkf, BadSamplesAreRefusedAndLeaveTheEstimateAlone) {

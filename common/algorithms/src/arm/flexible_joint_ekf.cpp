@@ -9,7 +9,27 @@ namespace {
 constexpr const char* kWhere = "flexible_joint_ekf";
 }
 
-FlexibleJointEkf::FlexibleJointEkf(const FlexibleJointEkfParams& p) : params_(p), n_(p.model.dof()), dyn_(p.model) {
+FlexibleJointEkfParams FlexibleJointEkfParams::paper() { return {}; }
+
+FlexibleJointEkfParams FlexibleJointEkfParams::robust() {
+  // docs/algorithms/arm.md "Model error": the tip mass absorbs a payload (and most of a mass
+  // error) as a constant, the disturbance torque the rest; values from the sweep there.
+  FlexibleJointEkfParams p;
+  p.disturbance = true;
+  p.q_disturbance = 3e6;
+  p.payload = true;
+  p.q_payload = 1e4;
+  p.p0_payload = 1e3;
+  return p;
+}
+
+FlexibleJointEkf::FlexibleJointEkf(const FlexibleJointEkfParams& p)
+    : params_(p),
+      n_(p.model.dof()),
+      m_((p.disturbance ? 5 : 4) * n_ + (p.payload ? 1 : 0)),
+      ipay_((p.disturbance ? 3 : 2) * n_),
+      iphi_(m_ - 2 * n_),
+      dyn_(p.model) {
   validation::require_positive(kWhere, "q", p.q);
   validation::require_positive(kWhere, "r", p.r);
   validation::require_positive(kWhere, "p0", p.p0);
@@ -17,115 +37,157 @@ FlexibleJointEkf::FlexibleJointEkf(const FlexibleJointEkfParams& p) : params_(p)
   validation::require_positive(kWhere, "step", p.step);
   validation::require_positive(kWhere, "accel_filter_hz", p.accel_filter_hz);
   validation::require_positive(kWhere, "fd_step", p.fd_step);
+  if (p.disturbance) validation::require_positive(kWhere, "q_disturbance", p.q_disturbance);
+  if (p.q_tau_rate != 0.0) validation::require_positive(kWhere, "q_tau_rate", p.q_tau_rate);
+  if (p.payload) validation::require_positive(kWhere, "q_payload", p.q_payload);
+  if (p.payload) validation::require_positive(kWhere, "p0_payload", p.p0_payload);
   k_.resize(n_), j_.resize(n_), f_.resize(n_);
   for (int i = 0; i < n_; ++i) {
     const ArmJoint& jt = p.model.joints[static_cast<std::size_t>(i)];
     k_(i) = jt.stiffness, j_(i) = jt.motor_inertia, f_(i) = jt.friction;
   }
-  const int m = 4 * n_;
-  for (Vector* v : {&x_, &k1_, &k2_, &k3_, &k4_, &xt_}) *v = Vector::Zero(m);
+  const int m = m_;
+  qdiag_ = Vector::Constant(m, p.q);
+  if (p.q_tau_rate > 0.0) qdiag_.segment(n_, n_).setConstant(p.q_tau_rate);
+  if (p.disturbance) qdiag_.segment(2 * n_, n_).setConstant(p.q_disturbance);
+  if (p.payload) qdiag_(ipay_) = p.q_payload;
+  yp_ = Vector::Zero(n_);
+  d_ = Vector::Zero(n_);
+  for (Vector* v : {&x_, &k1_, &k2_, &k3_, &k4_, &xt_, &pass_x_}) *v = Vector::Zero(m);
   for (Matrix* a : {&p_, &fjac_, &p1_, &p2_, &p3_, &p4_, &pt_, &tmp_}) *a = Matrix::Zero(m, m);
   for (Vector* v : {&q_, &qd_, &qdd_, &qdd_plus_, &qdd_minus_, &tau_, &qp_, &jq_, &jqd_, &jtau_}) *v = Vector::Zero(n_);
   innovation_ = y_prev_ = Vector::Zero(2 * n_);
-  minv_ = a_ = b_ = Matrix::Zero(n_, n_);
+  minv_ = a_ = b_ = did_q_ = did_qd_ = Matrix::Zero(n_, n_);
   fb_ = ArmFeedback::zero(n_);
   accel_.configure(n_, p.accel_filter_hz, p.step);
   reset(Vector::Zero(m));
 }
 
 void FlexibleJointEkf::reset(const Vector& x0) {
-  if (x0.size() != 4 * n_) validation::fail(kWhere, "x0 size", "4 n = " + std::to_string(4 * n_), static_cast<double>(x0.size()));
-  x_ = x0;
-  p_ = params_.p0 * Matrix::Identity(4 * n_, 4 * n_);
+  if (x0.size() != 4 * n_ && x0.size() != m_) {
+    validation::fail(kWhere, "x0 size", "4 n = " + std::to_string(4 * n_) + (m_ != 4 * n_ ? " or " + std::to_string(m_) : ""),
+                     static_cast<double>(x0.size()));
+  }
+  if (x0.size() == m_) {
+    x_ = x0;
+  } else {
+    x_.setZero();
+    x_.head(2 * n_) = x0.head(2 * n_);
+    x_.tail(2 * n_) = x0.tail(2 * n_);
+  }
+  p_ = params_.p0 * Matrix::Identity(m_, m_);
+  if (params_.payload) p_(ipay_, ipay_) = params_.p0_payload;
   accel_.reset();
   has_y_prev_ = false;
   link_state(x_);
   fb_.q = q_, fb_.qd = qd_, fb_.qdd.setZero(), fb_.qddd.setZero();
   fb_.tau = x_.segment(0, n_), fb_.taud = x_.segment(n_, n_);
-  fb_.phi = x_.segment(2 * n_, n_), fb_.phid = x_.segment(3 * n_, n_);
+  fb_.phi = x_.segment(iphi_, n_), fb_.phid = x_.segment(iphi_ + n_, n_);
+  if (params_.disturbance) d_ = x_.segment(2 * n_, n_);
 }
 
 void FlexibleJointEkf::link_state(const Vector& x) {
-  // Eq. (17): q = phi - K^{-1} tau, q' = phi' - K^{-1} tau'.
-  q_ = x.segment(2 * n_, n_) - x.segment(0, n_).cwiseQuotient(k_);
-  qd_ = x.segment(3 * n_, n_) - x.segment(n_, n_).cwiseQuotient(k_);
+  // Eq. (17): q = phi - K^{-1} tau, q' = phi' - K^{-1} tau'; tau_ = tau + d drives the links.
+  q_ = x.segment(iphi_, n_) - x.segment(0, n_).cwiseQuotient(k_);
+  qd_ = x.segment(iphi_ + n_, n_) - x.segment(n_, n_).cwiseQuotient(k_);
+  tau_ = x.segment(0, n_);
+  if (params_.disturbance) tau_ += x.segment(2 * n_, n_);
+  if (params_.payload) dyn_.set_extra_payload(x(ipay_));
+}
+
+void FlexibleJointEkf::model_pass(const Vector& x) {
+  // The forward dynamics at x, unless the last pass of dyn_ was at this very x (the Jacobian
+  // and the first RK4 stage of an update, and the feedback of the previous update, share it).
+  link_state(x);
+  if (pass_valid_ && x == pass_x_) return;
+  dyn_.forward_dynamics(q_, qd_, tau_, qdd_);
+  pass_x_ = x;
+  pass_valid_ = true;
 }
 
 void FlexibleJointEkf::dynamics(const Vector& x, const Vector& u, Vector& dx) {
-  link_state(x);
-  tau_ = x.segment(0, n_);
-  dyn_.forward_dynamics(q_, qd_, tau_, qdd_);
+  model_pass(x);
   // phi'' = J^{-1} (u - tau - F phi'), stored in the phi' rows, then tau'' = K (phi'' - q'') (eq. (35)).
-  dx.segment(3 * n_, n_) = (u - tau_ - f_.cwiseProduct(x.segment(3 * n_, n_))).cwiseQuotient(j_);
-  dx.segment(n_, n_) = k_.cwiseProduct(dx.segment(3 * n_, n_) - qdd_);
+  const int ip = iphi_, iv = iphi_ + n_;
+  dx.segment(iv, n_) = (u - x.segment(0, n_) - f_.cwiseProduct(x.segment(iv, n_))).cwiseQuotient(j_);
+  dx.segment(n_, n_) = k_.cwiseProduct(dx.segment(iv, n_) - qdd_);
   dx.segment(0, n_) = x.segment(n_, n_);
-  dx.segment(2 * n_, n_) = x.segment(3 * n_, n_);
+  dx.segment(ip, n_) = x.segment(iv, n_);
+  if (params_.disturbance) dx.segment(2 * n_, n_).setZero();  // d' = 0 (a random walk)
+  if (params_.payload) dx(ipay_) = 0.0;                       // m_p' = 0
 }
 
 void FlexibleJointEkf::link_jerk(const Vector& x) {
-  // Header comment: q''' by a central difference of the forward dynamics along (q', q'', tau')
-  // at x (q_, qd_, qdd_, tau_ hold the link state of x from dynamics()).
-  constexpr double e = 1e-5;  // s
-  const auto taud = x.segment(n_, n_);
-  for (const double sign : {1.0, -1.0}) {
-    jq_ = q_ + (sign * e) * qd_;
-    jqd_ = qd_ + (sign * e) * qdd_;
-    jtau_ = tau_ + (sign * e) * taud;
-    dyn_.forward_dynamics(jq_, jqd_, jtau_, sign > 0 ? qdd_plus_ : qdd_minus_);
-  }
-  fb_.qddd = (qdd_plus_ - qdd_minus_) / (2.0 * e);
+  // Header comment: q''' = M^{-1} (tau' - dID(q', q'')), at the forward-dynamics pass of
+  // dynamics(x) (q_, qd_, qdd_ hold the link state of x; d' = 0).
+  dyn_.tangent(qd_, qdd_, qdd_plus_);
+  qdd_minus_ = x.segment(n_, n_) - qdd_plus_;
+  fb_.qddd = dyn_.mass_factor().solve(qdd_minus_);
 }
 
 void FlexibleJointEkf::jacobian(const Vector& x, const Vector& /*u*/, Matrix& f) {
   const int n = n_;
   f.setZero();
-  link_state(x);
-  tau_ = x.segment(0, n);
-  dyn_.forward_dynamics(q_, qd_, tau_, qdd_);
-  minv_ = dyn_.last_mass_factor().solve(Matrix::Identity(n, n));
+  model_pass(x);
+  minv_ = dyn_.mass_factor().solve(Matrix::Identity(n, n));
   a_.setZero();
   b_.setZero();
   if (params_.jacobian == EkfJacobian::kFull) {
-    // A = dq''/dq, B = dq''/dq' by central differences of the forward dynamics.
-    const double h = params_.fd_step;
-    auto column = [&](bool velocity, int c, Matrix& out) {
-      qp_ = velocity ? qd_ : q_;
-      for (const double sign : {1.0, -1.0}) {
-        qp_(c) += sign * h;
-        dyn_.forward_dynamics(velocity ? q_ : qp_, velocity ? qp_ : qd_, tau_, sign > 0 ? qdd_plus_ : qdd_minus_);
-        qp_(c) -= sign * h;
-      }
-      out.col(c) = (qdd_plus_ - qdd_minus_) / (2.0 * h);
-    };
-    for (int c = 0; c < n; ++c) {
-      column(false, c, a_);
-      column(true, c, b_);
-    }
+    // A = dq''/dq = -M^{-1} dID/dq, B = dq''/dq' = -M^{-1} dID/dq' (exact tangents).
+    dyn_.derivatives(did_q_, did_qd_);
+    a_.noalias() = -minv_ * did_q_;
+    b_.noalias() = -minv_ * did_qd_;
   }
+  if (params_.payload) {
+    dyn_.payload_regressor(yp_);
+    qp_.noalias() = minv_ * yp_;  // -dq''/dm_p
+    for (int i = 0; i < n; ++i) f(n + i, ipay_) = k_(i) * qp_(i);
+  }
+  const int ip = iphi_, iv = iphi_ + n;
   for (int i = 0; i < n; ++i) {
     f(i, n + i) = 1.0;          // d tau / d tau'
-    f(2 * n + i, 3 * n + i) = 1.0;  // d phi / d phi'
-    f(3 * n + i, i) = -1.0 / j_(i);                 // d phi'' / d tau
-    f(3 * n + i, 3 * n + i) = -f_(i) / j_(i);       // d phi'' / d phi'
-    f(n + i, 3 * n + i) = -k_(i) * f_(i) / j_(i);   // K d phi'' / d phi'
+    f(ip + i, iv + i) = 1.0;  // d phi / d phi'
+    f(iv + i, i) = -1.0 / j_(i);                 // d phi'' / d tau
+    f(iv + i, iv + i) = -f_(i) / j_(i);       // d phi'' / d phi'
+    f(n + i, iv + i) = -k_(i) * f_(i) / j_(i);   // K d phi'' / d phi'
     f(n + i, i) = -k_(i) / j_(i);                    // K d phi'' / d tau
     for (int c = 0; c < n; ++c) {
       // -K dq''/d(.) through tau directly (M^{-1}) and through q = phi - tau/K, q' = phi' - tau'/K.
       f(n + i, c) += -k_(i) * minv_(i, c) + k_(i) * a_(i, c) / k_(c);
       f(n + i, n + c) += k_(i) * b_(i, c) / k_(c);
-      f(n + i, 2 * n + c) += -k_(i) * a_(i, c);
-      f(n + i, 3 * n + c) += -k_(i) * b_(i, c);
+      f(n + i, ip + c) += -k_(i) * a_(i, c);
+      f(n + i, iv + c) += -k_(i) * b_(i, c);
+      if (params_.disturbance) f(n + i, 2 * n + c) = -k_(i) * minv_(i, c);  // -K dq''/dd
     }
   }
 }
 
 void FlexibleJointEkf::riccati(const Matrix& p, Matrix& dp) {
   // P' = F P + P F^T + Q - P H^T R^{-1} H P   (eq. (32)-(33)), H = [0 I] selects phi, phi'.
-  const int m = 2 * n_;
-  tmp_.noalias() = fjac_ * p;
+  // F P by rows, from the structure of F (jacobian()): the tau and phi rows of F select the
+  // tau' and phi' rows of P, the d and m_p rows are zero, only the tau' rows are dense and
+  // the phi' rows have two diagonal blocks. Small products are coefficient-based (Eigen's
+  // blocked product costs more than it saves below ~16 x 16).
+  const int n = n_, m2 = 2 * n_, ip = iphi_, iv = iphi_ + n_;
+  const bool small = m_ <= 24;
+  tmp_.setZero();
+  tmp_.topRows(n) = p.middleRows(n, n);
+  if (small) {
+    tmp_.middleRows(n, n).noalias() = fjac_.middleRows(n, n).lazyProduct(p);
+  } else {
+    tmp_.middleRows(n, n).noalias() = fjac_.middleRows(n, n) * p;
+  }
+  tmp_.middleRows(ip, n) = p.middleRows(iv, n);
+  for (int i = 0; i < n; ++i) {
+    tmp_.row(iv + i) = fjac_(iv + i, i) * p.row(i) + fjac_(iv + i, iv + i) * p.row(iv + i);
+  }
   dp = tmp_ + tmp_.transpose();
-  dp.diagonal().array() += params_.q;
-  dp.noalias() -= (1.0 / params_.r) * (p.rightCols(m) * p.bottomRows(m));
+  dp.diagonal() += qdiag_;
+  if (small) {
+    dp.noalias() -= (1.0 / params_.r) * p.rightCols(m2).lazyProduct(p.bottomRows(m2));
+  } else {
+    dp.noalias() -= (1.0 / params_.r) * (p.rightCols(m2) * p.bottomRows(m2));
+  }
 }
 
 void FlexibleJointEkf::update(const Vector& u, const Vector& y, double dt) {
@@ -172,7 +234,8 @@ void FlexibleJointEkf::update(const Vector& u, const Vector& y, double dt) {
   fb_.qdd = params_.acceleration == LinkAcceleration::kModel ? qdd_ : differentiated;
   link_jerk(x_);
   fb_.tau = x_.segment(0, n_), fb_.taud = x_.segment(n_, n_);
-  fb_.phi = x_.segment(2 * n_, n_), fb_.phid = x_.segment(3 * n_, n_);
+  fb_.phi = x_.segment(iphi_, n_), fb_.phid = x_.segment(iphi_ + n_, n_);
+  if (params_.disturbance) d_ = x_.segment(2 * n_, n_);
 }
 
 }  // namespace plexus::algorithms

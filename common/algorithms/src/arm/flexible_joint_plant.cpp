@@ -13,6 +13,15 @@ namespace plexus::algorithms {
 FlexibleJointArmPlant::FlexibleJointArmPlant(const FlexibleJointArmParams& params)
     : params_(params), n_(params.model.dof()), dyn_(params.model) {
   validation::require_positive("flexible_joint_arm", "max_substep", params.max_substep);
+  if (params.torque_limit.size() != 0) {
+    if (params.torque_limit.size() != n_) {
+      validation::fail("flexible_joint_arm", "torque_limit size", "the joint count " + std::to_string(n_),
+                       static_cast<double>(params.torque_limit.size()));
+    }
+    for (int i = 0; i < n_; ++i) {
+      validation::require_positive("flexible_joint_arm", "torque_limit[" + std::to_string(i) + "]", params.torque_limit(i));
+    }
+  }
   k_.resize(n_), j_.resize(n_), f_.resize(n_);
   for (int i = 0; i < n_; ++i) {
     const ArmJoint& jt = params_.model.joints[static_cast<std::size_t>(i)];
@@ -21,7 +30,7 @@ FlexibleJointArmPlant::FlexibleJointArmPlant(const FlexibleJointArmParams& param
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(n_);
   state_ = {zero, zero, zero, zero};
   for (Eigen::VectorXd* v : {&x_, &k1_, &k2_, &k3_, &k4_, &tmp_}) *v = Eigen::VectorXd::Zero(4 * n_);
-  u_total_ = q_ = qd_ = tau_ = qdd_ = zero;
+  u_total_ = u_applied_ = q_ = qd_ = tau_ = qdd_ = zero;
   mass_ = Eigen::MatrixXd::Zero(n_, n_);
 }
 
@@ -66,7 +75,9 @@ void FlexibleJointArmPlant::step(const Eigen::VectorXd& u, double dt) {
 
 void FlexibleJointArmPlant::step(const Eigen::VectorXd& u, const Eigen::VectorXd& u_d, double dt) {
   if (!(dt > 0.0) || !u.allFinite()) return;
-  u_total_ = u;
+  u_applied_ = u;
+  if (params_.torque_limit.size() == n_) u_applied_ = u_applied_.cwiseMax(-params_.torque_limit).cwiseMin(params_.torque_limit);
+  u_total_ = u_applied_;
   if (u_d.size() == n_) u_total_ += u_d;
   const int substeps = std::max(1, static_cast<int>(std::ceil(dt / params_.max_substep - 1e-9)));
   const double h = dt / substeps;

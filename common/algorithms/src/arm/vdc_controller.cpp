@@ -88,6 +88,10 @@ VdcController::VdcController(const VdcParams& p) : params_(p), n_(p.model.dof())
   }
   validation::require_positive(kWhere, "derivative_step", p.derivative_step);
   validation::require_positive(kWhere, "step", p.step);
+  if (p.torque_limit.size() != 0) require_vector("torque_limit", p.torque_limit, n_, Sign::positive);
+  if (!(p.disturbance_compensation >= 0.0 && p.disturbance_compensation <= 1.0)) {
+    validation::fail(kWhere, "disturbance_compensation", "in [0, 1]", p.disturbance_compensation);
+  }
 
   links_.resize(static_cast<std::size_t>(n_));
   stiffness_.resize(n_), motor_inertia_.resize(n_), friction_.resize(n_);
@@ -101,22 +105,30 @@ VdcController::VdcController(const VdcParams& p) : params_(p), n_(p.model.dof())
     k.lo = (p.theta_lower * k.nominal).cwiseMin(p.theta_upper * k.nominal);
     k.hi = (p.theta_lower * k.nominal).cwiseMax(p.theta_upper * k.nominal);
     k.v.setZero(), k.vr.setZero(), k.dvr.setZero(), k.fr.setZero(), k.y.setZero();
+    k.inertia = spatial::spatial_inertia(k.nominal);
     k.base_rotation.setIdentity();
   }
   const Eigen::VectorXd z = Eigen::VectorXd::Zero(n_);
   qr_d_ = qr_dd_ = qr_ddd_ = qr_dddd_ = tau_od_ = ts_ = ts_rate_ = u_ = z;
-  q_e_ = qd_e_ = qr_d_e_ = qr_dd_e_ = tau_od_1_ = tau_od_2_ = z;
+  q_e_ = qd_e_ = qr_d_e_ = qr_dd_e_ = tau_od_1_ = tau_od_2_ = dist_ = saturated_ = z;
   reset();
 }
 
 void VdcController::reset() {
   for (Link& k : links_) k.theta = params_.theta_initial * k.nominal;
   ts_.setZero();
+  saturated_.setZero();
 }
 
 void VdcController::required_link_torques(const Eigen::VectorXd& q, const Eigen::VectorXd& qd,
                                           const Eigen::VectorXd& qr_d, const Eigen::VectorXd& qr_dd,
                                           Eigen::VectorXd& tau_od) {
+  for (Link& k : links_) k.inertia = spatial::spatial_inertia(k.theta);
+  link_torques(q, qd, qr_d, qr_dd, tau_od, true);
+}
+
+void VdcController::link_torques(const Eigen::VectorXd& q, const Eigen::VectorXd& qd, const Eigen::VectorXd& qr_d,
+                                 const Eigen::VectorXd& qr_dd, Eigen::VectorXd& tau_od, bool regressor) {
   const ArmModel& m = params_.model;
   // Base -> tip: frames, V, V_r and d/dt V_r (eqs. (11)-(13)); the base does not move.
   spatial::Vector6 v_parent = spatial::Vector6::Zero(), vr_parent = v_parent, dvr_parent = v_parent;
@@ -147,9 +159,15 @@ void VdcController::required_link_torques(const Eigen::VectorXd& q, const Eigen:
     joint_twist(kAngular) = qd(i);
     k.dvr = spatial::velocity_to_child(k.from_parent, dvr_parent) - spatial::cross_motion(joint_twist, vr_in);
     k.dvr(kAngular) += qr_dd(i);
-    // Eq. (8)-(9): F_r* = Y theta^ + K_B (V_r - V), gravity in {B_i}.
-    k.y = spatial::link_regressor(k.dvr, k.vr, k.v, k.base_rotation.transpose() * m.gravity);
-    k.fr = k.y * k.theta + params_.k_b(i) * (k.vr - k.v);  // F_r* for now; (15) adds the child below
+    // Eq. (8)-(9): F_r* = Y theta^ + K_B (V_r - V), gravity in {B_i}, evaluated as
+    // Y theta^ = M_B(theta^) (dV_r - [g_B; 0] + crm(V) V_r) + crf(V) M_B(theta^) V_r (spatial.hpp);
+    // Y itself only where the adaptation needs it.
+    const Eigen::Vector3d gravity_b = k.base_rotation.transpose() * m.gravity;
+    if (regressor) k.y = spatial::link_regressor(k.dvr, k.vr, k.v, gravity_b);
+    spatial::Vector6 a = k.dvr + spatial::cross_motion(k.v, k.vr);
+    a.head<3>() -= gravity_b;
+    k.fr.noalias() = k.inertia * a;
+    k.fr += spatial::cross_force(k.v, k.inertia * k.vr) + params_.k_b(i) * (k.vr - k.v);  // F_r*; (15) adds the child below
     v_parent = k.v, vr_parent = k.vr, dvr_parent = k.dvr, r_parent = k.base_rotation;
   }
   // Tip -> base: B_iF_r = F_r*_i + B_iU_{B_{i+1}} B_{i+1}F_r (eq. (15)); tau_od = Z^T F_r.
@@ -182,6 +200,12 @@ const Eigen::VectorXd& VdcController::step(const ArmReferenceSample& ref, const 
   // tau_od' and tau_od'' (header comment): the link recursion at t = e and 2e along the
   // second-order Taylor path of (q, q', q_r', q_r''), then at t = 0 last, so the links keep
   // the nominal pass for the adaptation below.
+  for (Link& k : links_) k.inertia = spatial::spatial_inertia(k.theta);  // M_B(theta^) of this step
+  if (p.disturbance_compensation > 0.0) {
+    // d^ = ID_theta^(q, q', q'') - tau (the link recursion with q_r' = q', q_r'' = q'').
+    link_torques(fb.q, fb.qd, fb.qd, fb.qdd, dist_, false);
+    dist_ = p.disturbance_compensation * (dist_ - fb.tau);
+  }
   const double e = p.derivative_step;
   for (const int m : {1, 2}) {
     const double t = m * e, t2 = 0.5 * t * t;
@@ -189,19 +213,21 @@ const Eigen::VectorXd& VdcController::step(const ArmReferenceSample& ref, const 
     qd_e_ = fb.qd + t * fb.qdd + t2 * fb.qddd;
     qr_d_e_ = qr_d_ + t * qr_dd_ + t2 * qr_ddd_;
     qr_dd_e_ = qr_dd_ + t * qr_ddd_ + t2 * qr_dddd_;
-    required_link_torques(q_e_, qd_e_, qr_d_e_, qr_dd_e_, m == 1 ? tau_od_1_ : tau_od_2_);
+    link_torques(q_e_, qd_e_, qr_d_e_, qr_dd_e_, m == 1 ? tau_od_1_ : tau_od_2_, false);
   }
-  required_link_torques(fb.q, fb.qd, qr_d_, qr_dd_, tau_od_);
-  adapt();
+  link_torques(fb.q, fb.qd, qr_d_, qr_dd_, tau_od_, true);  // with Y, for the adaptation
+  if (saturated_.cwiseAbs().maxCoeff() == 0.0) adapt();  // anti-windup: held while a drive saturates
   for (int i = 0; i < n_; ++i) {
     const double ev = qr_d_(i) - fb.qd(i);      // q_r' - q'
     const double ea = qr_dd_(i) - fb.qdd(i);    // q_r'' - q''
     const double ej = qr_ddd_(i) - fb.qddd(i);  // q_r''' - q'''
-    ts_rate_(i) = p_function_step(ts_(i), p.k_i(i), ev, p.ts_min(i), p.ts_max(i), p.step);     // (21)
+    // (21); anti-windup: no integration towards a limit the output was clamped at.
+    const bool hold = saturated_(i) * ev > 0.0;
+    ts_rate_(i) = hold ? 0.0 : p_function_step(ts_(i), p.k_i(i), ev, p.ts_min(i), p.ts_max(i), p.step);
     const double ts_acc = (ts_(i) > p.ts_min(i) && ts_(i) < p.ts_max(i)) ? p.k_i(i) * ea : 0.0;
     const double taud_od = (4.0 * tau_od_1_(i) - 3.0 * tau_od_(i) - tau_od_2_(i)) / (2.0 * e);
     const double taudd_od = (tau_od_(i) - 2.0 * tau_od_1_(i) + tau_od_2_(i)) / (e * e);
-    const double tau_r = tau_od_(i) + p.k_p(i) * ev + ts_(i);                                   // (20)
+    const double tau_r = tau_od_(i) - dist_(i) + p.k_p(i) * ev + ts_(i);                       // (20)
     const double taud_r = taud_od + p.k_p(i) * ea + ts_rate_(i);
     const double taudd_r = taudd_od + p.k_p(i) * ej + ts_acc;
     const double phi_d = fb.q(i) + tau_r / stiffness_(i);                                       // (22)
@@ -213,6 +239,12 @@ const Eigen::VectorXd& VdcController::step(const ArmReferenceSample& ref, const 
                            p.lambda_tau(i) * (taud_r - fb.taud(i));
     u_(i) = motor_inertia_(i) * phir_dd + friction_(i) * phir_d + p.k_phi(i) * (phir_d - fb.phid(i)) + tau_r +
             p.k_tau(i) * (tau_r - fb.tau(i));                                                   // (18)
+    saturated_(i) = 0.0;
+    if (p.torque_limit.size() != 0) {
+      const double limit = p.torque_limit(i);
+      if (u_(i) > limit) u_(i) = limit, saturated_(i) = 1.0;
+      if (u_(i) < -limit) u_(i) = -limit, saturated_(i) = -1.0;
+    }
   }
   return u_;
 }

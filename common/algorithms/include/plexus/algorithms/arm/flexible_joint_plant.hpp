@@ -25,6 +25,9 @@ namespace plexus::algorithms {
 struct FlexibleJointArmParams {
   ArmModel model = ArmModel::paper_2dof();  ///< the true arm (payload included)
   double max_substep = 1e-4;                ///< s, > 0: longest RK4 sub-step
+  /// Actuator (drive) torque limit per joint, N m, > 0: the motor torque u is clamped to
+  /// [-limit, limit] before it acts (u_d, a disturbance, is not). Empty: none (the paper).
+  Eigen::VectorXd torque_limit = Eigen::VectorXd();
 };
 
 struct FlexibleJointArmState {
@@ -46,11 +49,14 @@ class FlexibleJointArmPlant {
   /// q'' = 0 and tau' = 0 at the start. reset_at_rest(q) is reset_in_motion(q, 0).
   void reset_in_motion(const Eigen::VectorXd& q, const Eigen::VectorXd& qd);
 
-  /// Advances by dt seconds with motor torque u (and disturbance u_d) held. No allocation.
+  /// Advances by dt seconds with motor torque u (clamped to the torque limit) and
+  /// disturbance u_d held. No allocation.
   void step(const Eigen::VectorXd& u, double dt);
   void step(const Eigen::VectorXd& u, const Eigen::VectorXd& u_d, double dt);
 
   const FlexibleJointArmState& state() const { return state_; }
+  /// The motor torque applied during the last step (u after the torque limit).
+  const Eigen::VectorXd& applied_torque() const { return u_applied_; }
   /// Transmitted torque tau = K (phi - q).
   void spring_torque(Eigen::VectorXd& tau) const;
   /// Total energy: kinetic (links + motors) + spring + gravity potential (for tests).
@@ -67,7 +73,7 @@ class FlexibleJointArmPlant {
   Eigen::VectorXd k_, j_, f_;
   FlexibleJointArmState state_;
   Eigen::VectorXd no_disturbance_;
-  Eigen::VectorXd x_, k1_, k2_, k3_, k4_, tmp_, u_total_;
+  Eigen::VectorXd x_, k1_, k2_, k3_, k4_, tmp_, u_total_, u_applied_;
   Eigen::VectorXd q_, qd_, tau_, qdd_;
   Eigen::MatrixXd mass_;
 };

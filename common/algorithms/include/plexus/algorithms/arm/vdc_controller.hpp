@@ -60,6 +60,19 @@ struct VdcParams {
   double theta_initial = 1.0;  ///< theta^(0) as a fraction of the nominal value, in [lower, upper]
   double step = 1e-3;                  ///< s, controller period, > 0
   double derivative_step = 1e-4;       ///< s, > 0: spacing e of the tau_od', tau_od'' differences
+  /// Disturbance compensation (not in the paper; issue 18, docs/algorithms/arm.md "Model
+  /// error"): tau_r gets - d^, d^ = ID_theta^(q, q', q'') - tau the residual of the adapted
+  /// link model at the observer's estimate (the observer's disturbance state when it has
+  /// one), scaled by this factor in [0, 1] (0: the paper's (20)).
+  double disturbance_compensation = 0.0;
+  /// Drive torque limit per joint (N m, > 0), empty: none (the paper). The output u is
+  /// clamped to it, and anti-windup (docs/algorithms/arm.md "Torque limit"): while a joint's
+  /// output was clamped at the previous step, its integral t_s (21) does not integrate
+  /// towards the limit, and the parameter adaptation (10) of every link is held.
+  Eigen::VectorXd torque_limit;
+
+  /// disturbance_compensation of the robust tuning (docs/algorithms/arm.md "Model error").
+  static constexpr double kRobustDisturbanceCompensation = 0.5;
 
   /// Table 3 gains for the paper's 2-DoF arm.
   static VdcParams paper_2dof();
@@ -94,6 +107,10 @@ class VdcController {
   const spatial::Vector13& theta_max(int i) const { return links_[static_cast<std::size_t>(i)].hi; }
   const spatial::Vector13& theta_nominal(int i) const { return links_[static_cast<std::size_t>(i)].nominal; }
   const Eigen::VectorXd& ts() const { return ts_; }
+  /// d^ of the last step (zero without disturbance compensation).
+  const Eigen::VectorXd& disturbance() const { return dist_; }
+  /// Per joint: +1 / -1 when the last output was clamped at the upper / lower limit, else 0.
+  const Eigen::VectorXd& saturation() const { return saturated_; }
   const VdcParams& params() const { return params_; }
 
  private:
@@ -103,16 +120,21 @@ class VdcController {
     spatial::Vector6 v, vr, dvr, fr;
     spatial::Regressor y;
     spatial::Vector13 theta, lo, hi, nominal;
+    spatial::Matrix6 inertia;  ///< M_B(theta^), refreshed at each step
   };
 
   void adapt();
+  /// The recursion of required_link_torques with M_B(theta^) as it stands; the regressors
+  /// Y_i (for the adaptation) only when `regressor`.
+  void link_torques(const Eigen::VectorXd& q, const Eigen::VectorXd& qd, const Eigen::VectorXd& qr_d,
+                    const Eigen::VectorXd& qr_dd, Eigen::VectorXd& tau_od, bool regressor);
 
   VdcParams params_;
   int n_;
   std::vector<Link> links_;
   Eigen::VectorXd stiffness_, motor_inertia_, friction_;
   Eigen::VectorXd qr_d_, qr_dd_, qr_ddd_, qr_dddd_, tau_od_, ts_, ts_rate_, u_;
-  Eigen::VectorXd q_e_, qd_e_, qr_d_e_, qr_dd_e_, tau_od_1_, tau_od_2_;
+  Eigen::VectorXd q_e_, qd_e_, qr_d_e_, qr_dd_e_, tau_od_1_, tau_od_2_, dist_, saturated_;
 };
 
 }  // namespace plexus::algorithms
