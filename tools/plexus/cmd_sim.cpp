@@ -55,7 +55,7 @@ int run_sim(const SimOptions& o) {
   for (const auto& [robot, src] : sc.sources)
     throw InputError(src.where + ": robot " + robot + "'s source is " + scenario::to_string(src.type) +
                      "; `plexus sim` simulates every robot: run it with `plexus launch` (clock.mode: realtime)");
-  if (o.seeds > 0) return run_seed_sweep({o.scenario, overrides, o.seeds, o.out, o.json, o.quiet});
+  if (o.seeds > 0) return run_seed_sweep({o.scenario, overrides, o.seeds, o.out, o.json, o.quiet, wire_field_units()});
 
   scenario::ProgressBar bar(!o.quiet);
   const int64_t start = monotonic_ns();

@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "plexus/scenario/run_folder.hpp"
 #include "plexus/scenario/scenario.hpp"
 #include "plexus/scenario/signal_log.hpp"
 
@@ -19,13 +20,17 @@ struct RunSummary {
   std::vector<std::string> lines;                               ///< text lines after the metrics
 };
 
+/// The unit of each field of each IDL message type, as the wire description declares it
+/// (common/distributed/src/wire_types.cpp): the units of the run folder's signals.json.
+scenario::FieldUnits wire_field_units();
+
 /// Evaluates the run, writes the run folder (`out`, or runs/<scenario>-<time>), prints the
 /// metrics and digest (text, or one JSON object with `--json`), the run folder line unless
 /// quiet, and every failed expectation. Returns 0 if every expectation holds, else 1.
 int finish_run(const scenario::Scenario& sc, const scenario::RunLog& log, double wall_seconds, const std::string& out,
                bool json, bool quiet, const RunSummary& summary);
 
-/// `plexus report` (and `launch --report`): writes the plots and report.md of a run folder,
+/// `plexus report` (and `launch --report`): writes the plots, report.md and report.html of a run folder,
 /// prints the metrics-against-expectations table (the paper comparison) and the files.
 /// Returns the number of FAIL rows.
 int print_report(const std::string& run_dir, bool to_stderr = false);
