@@ -293,7 +293,8 @@ std::optional<Figure> paper002(const ReportInputs& in, const std::string& robot)
   f.file = "plots/paper002." + robot + ".png";
   f.title = "Paper 002 (Zhao et al. 2006), Fig. 4: tilt estimates of " + robot + " and their error";
   f.caption = "Top: each tilt estimate against the true tilt (dashed). Bottom: the tilt estimate error (estimate - "
-              "truth, the truth at the estimate's step) with the filter's own 1-sigma band (dashed) where it gives one" +
+              "truth, the truth at the estimate's step) with the filter's own 1-sigma band (dashed) where it gives one "
+              "and at most two filters are compared" +
               std::string(window ? "; over the window of the scenario's metrics." : ".");
   f.section = "paper";
   f.robot = robot;
@@ -331,7 +332,7 @@ std::optional<Figure> paper002(const ReportInputs& in, const std::string& robot)
     const std::string label = e->name + (filter.empty() ? "" : " (" + filter + ")");
     tilt.curves.push_back({data, "1", "2", label, Curve::Style::line, colour});
     err.curves.push_back({data, "1", "3", label, Curve::Style::line, colour});
-    if (has_std) {
+    if (has_std && estimates.size() <= 2) {  // more bands than that hide the errors
       err.curves.push_back({data, "1", "4", "+-1 sigma (" + e->name + " theta_std)", Curve::Style::dashed, colour});
       err.curves.push_back({data, "1", "(-$4)", "", Curve::Style::dashed, colour});
     }

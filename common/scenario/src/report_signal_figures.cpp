@@ -86,13 +86,29 @@ Figure trajectory_figure(const ReportInputs& in, const std::string& robot) {
   return f;
 }
 
-Figure series_figure(const ReportTable& t) {
+/// The unit of a metric's series: from the suffix of its name (report_panels.hpp), else from
+/// its type: a ratio is dimensionless, a value_* statistic has the unit of its field.
+std::optional<std::string> series_unit(const ReportInputs& in, const std::string& metric) {
+  if (auto unit = metric_unit(metric)) return unit;
+  const YAML::Node metrics = in.scenario["metrics"];
+  if (!metrics || !metrics.IsSequence()) return std::nullopt;
+  for (const auto& m : metrics) {
+    const std::string type = m["type"] ? m["type"].Scalar() : "";
+    if ((m["name"] ? m["name"].Scalar() : type) != metric) continue;
+    if (type == "ratio" || (type.size() > 6 && type.compare(type.size() - 6, 6, "_ratio") == 0)) return std::string();
+    if (type.rfind("value_", 0) == 0 && m["signal"] && m["field"] && !m["scale"])
+      if (const ReportTable* t = in.signal(m["signal"].Scalar())) return t->unit(m["field"].Scalar());
+  }
+  return std::nullopt;
+}
+
+Figure series_figure(const ReportInputs& in, const ReportTable& t) {
   Figure f;
   f.file = "plots/series." + t.stem + ".png";
   f.title = "metric " + t.name + ": the series it summarises";
   f.caption = "The time series behind the metric " + t.name + " (metrics.json holds its summary).";
   f.section = "series";
-  const std::optional<std::string> unit = metric_unit(t.name);
+  const std::optional<std::string> unit = series_unit(in, t.name);
   const std::string quantity = unit && !unit->empty() && !quantity_of_unit(*unit).empty() ? quantity_of_unit(*unit) : t.name;
   Panel p;
   p.title = t.name;
@@ -114,7 +130,7 @@ std::vector<Figure> signal_figures(const ReportInputs& in) {
   }
   for (const auto& t : in.signals)
     if (t.robot.empty()) out.push_back(signal_figure(in, t));
-  for (const auto& t : in.series) out.push_back(series_figure(t));
+  for (const auto& t : in.series) out.push_back(series_figure(in, t));
   return out;
 }
 
