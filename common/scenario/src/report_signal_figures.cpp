@@ -109,11 +109,10 @@ Figure series_figure(const ReportInputs& in, const ReportTable& t) {
   f.caption = "The time series behind the metric " + t.name + " (metrics.json holds its summary).";
   f.section = "series";
   const std::optional<std::string> unit = series_unit(in, t.name);
-  const std::string quantity = unit && !unit->empty() && !quantity_of_unit(*unit).empty() ? quantity_of_unit(*unit) : t.name;
   Panel p;
   p.title = t.name;
   p.xlabel = "t [s]";
-  p.ylabel = axis_label(quantity, unit);
+  p.ylabel = axis_label(t.name, unit);  // the metric's own name says more than "length"
   p.curves.push_back({t.path, "1", "2", t.name, Curve::Style::line, 1});
   f.panels.push_back(std::move(p));
   return f;
