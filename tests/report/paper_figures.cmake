@@ -1,14 +1,30 @@
-# plexus sim then plexus report on one scenario: the paper's figure is there, a real PNG,
-# shown in report.html, and the comparison table names the paper in its "paper" column.
-#   cmake -DPLEXUS=... -DSCENARIO=... -DOUT=dir -DFIGURE=paper001.r1.png -DPAPER=001 -P paper_figures.cmake
-file(REMOVE_RECURSE ${OUT})
-execute_process(COMMAND ${PLEXUS} sim ${SCENARIO} --quiet --out ${OUT} RESULT_VARIABLE sim_rc ERROR_VARIABLE err)
-if(NOT sim_rc EQUAL 0 AND NOT sim_rc EQUAL 1)
-  message(FATAL_ERROR "plexus sim: exit ${sim_rc}: ${err}")
+# plexus sim then plexus report on one scenario (or, with -DLAUNCH="<launch arguments>",
+# plexus launch --report): the paper's figure is there, a real PNG, shown in report.html, and
+# the comparison table names the paper in its "paper" column.
+#   cmake -DPLEXUS=... -DSCENARIO=... -DOUT=dir -DFIGURE=paper001.r1.png -DPAPER=001 [-DLAUNCH=--dds|fast|--domain|90]
+#         -P paper_figures.cmake
+file(REMOVE_RECURSE ${OUT} ${OUT}.sim)
+if(DEFINED LAUNCH)
+  string(REPLACE "|" ";" LAUNCH "${LAUNCH}")
+  # The same exit code as plexus sim of the same file (lockstep: the same run).
+  execute_process(COMMAND ${PLEXUS} sim ${SCENARIO} --quiet --out ${OUT}.sim RESULT_VARIABLE sim_rc OUTPUT_QUIET ERROR_QUIET)
+  execute_process(COMMAND ${PLEXUS} launch ${SCENARIO} ${LAUNCH} --quiet --report --out ${OUT}
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL sim_rc)
+    message(FATAL_ERROR "plexus launch --report: exit ${rc}, plexus sim ${sim_rc}: ${out} ${err}")
+  endif()
+else()
+  execute_process(COMMAND ${PLEXUS} sim ${SCENARIO} --quiet --out ${OUT} RESULT_VARIABLE sim_rc ERROR_VARIABLE err)
+  if(NOT sim_rc EQUAL 0 AND NOT sim_rc EQUAL 1)
+    message(FATAL_ERROR "plexus sim: exit ${sim_rc}: ${err}")
+  endif()
+  execute_process(COMMAND ${PLEXUS} report ${OUT} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL sim_rc)
+    message(FATAL_ERROR "plexus report: exit ${rc}, plexus sim ${sim_rc}: ${out} ${err}")
+  endif()
 endif()
-execute_process(COMMAND ${PLEXUS} report ${OUT} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if(NOT rc EQUAL sim_rc)
-  message(FATAL_ERROR "plexus report: exit ${rc}, plexus sim ${sim_rc}: ${out} ${err}")
+if(NOT EXISTS ${OUT}/report.html)
+  message(FATAL_ERROR "no report.html in ${OUT}")
 endif()
 set(png ${OUT}/plots/${FIGURE})
 if(NOT EXISTS ${png})

@@ -1,7 +1,7 @@
 # plexus report (issue 19, "The report"): report.html in headless Chromium (report_html.sh:
 # the table and every figure rendered, a screenshot that is not blank, and the check shown to
-# catch a missing figure and an empty table), and each paper's figure from its own
-# single-family scenario (paper_figures.cmake). The grouping of fields into panels and the
+# catch a missing figure and an empty table), each paper's figure from its own single-family
+# scenario (paper_figures.cmake), and the same from plexus launch --report. The grouping of fields into panels and the
 # titles, labels and units of every figure are unit tests (report_figures_test, label unit).
 set(report_runs ${CMAKE_BINARY_DIR}/test-runs/report)
 add_test(NAME report.html_main_job
@@ -26,3 +26,11 @@ foreach(case "icr_terrain_switch_akf;paper001.r1.png;001" "icr_terrain_switch_pr
                    -P ${CMAKE_CURRENT_LIST_DIR}/paper_figures.cmake)
   set_tests_properties(report.paper_figure.${scenario} PROPERTIES LABELS "report" TIMEOUT 300)
 endforeach()
+
+# plexus launch --report writes the same report: balance_ukf_ekf over DDS (domain 90).
+add_test(NAME report.launch_html
+         COMMAND ${CMAKE_COMMAND} -DPLEXUS=$<TARGET_FILE:plexus> -DSCENARIO=${PROJECT_SOURCE_DIR}/deploy/scenarios/balance_ukf_ekf.yaml
+                 -DOUT=${report_runs}/launch_html -DFIGURE=paper002.r1.png -DPAPER=002 -DLAUNCH=--dds|fast|--domain|90
+                 -P ${CMAKE_CURRENT_LIST_DIR}/paper_figures.cmake)
+set_tests_properties(report.launch_html PROPERTIES LABELS "report;multiprocess" TIMEOUT 300
+                     RESOURCE_LOCK plexus_dds_domain_90)

@@ -11,8 +11,9 @@
 #     canvas and counts the pixels that differ from the background);
 #  4. the check itself can fail: with one figure's PNG removed it reports a broken image,
 #     with the table's rows removed it reports an empty table.
-# Chromium runs as root with --no-sandbox and every flag that keeps it off the network,
-# each run in a fresh --user-data-dir removed on exit.
+# Chromium runs as root with --no-sandbox and every flag that keeps it off the network (and
+# a host resolver that resolves no name: the pages are local files), each run in a fresh
+# --user-data-dir removed on exit.
 set -u
 plexus=$1 scenario=$2 out=$3 expect_rows=$4 paper_figures=$5
 shift 5
@@ -29,7 +30,8 @@ chrome() {  # chrome ARGS... URL: one headless run with a fresh profile
   profiles+=("$profile")
   timeout 120 "$chromium_bin" --headless --no-sandbox --disable-gpu --disable-quic --no-first-run \
     --disable-background-networking --disable-component-update --disable-sync --disable-extensions \
-    --disable-default-apps --no-default-browser-check --mute-audio --user-data-dir="$profile" \
+    --disable-default-apps --no-default-browser-check --mute-audio --no-proxy-server \
+    --host-resolver-rules="MAP * ~NOTFOUND" --user-data-dir="$profile" \
     --virtual-time-budget=10000 "$@" 2>>"$out/chromium.log"
 }
 
