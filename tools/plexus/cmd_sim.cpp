@@ -59,7 +59,7 @@ int run_sim(const SimOptions& o) {
   // The QoS profiles it names, as `plexus launch` checks them (sim itself runs without DDS).
   const std::string qos_file = o.qos_file.empty() ? rt::default_qos_file() : o.qos_file;
   check_qos_names(sc, rt::QosProfiles::load(qos_file), qos_file);
-  if (o.seeds > 0) return run_seed_sweep({o.scenario, overrides, o.seeds, o.out, o.json, o.quiet});
+  if (o.seeds > 0) return run_seed_sweep({o.scenario, overrides, o.seeds, o.out, o.json, o.quiet, wire_field_units()});
 
   const auto dir = scenario::prepare_run_folder(o.out, sc.name);
   log_scenario_warnings(sc, dir);

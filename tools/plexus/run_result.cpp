@@ -6,16 +6,27 @@
 #include <fstream>
 #include <iostream>
 
+#include "plexus/distributed/wire.hpp"
 #include "plexus/scenario/evaluation.hpp"
 #include "plexus/scenario/report.hpp"
 #include "plexus/scenario/run_folder.hpp"
 
 namespace plexus::cli {
 
+scenario::FieldUnits wire_field_units() {
+  return [](const std::string& message, const std::string& field) -> std::optional<std::string> {
+    const distributed::WireType* type = distributed::find_wire_type(message);
+    if (!type) return std::nullopt;
+    for (const auto& slot : type->slots)
+      if (slot.field == field) return std::string(slot.unit);
+    return std::nullopt;
+  };
+}
+
 int finish_run(const scenario::Scenario& sc, const scenario::RunLog& log, double wall_seconds,
                const std::filesystem::path& dir, bool json, bool quiet, const RunSummary& summary) {
   const scenario::Evaluation ev = scenario::evaluate(sc, log);
-  scenario::write_run_folder(dir, sc, log, ev, wall_seconds);
+  scenario::write_run_folder(dir, sc, log, ev, wall_seconds, wire_field_units());
   if (!summary.extra.empty()) std::ofstream(dir / "launch.json") << summary.extra.dump(2) << "\n";
   if (json) {
     nlohmann::ordered_json j = ev.to_json();
@@ -48,7 +59,7 @@ void log_scenario_warnings(const scenario::Scenario& sc, const std::filesystem::
 int print_report(const std::string& run_dir, bool to_stderr) {
   const auto r = scenario::write_report(run_dir);
   std::FILE* out = to_stderr ? stderr : stdout;
-  std::fprintf(out, "\n%s\nreport: %s\n", r.table.c_str(), r.markdown.string().c_str());
+  std::fprintf(out, "\n%s\nreport: %s\n        %s\n", r.table.c_str(), r.html.string().c_str(), r.markdown.string().c_str());
   for (const auto& p : r.plots) std::fprintf(out, "  %s\n", p.string().c_str());
   return r.failed;
 }

@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "plexus/scenario/run_folder.hpp"
 #include "plexus/scenario/scenario.hpp"
 #include "plexus/scenario/signal_log.hpp"
 
@@ -19,6 +20,10 @@ struct RunSummary {
   nlohmann::ordered_json extra = nlohmann::ordered_json::object();  ///< merged into --json; also <run folder>/launch.json
   std::vector<std::string> lines;                               ///< text lines after the metrics
 };
+
+/// The unit of each field of each IDL message type, as the wire description declares it
+/// (common/distributed/src/wire_types.cpp): the units of the run folder's signals.json.
+scenario::FieldUnits wire_field_units();
 
 /// Evaluates the run, writes the run folder `dir` (from scenario::prepare_run_folder), prints
 /// the metrics and digest (text, or one JSON object with `--json`), the run folder line unless
@@ -35,7 +40,7 @@ int interrupted_run(const std::string& command, int signal, const std::filesyste
 /// details (written there by finish_run).
 void log_scenario_warnings(const scenario::Scenario& sc, const std::filesystem::path& dir);
 
-/// `plexus report` (and `launch --report`): writes the plots and report.md of a run folder,
+/// `plexus report` (and `launch --report`): writes the plots, report.md and report.html of a run folder,
 /// prints the metrics-against-expectations table (the paper comparison) and the files.
 /// Returns the number of FAIL rows.
 int print_report(const std::string& run_dir, bool to_stderr = false);

@@ -78,7 +78,7 @@ int run_seed_sweep(const SeedSweepOptions& o) {
     const scenario::RunLog log = scenario::run_scenario(sc);
     const double wall = static_cast<double>(monotonic_ns() - t0) * 1e-9;
     const scenario::Evaluation ev = scenario::evaluate(sc, log);
-    scenario::write_run_folder(dir / ("seed-" + std::to_string(seed)), sc, log, ev, wall);
+    scenario::write_run_folder(dir / ("seed-" + std::to_string(seed)), sc, log, ev, wall, o.units);
     seeds.push_back(seed);
     for (const auto& [name, r] : ev.metrics) {
       if (i == 0) names.push_back(name);

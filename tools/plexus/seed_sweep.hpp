@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "plexus/scenario/overrides.hpp"
+#include "plexus/scenario/run_folder.hpp"
 
 namespace plexus::cli {
 
@@ -35,6 +36,7 @@ struct SeedSweepOptions {
   std::string out;      ///< folder of the sweep: seeds.json and seed-<s>/ per run
   bool json = false;
   bool quiet = false;
+  scenario::FieldUnits units;  ///< field units for each run folder's signals.json (wire_field_units())
 };
 
 /// Runs the sweep, prints the statistics (a table, or one JSON object with `json`:

@@ -16,6 +16,8 @@ PACKAGES=(
   libgtest-dev libgmock-dev libbenchmark-dev clang libclang-rt-14-dev
   # tools used at run time: plots, loop-jitter baseline, network namespaces for multi-host tests
   gnuplot-nox rt-tests iproute2 procps
+  # the report page's test: headless Chromium renders report.html (tests/report)
+  chromium chromium-driver
 )
 
 SUDO=""

@@ -6,6 +6,8 @@
 #include <fstream>
 #include <system_error>
 
+#include <nlohmann/json.hpp>
+
 #include "plexus/base/input_error.hpp"
 
 namespace plexus::scenario {
@@ -93,6 +95,24 @@ void write_summary(const fs::path& p, const Scenario& sc, const Evaluation& ev, 
   }
 }
 
+/// signals.json: for each signal, its file, producer, IDL message and the unit of each field.
+void write_signal_index(const fs::path& p, const RunLog& log, const FieldUnits& units) {
+  nlohmann::ordered_json index = nlohmann::ordered_json::object();
+  for (const auto& trace : log.signals) {
+    const SignalSpec& spec = trace.spec;
+    nlohmann::ordered_json field_units = nlohmann::ordered_json::object();
+    for (const auto& f : spec.fields) {
+      const std::optional<std::string> unit = units && !spec.message.empty() ? units(spec.message, f) : std::nullopt;
+      field_units[f] = unit ? nlohmann::ordered_json(*unit) : nlohmann::ordered_json(nullptr);
+    }
+    index[spec.name] = {{"file", "signals/" + signal_file_name(spec.name)},
+                        {"producer", spec.producer},
+                        {"message", spec.message},
+                        {"units", std::move(field_units)}};
+  }
+  open_out(p) << index.dump(2) << '\n';
+}
+
 }  // namespace
 
 fs::path default_run_folder(const std::string& scenario_name) {
@@ -163,7 +183,7 @@ std::string signal_file_name(const std::string& signal) {
 }
 
 void write_run_folder(const fs::path& dir, const Scenario& scenario, const RunLog& log, const Evaluation& evaluation,
-                      double wall_seconds) {
+                      double wall_seconds, const FieldUnits& units) {
   std::error_code ec;
   fs::create_directories(dir / "signals", ec);
   if (!ec) fs::create_directories(dir / "series", ec);
@@ -179,6 +199,7 @@ void write_run_folder(const fs::path& dir, const Scenario& scenario, const RunLo
     write_signal_csv(dir / "signals" / signal_file_name(trace.spec.name), trace, log.base_step);
   for (const auto& [name, r] : evaluation.metrics)
     if (!r.series.empty()) write_series_csv(dir / "series" / (name + ".csv"), name, r);
+  write_signal_index(dir / "signals.json", log, units);
   open_out(dir / "metrics.json") << evaluation.to_json().dump(2) << '\n';
   write_summary(dir / "summary.md", scenario, evaluation, wall_seconds);
   mark_run_folder(dir, "complete");

@@ -356,6 +356,7 @@ struct Loader {
       ScenarioMetric m;
       m.type = entry.required<std::string>("type");
       m.name = entry.optional<std::string>("name", m.type);
+      m.paper = entry.optional<std::string>("paper", "");  // the published figure it reproduces (report table)
       const MetricType* type = find_metric_type(m.type);
       if (!type) {
         std::vector<std::string> known;

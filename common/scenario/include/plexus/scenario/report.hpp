@@ -1,15 +1,18 @@
-// `plexus report RUN_DIR`: plots and a metrics table for a run folder (run_folder.hpp).
+// `plexus report RUN_DIR`: the figures and the comparison table of a run folder (run_folder.hpp).
 //
 // Writes, inside the run folder:
-//   plots/<signal>.png             each field of a signal against time; for a signal of a
-//                                  robot other than its state, the state's fields of the
-//                                  same name are overlaid dashed (estimates vs truth)
-//   plots/<robot>.trajectory.png   y against x of the robot's state and of every other
-//                                  signal of that robot with x and y (trajectory vs
-//                                  reference, estimates and measurements)
-//   plots/series.<metric>.png      the time series behind a metric (errors vs time)
-//   plots/report.gp                the gnuplot script (pngcairo terminal)
-//   report.md                      metrics against the scenario's expectations, and the plots
+//   report.html                    the page to look at: the comparison table against the
+//                                  papers and every figure inline (report_html.hpp)
+//   report.md                      the same table and figures, as markdown
+//   plots/paper<NNN>.<robot>.png   the papers' own figures, for each robot that has the
+//                                  signals one of them needs (report_figures.hpp)
+//   plots/<signal>.png             each signal against time, one panel per quantity and unit
+//                                  (report_panels.hpp); the robot's true state dashed under
+//                                  the same fields of its estimates and measurements
+//   plots/<robot>.trajectory.png   y against x of every signal of the robot with x and y
+//   plots/series.<metric>.png      the time series behind a metric
+//   plots/data/*.csv               series the figures compute (tracking errors)
+//   plots/report.gp                the gnuplot script (pngcairo terminal) drawing them all
 #pragma once
 
 #include <filesystem>
@@ -19,6 +22,7 @@
 namespace plexus::scenario {
 
 struct Report {
+  std::filesystem::path html;
   std::filesystem::path markdown;
   std::vector<std::filesystem::path> plots;
   std::string table;  ///< the metrics-against-expectations table (markdown), as in report.md

@@ -75,6 +75,9 @@ struct ScenarioMetric {
   std::string name;
   std::string type;
   MetricFunction compute;
+  /// Optional key `paper`: the published figure this metric reproduces, as text
+  /// ("000 §6.3.2, Fig. 7: max V_t 0.05 m after 100 s"); the report's "paper" column.
+  std::string paper = {};
 };
 
 struct Scenario {
