@@ -16,6 +16,8 @@ PACKAGES=(
   libgtest-dev libgmock-dev libbenchmark-dev clang libclang-rt-14-dev
   # tools used at run time: plots, loop-jitter baseline, network namespaces for multi-host tests
   gnuplot-nox rt-tests iproute2 procps
+  # plexus launch over ssh (and its tests: an sshd per namespace), systemd-analyze for the units, jq in the tests
+  openssh-client openssh-server systemd jq
 )
 
 SUDO=""
