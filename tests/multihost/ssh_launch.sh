@@ -97,9 +97,9 @@ lockstep2|lockstep3)
   echo "sim digest $sim, launch over $n hosts $got (rc $rc)"
   [ $rc -eq 0 ] || { tail -5 "$out/launch.err"; fail "launch exited $rc"; }
   [ -n "$sim" ] && [ "$sim" = "$got" ] || fail "digest differs"
-  # Every remote share's lines reached this run folder, prefixed by host: its closing line.
+  # Every remote share's lines reached this run folder, prefixed by host: its launcher's closing line.
   for i in $(seq 2 "$n"); do
-    grep -q "processes done" "$out/launch/logs/h${i}_launch.log" 2>/dev/null || fail "h$i's log lines are not in $out/launch/logs"
+    grep -q "^plexus launch --host h$i: " "$out/launch/logs/h${i}_launch.log" 2>/dev/null || fail "h$i's log lines are not in $out/launch/logs"
     [ -f "$out/launch-h$i/logs/localisation_observer_observer.log" ] || [ -d "$out/launch-h$i/logs" ] || fail "no run folder on h$i"
     [ "$(json_get "$out/launch/launch.json" ".hosts.h$i.state")" = done ] || fail "launch.json: h$i not done"
   done
@@ -154,7 +154,7 @@ teardown|session_dies|launcher_killed|host_killed)
   last=$(tail -1 "$out/launch.err")
   echo "launcher's last line: $last"
   case $case in
-  teardown) [ $rc -ne 1 ] && [ $rc -ne 2 ] || fail "Ctrl-C ended the launcher with $rc" ;;
+  teardown) [ $rc -ne 2 ] && [ $rc -lt 137 ] || fail "Ctrl-C ended the launcher with $rc" ;;  # its own exit, not a crash
   session_dies) [ $rc -eq 1 ] && echo "$last" | grep -q "host h2 .*lost" || fail "expected exit 1 and 'host h2 ... lost'" ;;
   host_killed) [ $rc -eq 1 ] && echo "$last" | grep -q "host h3 .*lost" || fail "expected exit 1 and 'host h3 ... lost'" ;;
   esac
@@ -178,16 +178,17 @@ preflight)
   cmp -s "$root/deploy/qos.yaml" "$out/qos_h2.yaml" && fail "the QoS copy did not change"
   plexus_sshd_stop 2
   plexus_sshd_start 2 "SetEnv PLEXUS_QOS_FILE=$out/qos_h2.yaml" || fail "sshd h2 restart"
-  NO3=(--set hosts.h3.ssh=root@${ADDR[2]})  # h3 reached through h2's sshd from here on
-  expect_refusal "scenario mismatch" "host h2 (root@${ADDR[2]}): the scenario resolves differently there" "${NO3[@]}"
+  NO_SSHD[3]=
+  plexus_sshd_start 3 || fail "sshd h3 start"
+  expect_refusal "scenario mismatch" "host h2 (root@${ADDR[2]}): the scenario resolves differently there"
   plexus_sshd_stop 2
   plexus_sshd_start 2 || fail "sshd h2 restart"
   # Another plexus on h2: it answers with another version.
   printf '#!/bin/sh\necho "plexus-remote 1 0.0.0-other"\ncat > /dev/null\n' > "$out/other_plexus.sh"
   chmod +x "$out/other_plexus.sh"
-  expect_refusal "another version" "host h2 (root@${ADDR[2]}): plexus 0.0.0-other there" "${NO3[@]}" --set "hosts.h2.plexus=$out/other_plexus.sh"
+  expect_refusal "another version" "host h2 (root@${ADDR[2]}): plexus 0.0.0-other there" --set "hosts.h2.plexus=$out/other_plexus.sh"
   # h2's scenario address is not one of its interfaces (ssh reaches it at its real one).
-  expect_refusal "address on no interface" "host h2 (root@${ADDR[2]}): address 10.117.0.99" "${NO3[@]}" --set hosts.h2.address=10.117.0.99
+  expect_refusal "address on no interface" "host h2 (root@${ADDR[2]}): address 10.117.0.99" --set hosts.h2.address=10.117.0.99
   ;;
 clock_offset)
   # h2 reports its clock 50 ms ahead (injected in the exchange): beyond the 1 ms bound of a 100 Hz run.

@@ -68,6 +68,7 @@ int run_launch(LaunchOptions o) {
   const int64_t command_ns = monotonic_ns();
   std::unique_ptr<RemoteSession> session;
   RemoteRequest request;
+  if (!o.remote && o.scenario.empty()) throw InputError("scenario: required (the scenario file)");
   if (o.remote) {  // started over ssh: the scenario and the options come from the launcher
     std::signal(SIGHUP, on_signal);
     session = std::make_unique<RemoteSession>(PLEXUS_VERSION);
@@ -494,7 +495,7 @@ Command add_launch_command(CLI::App& root) {
   auto o = std::make_shared<LaunchOptions>();
   Command c;
   c.app = root.add_subcommand("launch", "Run a scenario distributed over DDS (lockstep), one process per service");
-  c.app->add_option("scenario", o->scenario, "Scenario file (YAML)")->required();
+  c.app->add_option("scenario", o->scenario, "Scenario file (YAML; required but with the internal --remote)");
   c.app->add_option("--host", o->host, "Start only the processes assigned to this host of the scenario");
   c.app->add_option("--dds", o->dds, "DDS vendor of the clock and of every process without a `dds` key in the scenario (default: dds.vendor, else fast)");
   c.app->add_option("--kill", o->kills, "Fault injection (realtime): SIGKILL PROCESS at SECONDS, as PROCESS@SECONDS");

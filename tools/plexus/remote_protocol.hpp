@@ -25,6 +25,9 @@ inline constexpr const char* kRemoteHello = "plexus-remote";
 /// Seconds between the launcher's keepalives, and of silence after which a remote stops.
 inline constexpr double kAliveIntervalS = 0.5;
 inline constexpr double kSilenceLimitS = 5.0;
+/// Before `go`, a remote waits this long for each of the launcher's lines: the launcher may
+/// be waiting for a slower host to connect (ssh ConnectTimeout) meanwhile.
+inline constexpr double kPreflightWaitS = 60.0;
 
 /// What the launcher sends: everything the remote's `plexus launch --host H` needs.
 struct RemoteRequest {

@@ -28,7 +28,7 @@ bool RemoteSession::send(const std::string& line) {
 
 RemoteRequest RemoteSession::read_request() {
   std::string line;
-  if (in_.next(line, static_cast<int>(kSilenceLimitS * 1000)) != LineReader::Result::line)
+  if (in_.next(line, static_cast<int>(kPreflightWaitS * 1000)) != LineReader::Result::line)
     throw InputError("--remote: no request from the launcher on stdin (this mode is for plexus launch over ssh)");
   return RemoteRequest::from_line(line, "--remote");
 }
@@ -36,7 +36,7 @@ RemoteRequest RemoteSession::read_request() {
 bool RemoteSession::ready_and_wait_go(const RemoteReady& ready, int64_t injection_ns) {
   if (!send(ready.to_line())) return false;
   for (std::string line;;) {
-    if (in_.next(line, static_cast<int>(kSilenceLimitS * 1000)) != LineReader::Result::line) return false;
+    if (in_.next(line, static_cast<int>(kPreflightWaitS * 1000)) != LineReader::Result::line) return false;
     if (line == "go") return true;
     if (line.rfind("ping ", 0) == 0) {
       const int64_t t2 = wall_time_ns() + injection_ns;

@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cmath>
 #include <condition_variable>
+#include <csignal>
 #include <cstdio>
 #include <mutex>
 #include <sstream>
@@ -22,8 +23,6 @@
 
 namespace plexus::cli {
 namespace {
-
-int64_t since_ms(int64_t t0) { return (monotonic_ns() - t0) / 1'000'000; }
 
 std::string trim(std::string s) {
   while (!s.empty() && (s.back() == ' ' || s.back() == '\r')) s.pop_back();
@@ -50,6 +49,8 @@ struct RemoteShares::Impl {
     std::string state = "starting";  // starting | running | done | lost
     std::thread monitor;
   };
+  Impl(const scenario::Scenario& scenario, std::string local_host, RemoteShareOptions options)
+      : sc(scenario), local(std::move(local_host)), o(std::move(options)) {}
   const scenario::Scenario& sc;
   std::string local;
   RemoteShareOptions o;
@@ -198,6 +199,8 @@ struct RemoteShares::Impl {
     if (code == 0) {
       std::lock_guard lk(mu);
       if (h.state != "lost") h.state = "done";
+    } else if (WIFSIGNALED(status)) {
+      lost(h, who(h) + " lost: its ssh session was killed (signal " + std::to_string(WTERMSIG(status)) + ")");
     } else if (code == 255) {
       lost(h, who(h) + " lost: the ssh session ended" + last);
     } else {
@@ -214,7 +217,7 @@ struct RemoteShares::Impl {
 
 RemoteShares::RemoteShares(const scenario::Scenario& sc, const std::string& local, std::vector<std::string> hosts,
                            RemoteShareOptions options)
-    : impl_(std::make_unique<Impl>(Impl{sc, local, std::move(options), {}, 0, {}, {}, {}, {}, nullptr, false, monotonic_ns()})) {
+    : impl_(std::make_unique<Impl>(sc, local, std::move(options))) {
   std::signal(SIGPIPE, SIG_IGN);  // a closed session is EPIPE on write, not the launcher's death
   for (const auto& name : hosts) {
     auto h = std::make_unique<Impl::Host>();
