@@ -123,7 +123,9 @@ teardown|session_dies|launcher_killed|host_killed)
   # Realtime, 60 s of the closed loop (stopped well before): plant and path on h1, observer on
   # h2, controller on h3 (h2 with two hosts).
   ctl=h3; [ "$n" -eq 2 ] && ctl=h2
-  ip netns exec "${NS[1]}" "$plexus" launch "$path" --ssh-config "$SSH_CONFIG" --domain "$domain" --quiet \
+  # setsid: the launcher leads its own process group, as a terminal's foreground job, so the
+  # Ctrl-C below reaches the whole group as a terminal's would.
+  setsid ip netns exec "${NS[1]}" "$plexus" launch "$path" --ssh-config "$SSH_CONFIG" --domain "$domain" --quiet \
     --out "$out/launch" "${HOSTSET[@]}" --set clock.mode=realtime --set duration=60 --set robots.r1.host=h1 \
     --set services.path.host=h1 --set services.observer.host=h2 --set services.controller.host=$ctl \
     > "$out/launch.out" 2> "$out/launch.err" &
@@ -135,7 +137,7 @@ teardown|session_dies|launcher_killed|host_killed)
   kill -0 "$launcher" 2>/dev/null || { tail -5 "$out/launch.err"; fail "the launcher ended early"; }
   t1=$(date +%s.%N)
   case $case in
-  teardown) kill -INT "$launcher" ;;
+  teardown) kill -INT -- "-$launcher" ;;  # Ctrl-C: SIGINT to the foreground process group
   launcher_killed) kill -9 "$launcher" ;;
   session_dies)
     for p in $(ip netns pids "${NS[1]}"); do
@@ -146,6 +148,9 @@ teardown|session_dies|launcher_killed|host_killed)
     for p in $(ip netns pids "${NS[3]}"); do kill -9 "$p" 2>/dev/null; done
     SSHD_PID[3]= ;;
   esac
+  # The run must end soon after the event, not at its 60 s end (bounded wait, not a timing goal).
+  for t in $(seq 1 200); do kill -0 "$launcher" 2>/dev/null || break; sleep 0.1; done
+  kill -0 "$launcher" 2>/dev/null && fail "the launcher still runs 20 s after the $case event"
   wait "$launcher"
   rc=$?
   echo "launcher exit code $rc, $(since "$t1") s after the $case event"
@@ -154,7 +159,9 @@ teardown|session_dies|launcher_killed|host_killed)
   last=$(tail -1 "$out/launch.err")
   echo "launcher's last line: $last"
   case $case in
-  teardown) [ $rc -ne 2 ] && [ $rc -lt 137 ] || fail "Ctrl-C ended the launcher with $rc" ;;  # its own exit, not a crash
+  teardown)  # its own exit, not a crash, and Ctrl-C is not a lost host (ssh runs in its own process group)
+    [ $rc -ne 2 ] && [ $rc -lt 128 ] || fail "Ctrl-C ended the launcher with $rc"
+    grep -q "^plexus launch: host .* lost" "$out/launch.err" && fail "Ctrl-C was taken for a lost host: $(grep "^plexus launch: host" "$out/launch.err")" ;;
   session_dies) [ $rc -eq 1 ] && echo "$last" | grep -q "host h2 .*lost" || fail "expected exit 1 and 'host h2 ... lost'" ;;
   host_killed) [ $rc -eq 1 ] && echo "$last" | grep -q "host h3 .*lost" || fail "expected exit 1 and 'host h3 ... lost'" ;;
   esac
@@ -208,6 +215,9 @@ clock_offset)
   corr=$(json_get "$out/launch/launch.json" '.command_latency["r1/cmd"].clock_offset_corrected_us')
   echo "h2 offset $off ms, r1/cmd latency corrected by $corr us"
   awk -v o="$off" -v c="$corr" 'BEGIN { d = c - o * 1e3; exit !(o > 49 && o < 51 && d < 1 && d > -1) }' || fail "offset or correction wrong"
+  # The correction is applied: a true latency is >= 0, so the corrected one is >= the 50 ms added.
+  p50=$(json_get "$out/launch/launch.json" '.command_latency["r1/cmd"].p50_us')
+  awk -v p="$p50" 'BEGIN { exit !(p >= 49900) }' || fail "r1/cmd p50 $p50 us: the offset was not added to the latencies"
   grep -Eq "latency sensor -> r1/cmd: .*, corrected by 5[0-9]{4}\.[0-9]* us of clock offset" "$out/launch.out" || fail "the summary does not say the latency was corrected"
   wait_all_stopped "the realtime run" 10 || fail "processes left"
   rm -rf "$out/launch"
