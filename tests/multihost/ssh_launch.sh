@@ -178,6 +178,14 @@ preflight)
     [ ! -e "$out/launch" ] || fail "$what: a run folder was created (something started)"
     wait_all_stopped "$what" 10 || fail "$what: processes left"
   }
+  # Scenario keys: an ssh destination that ssh would read as an option, a workdir without ssh.
+  "$plexus" launch "$path" --set hosts.h1.address=${ADDR[1]} --set "hosts.h2.ssh=-oProxyCommand=touch_$$" > /dev/null 2> "$out/key.err"
+  rc=$?
+  echo "ssh: -oProxyCommand=...: exit $rc: $(cat "$out/key.err")"
+  [ $rc -eq 2 ] && grep -q "hosts.h2.ssh: expected \[user@\]host" "$out/key.err" || fail "a leading '-' in hosts.h2.ssh was not refused"
+  "$plexus" launch "$path" --set hosts.h1.address=${ADDR[1]} --set hosts.h2.workdir=/tmp > /dev/null 2> "$out/key.err"
+  rc=$?
+  [ $rc -eq 2 ] && grep -q "hosts.h2.workdir: only for a host reached over ssh" "$out/key.err" || fail "workdir without ssh was not refused"
   # h3 has no sshd: connection refused.
   expect_refusal "unreachable host" "host h3 (root@${ADDR[3]}): unreachable over ssh"
   # h2's QoS profiles differ (its sshd sets PLEXUS_QOS_FILE for the session): another digest.
