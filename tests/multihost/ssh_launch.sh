@@ -46,7 +46,7 @@ rfid=$root/deploy/scenarios/wmr_output_feedback_rfid.yaml
 launch() {  # launch SCENARIO ARGS...: in namespace 1, stdout -> $out/launch.out, stderr -> $out/launch.err
   local scenario=$1
   shift
-  ip netns exec "${NS[1]}" "$plexus" launch "$scenario" --ssh-config "$SSH_CONFIG" --domain "$domain" --quiet \
+  ip netns exec "${NS[1]}" "$plexus" launch "$scenario" --ssh-config "$SSH_CONFIG" --domain "$domain" ${QUIET---quiet} \
     --out "$out/launch" "${HOSTSET[@]}" "$@" > "$out/launch.out" 2> "$out/launch.err"
 }
 
@@ -109,13 +109,17 @@ lockstep2|lockstep3)
   ;;
 realtime_rfid)
   # Paper 000 section 6.3.2 in realtime (101 s, the bounds' window starts at 100 s): the plant
-  # on h1, the observer on h2, the reference and the controller on h3.
-  launch "$rfid" --json --set clock.mode=realtime --set duration=101 --set robots.r1.host=h1 \
+  # on h1, the observer on h2, the reference and the controller on h3. Not --quiet: the status
+  # line (every 10 s off a terminal) must show each host's processes.
+  QUIET= launch "$rfid" --json --set clock.mode=realtime --set duration=101 --set robots.r1.host=h1 \
     --set services.observer.host=h2 --set services.reference.host=h3 --set services.controller.host=h3
   rc=$?
   cat "$out/launch.out"
   grep -E "latency|hosts:" "$out/launch.err" | tail -3
   [ $rc -eq 0 ] || { tail -5 "$out/launch.err"; fail "launch exited $rc (1: a bound of the paper missed)"; }
+  grep "| hosts: " "$out/launch.err" | tail -1
+  grep -Eq "\| hosts: h1 1/1, h2 1/1 \([0-9.]+ ms\), h3 2/2 \([0-9.]+ ms\)$" "$out/launch.err" \
+    || fail "no status line shows every host's processes running (hosts: h1 1/1, h2 1/1 (..), h3 2/2 (..))"
   json_get "$out/launch/launch.json" '"startup \(.startup_s) s, teardown \(.teardown_s) s"'
   wait_all_stopped "the run" 10 || fail "processes left after the run"
   ;;

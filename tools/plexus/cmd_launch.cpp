@@ -419,13 +419,13 @@ int run_launch(LaunchOptions o) {
     if (o.report) print_report(run_dir, o.json);
     return rc;
   }
+  std::map<std::string, double> producer_offset_us;  // lockstep responses: per producer on another host
   try {
     distributed::LockstepClock clock(sc, *participant, qos, {.timeout_s = o.timeout});
     clock.wait_ready(static_cast<int>(everywhere.size()), 30.0, g_stop);
     const int64_t start = monotonic_ns();
     startup_s = static_cast<double>(start - command_ns) * 1e-9;
     // A producer on another host stamps its response with that host's clock: correct it.
-    std::map<std::string, double> producer_offset_us;
     for (const auto& c : sc.components)
       if (remotes && !c.host.empty()) producer_offset_us[c.component->name()] = static_cast<double>(remotes->offset(c.host).offset_ns) * 1e-3;
     // The live status line, once a second: progress, step rate, the slowest producer.
@@ -478,10 +478,13 @@ int run_launch(LaunchOptions o) {
   summary.extra["steps_per_s"] = steps_per_s;
   summary.extra["processes"] = process_table(procs);
   nlohmann::ordered_json resp = nlohmann::ordered_json::object();
-  for (const auto& [producer, acc] : responses)
+  for (const auto& [producer, acc] : responses) {
     resp[producer] = {{"samples", acc.samples},
                       {"response_p50_us", acc.windows ? acc.p50_sum / acc.windows : 0.0},
                       {"response_p99_us_worst_second", acc.worst_p99}};
+    if (producer_offset_us.count(producer))  // on another host: corrected by its clock offset
+      resp[producer]["clock_offset_corrected_us"] = producer_offset_us.at(producer);
+  }
   summary.extra["response"] = resp;
   add_hosts(summary);
   const int rc = finish_run(sc, log, wall, run_dir, o.json, o.quiet, summary);
