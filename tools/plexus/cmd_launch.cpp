@@ -9,11 +9,7 @@
 #include <signal.h>
 
 #include <csignal>
-#include <cmath>
 #include <cstdio>
-#include <cstdlib>
-#include <fstream>
-#include <iterator>
 #include <filesystem>
 #include <algorithm>
 #include <map>
@@ -157,32 +153,10 @@ int run_launch(LaunchOptions o) {
                       static_cast<int>(procs.size())};
     if (!session->ready_and_wait_go(ready, request.clock_injection_ns)) return 1;  // the launcher gave up
   } else if (one_command) {
-    if (!address_on_interface(net.interface_address))
-      throw InputError("host " + o.host + " (this machine): address " + net.interface_address + " (hosts." + o.host +
-                       ".address) is on none of its interfaces");
-    RemoteShareOptions ro;
-    ro.ssh.config_file = o.ssh_config;
-    if (!o.ssh_config.empty() && !std::filesystem::is_regular_file(o.ssh_config))
-      throw InputError("--ssh-config " + o.ssh_config + ": no such file");
-    ro.local_plexus = bin_dir() + "/plexus";
-    std::ifstream text_in(o.scenario, std::ios::binary);
-    ro.request.scenario_text.assign(std::istreambuf_iterator<char>(text_in), {});
-    ro.request.scenario_origin = o.scenario;
-    ro.request.sets = o.sets, ro.request.vendors = o.vendors, ro.request.externals = o.externals;
-    ro.request.dds = o.dds, ro.request.qos_file = o.qos_file, ro.request.domain = domain, ro.request.timeout = o.timeout;
-    ro.out = o.out;
-    for (const auto& inj : o.clock_injections) {
-      const auto eq = inj.find('=');
-      char* end = nullptr;
-      const double s = eq == std::string::npos ? 0.0 : std::strtod(inj.c_str() + eq + 1, &end);
-      if (eq == std::string::npos || !end || *end || !std::isfinite(s) ||
-          std::find(remote_hosts.begin(), remote_hosts.end(), inj.substr(0, eq)) == remote_hosts.end())
-        throw InputError("--inject-clock-offset " + inj + ": expected HOST=SECONDS with a host started over ssh");
-      ro.clock_injection_ns[inj.substr(0, eq)] = std::llround(s * 1e9);
-    }
-    remotes = std::make_unique<RemoteShares>(sc, o.host, remote_hosts, ro);
-    remotes->preflight(PLEXUS_VERSION, digest);
-    remotes->check_offsets(sc.step, sc.clock == scenario::ClockMode::realtime, o.allow_clock_offset);
+    remotes = preflight_hosts(sc, o.host, net.interface_address, remote_hosts,
+                              {o.scenario, o.ssh_config, o.out, o.dds, o.qos_file, o.sets, o.vendors, o.externals,
+                               o.clock_injections, domain, o.timeout, o.allow_clock_offset},
+                              PLEXUS_VERSION, digest);
   }
 
   std::unique_ptr<SignalRecorder> recorder;

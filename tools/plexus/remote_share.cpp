@@ -10,10 +10,15 @@
 #include <condition_variable>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <mutex>
 #include <sstream>
 #include <thread>
 
+#include "child_process.hpp"
 #include "launch_plan.hpp"
 #include "line_reader.hpp"
 #include "piped_process.hpp"
@@ -414,6 +419,39 @@ nlohmann::ordered_json RemoteShares::report() const {
                   {"state", h->state},
                   {"exit_code", h->exit_code}};
   return j;
+}
+
+std::unique_ptr<RemoteShares> preflight_hosts(const scenario::Scenario& sc, const std::string& local_host,
+                                              const std::string& local_address, const std::vector<std::string>& hosts,
+                                              const RemoteLaunchArgs& a, const std::string& version,
+                                              const std::string& digest) {
+  if (!address_on_interface(local_address))
+    throw InputError("host " + local_host + " (this machine): address " + local_address + " (hosts." + local_host +
+                     ".address) is on none of its interfaces");
+  if (!a.ssh_config.empty() && !std::filesystem::is_regular_file(a.ssh_config))
+    throw InputError("--ssh-config " + a.ssh_config + ": no such file");
+  RemoteShareOptions ro;
+  ro.ssh.config_file = a.ssh_config;
+  ro.local_plexus = bin_dir() + "/plexus";
+  std::ifstream text(a.scenario_file, std::ios::binary);
+  ro.request.scenario_text.assign(std::istreambuf_iterator<char>(text), {});
+  ro.request.scenario_origin = a.scenario_file;
+  ro.request.sets = a.sets, ro.request.vendors = a.vendors, ro.request.externals = a.externals;
+  ro.request.dds = a.dds, ro.request.qos_file = a.qos_file, ro.request.domain = a.domain, ro.request.timeout = a.timeout;
+  ro.out = a.out;
+  for (const auto& inj : a.clock_injections) {
+    const auto eq = inj.find('=');
+    char* end = nullptr;
+    const double s = eq == std::string::npos ? 0.0 : std::strtod(inj.c_str() + eq + 1, &end);
+    if (eq == std::string::npos || !end || *end || !std::isfinite(s) ||
+        std::find(hosts.begin(), hosts.end(), inj.substr(0, eq)) == hosts.end())
+      throw InputError("--inject-clock-offset " + inj + ": expected HOST=SECONDS with a host started over ssh");
+    ro.clock_injection_ns[inj.substr(0, eq)] = std::llround(s * 1e9);
+  }
+  auto remotes = std::make_unique<RemoteShares>(sc, local_host, hosts, ro);
+  remotes->preflight(version, digest);
+  remotes->check_offsets(sc.step, sc.clock == scenario::ClockMode::realtime, a.allow_clock_offset);
+  return remotes;
 }
 
 }  // namespace plexus::cli

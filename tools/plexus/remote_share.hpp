@@ -69,4 +69,22 @@ class RemoteShares {
   std::unique_ptr<Impl> impl_;
 };
 
+/// What this command line gives the other hosts, and how to reach them.
+struct RemoteLaunchArgs {
+  std::string scenario_file, ssh_config, out, dds, qos_file;
+  std::vector<std::string> sets, vendors, externals;
+  std::vector<std::string> clock_injections;  ///< --inject-clock-offset HOST=SECONDS (tests)
+  int domain = 0;
+  double timeout = 10.0;
+  bool allow_clock_offset = false;
+};
+
+/// Preflight of one command over many hosts: this host's address on an interface, then every
+/// host of `hosts` (RemoteShares::preflight) and their clock offsets (check_offsets). Throws
+/// InputError (exit 2) naming the host; nothing has started anywhere then.
+std::unique_ptr<RemoteShares> preflight_hosts(const scenario::Scenario& sc, const std::string& local_host,
+                                              const std::string& local_address, const std::vector<std::string>& hosts,
+                                              const RemoteLaunchArgs& args, const std::string& version,
+                                              const std::string& digest);
+
 }  // namespace plexus::cli
