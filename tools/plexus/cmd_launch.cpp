@@ -19,6 +19,9 @@
 #include <nlohmann/json.hpp>
 
 #include "child_process.hpp"
+#include "preflight.hpp"
+#include "remote_session.hpp"
+#include "remote_share.hpp"
 #include "launch_plan.hpp"
 #include "realtime_run.hpp"
 #include "log_relay.hpp"
@@ -55,12 +58,35 @@ struct LaunchOptions {
   int domain = -1;
   double timeout = 10.0;
   bool json = false, quiet = false, report = false;
+  // Hosts over ssh (remote_share.hpp): --ssh-config, --allow-clock-offset; --remote is the
+  // share a launcher started over ssh; --inject-clock-offset HOST=SECONDS fakes an offset (tests).
+  std::string ssh_config;
+  bool allow_clock_offset = false, remote = false;
+  std::vector<std::string> clock_injections;
 };
 
-int run_launch(const LaunchOptions& o) {
+int run_launch(LaunchOptions o) {
+  const int64_t command_ns = monotonic_ns();
+  std::unique_ptr<RemoteSession> session;
+  RemoteRequest request;
+  if (!o.remote && o.scenario.empty()) throw InputError("scenario: required (the scenario file)");
+  if (o.remote) {  // started over ssh: the scenario and the options come from the launcher
+    std::signal(SIGHUP, on_signal);
+    session = std::make_unique<RemoteSession>(PLEXUS_VERSION);
+    request = session->read_request();
+    o.host = request.host, o.scenario = request.scenario_origin, o.sets = request.sets, o.vendors = request.vendors;
+    o.externals = request.externals, o.dds = request.dds, o.qos_file = request.qos_file, o.out = request.out;
+    o.domain = request.domain, o.timeout = request.timeout;
+  }
   std::vector<scenario::Override> overrides;
   for (const auto& s : o.sets) overrides.push_back(scenario::parse_override(s));
-  scenario::Scenario sc = scenario::load_scenario(o.scenario, overrides);
+  scenario::Scenario sc = session ? scenario::load_scenario_text(request.scenario_text, o.scenario, overrides)
+                                  : scenario::load_scenario(o.scenario, overrides);
+  // One command, many hosts: a scenario whose hosts name ssh destinations, launched without
+  // --host, runs here as its first host and starts the others over ssh.
+  const bool one_command = o.host.empty() && !o.remote && uses_ssh(sc);
+  const std::vector<std::string> remote_hosts = one_command ? ssh_hosts(sc) : std::vector<std::string>{};
+  if (one_command) o.host = sc.hosts.front();
   for (const auto& [robot, src] : sc.sources)
     if (sc.clock != scenario::ClockMode::realtime)
       throw InputError(src.where + ": robot " + robot + "'s source is " + scenario::to_string(src.type) +
@@ -121,6 +147,21 @@ int run_launch(const LaunchOptions& o) {
   // Every QoS profile the scenario names must exist before anything starts.
   check_qos_names(sc, profiles, qos_file);
 
+  // Preflight (remote_share.hpp), before anything starts: every host reachable, the same
+  // version, the same scenario digest, its address on an interface, clocks that agree.
+  std::unique_ptr<RemoteShares> remotes;
+  const std::string digest = scenario_digest(sc, qos_file);
+  if (session) {
+    RemoteReady ready{digest, qos_file, net.interface_address, address_on_interface(net.interface_address),
+                      static_cast<int>(procs.size())};
+    if (!session->ready_and_wait_go(ready, request.clock_injection_ns)) return 1;  // the launcher gave up
+  } else if (one_command) {
+    remotes = preflight_hosts(sc, o.host, net.interface_address, remote_hosts,
+                              {o.scenario, o.ssh_config, o.out, o.dds, o.qos_file, o.sets, o.vendors, o.externals,
+                               o.clock_injections, domain, o.timeout, o.allow_clock_offset},
+                              PLEXUS_VERSION, digest);
+  }
+
   std::unique_ptr<SignalRecorder> recorder;
   if (!o.record.empty()) {
     if (sc.clock == scenario::ClockMode::realtime)
@@ -167,6 +208,11 @@ int run_launch(const LaunchOptions& o) {
   StatusConsole console(!o.quiet);
   const ConsoleLogging console_logging(console);
   LogRelay relay(std::filesystem::path(run_dir) / "logs", console);
+  if (remotes) {
+    remotes->start(relay, static_cast<int>(procs.size()), g_stop);
+    console.set_hosts([&remotes] { return remotes->health(); });
+  }
+  if (session) session->watch(g_stop, static_cast<int>(procs.size()), [] { return running_children(); });
   auto start_process = [&relay](Process& p) {
     const int fd = relay.open(p.service());
     p.pid = spawn(p.executable(), p.args, fd);
@@ -196,6 +242,8 @@ int run_launch(const LaunchOptions& o) {
     args.insert(args.end(), common.begin(), common.end());
     args.insert(args.end(), {"--dds", p.vendor, "--mode", realtime ? "realtime" : "lockstep"});
     if (realtime) args.push_back("--start-signal");
+    if (realtime && p.priority > 0) args.insert(args.end(), {"--priority", std::to_string(p.priority)});
+    if (realtime && p.cpu >= 0) args.insert(args.end(), {"--cpu", std::to_string(p.cpu)});
     if (p.program == "replay") {  // plexus replay of the robot's topics, not a service
       args = replay_args(sc, p);
       args.insert(args.end(), {"--dds", p.vendor, "--domain", std::to_string(domain), "--qos-file", qos_file,
@@ -243,11 +291,15 @@ int run_launch(const LaunchOptions& o) {
       std::this_thread::sleep_for(std::chrono::milliseconds(50));
     }
   });
+  double teardown_s = -1;  // from the end of the run to every process stopped, on every host
   auto stop_all = [&] {
+    const int64_t t = monotonic_ns();
     watching = false;
     if (watcher.joinable()) watcher.join();
     for (auto& p : procs)
       if (p.pid > 0) stop(p.pid), p.pid = 0;
+    if (remotes) remotes->stop();
+    if (teardown_s < 0) teardown_s = static_cast<double>(monotonic_ns() - t) * 1e-9;
     relay.drain();  // the children's last lines before the launcher's verdict
   };
   // Whatever ends the run (an error from DDS included), the watcher is joined and no child
@@ -258,7 +310,8 @@ int run_launch(const LaunchOptions& o) {
   } stop_on_exit{stop_all};
   auto failure = [&](const std::string& what) {
     stop_all();
-    const std::string why = died.empty() ? what : died;
+    const std::string lost = remotes ? remotes->failure() : std::string();  // a lost host is the cause
+    const std::string why = !lost.empty() ? lost : died.empty() ? what : died;
     scenario::mark_run_folder(run_dir, "failed: " + why);
     std::fprintf(stderr, "plexus launch: %s\n", why.c_str());
     return 1;
@@ -267,6 +320,19 @@ int run_launch(const LaunchOptions& o) {
   auto interrupted = [&] {
     stop_all();
     return interrupted_run("plexus launch", g_signal, run_dir, static_cast<double>(monotonic_ns() - launched_ns) * 1e-9);
+  };
+  auto host_lost = [&] { return remotes && !remotes->failure().empty(); };
+  // launch.json and the summary: how long the start and the stop took, and each host's clock.
+  double startup_s = -1;
+  auto add_hosts = [&](RunSummary& summary) {
+    summary.extra["startup_s"] = startup_s;
+    summary.extra["teardown_s"] = teardown_s;
+    if (!remotes) return;
+    summary.extra["hosts"] = remotes->report();
+    char line[200];
+    std::snprintf(line, sizeof line, "hosts: %zu, every process running %.2f s after the command, all stopped in %.2f s",
+                  remote_hosts.size() + 1, startup_s, teardown_s);
+    summary.lines.push_back(line);
   };
 
   scenario::RunLog log;
@@ -289,6 +355,10 @@ int run_launch(const LaunchOptions& o) {
     stop_all();
     if (!died.empty()) return failure(died);
     scenario::mark_run_folder(run_dir, "complete");
+    if (session && !session->ended().empty()) {
+      std::fprintf(stderr, "plexus launch --host %s: stopped: %s\n", o.host.c_str(), session->ended().c_str());
+      return 0;
+    }
     if (!o.quiet) std::fprintf(stderr, "plexus launch --host %s: %zu processes done\n", o.host.c_str(), procs.size());
     return 0;
   }
@@ -297,7 +367,10 @@ int run_launch(const LaunchOptions& o) {
     try {
       std::vector<Process> all = everywhere;  // monitored through heartbeats: not the external ones
       all.erase(std::remove_if(all.begin(), all.end(), is_external), all.end());
-      r = run_realtime(sc, *participant, profiles, all, 30.0, fault, console, g_stop);
+      std::map<std::string, int64_t> host_offsets;  // corrects cross-host latencies (remote_share.hpp)
+      for (const auto& h : remote_hosts) host_offsets[h] = remotes->offset(h).offset_ns;
+      r = run_realtime(sc, *participant, profiles, all, 30.0, fault, console, g_stop, host_offsets);
+      startup_s = static_cast<double>(r.all_running_ns - command_ns) * 1e-9;
       run_active = false;
       console.clear();
     } catch (const distributed::LockstepError& e) {
@@ -306,7 +379,7 @@ int run_launch(const LaunchOptions& o) {
     }
     if (g_signal) return interrupted();
     stop_all();
-    if (!died.empty()) return failure(died);
+    if (!died.empty() || host_lost()) return failure(died);
     RunSummary summary;
     char headline[256];
     std::snprintf(headline, sizeof headline, "scenario %s: realtime over %zu processes (%s), %.3g s", sc.name.c_str(),
@@ -322,19 +395,28 @@ int run_launch(const LaunchOptions& o) {
     if (!r.fault.empty()) summary.extra["fault"] = r.fault;
     for (const auto& [name, l] : r.latency.items()) {
       if (l["samples"].get<int>() == 0) continue;  // no sensor sample reached it (an open-loop command)
-      char line[256];
-      std::snprintf(line, sizeof line, "latency sensor -> %s: p50 %.0f us, p99 %.0f us (%d samples)", name.c_str(),
-                    l["p50_us"].get<double>(), l["p99_us"].get<double>(), l["samples"].get<int>());
+      char line[320];
+      std::snprintf(line, sizeof line, "latency sensor -> %s: p50 %.0f us, p99 %.0f us (%d samples)%s", name.c_str(),
+                    l["p50_us"].get<double>(), l["p99_us"].get<double>(), l["samples"].get<int>(),
+                    l.contains("clock_offset_corrected_us")
+                        ? (", corrected by " + l["clock_offset_corrected_us"].dump() + " us of clock offset").c_str()
+                        : "");
       summary.lines.push_back(line);
     }
+    add_hosts(summary);
     const int rc = finish_run(sc, r.log, r.wall, run_dir, o.json, o.quiet, summary);
     if (o.report) print_report(run_dir, o.json);
     return rc;
   }
+  std::map<std::string, double> producer_offset_us;  // lockstep responses: per producer on another host
   try {
     distributed::LockstepClock clock(sc, *participant, qos, {.timeout_s = o.timeout});
     clock.wait_ready(static_cast<int>(everywhere.size()), 30.0, g_stop);
     const int64_t start = monotonic_ns();
+    startup_s = static_cast<double>(start - command_ns) * 1e-9;
+    // A producer on another host stamps its response with that host's clock: correct it.
+    for (const auto& c : sc.components)
+      if (remotes && !c.host.empty()) producer_offset_us[c.component->name()] = static_cast<double>(remotes->offset(c.host).offset_ns) * 1e-3;
     // The live status line, once a second: progress, step rate, the slowest producer.
     std::vector<distributed::LockstepClock::ProducerStatus> status;
     int64_t status_at = start, steps_at = 0;
@@ -349,9 +431,11 @@ int run_launch(const LaunchOptions& o) {
       for (const auto& p : status) {
         auto& acc = responses[p.producer];
         if (p.samples == 0) continue;
+        const auto off = producer_offset_us.find(p.producer);
+        const double correction = off == producer_offset_us.end() ? 0.0 : off->second;
         acc.windows += 1;
-        acc.p50_sum += p.response_p50_us;
-        acc.worst_p99 = std::max(acc.worst_p99, p.response_p99_us);
+        acc.p50_sum += p.response_p50_us - correction;
+        acc.worst_p99 = std::max(acc.worst_p99, p.response_p99_us - correction);
         acc.samples += p.samples;
       }
       const auto slow = std::max_element(status.begin(), status.end(), [](const auto& a, const auto& b) {
@@ -373,6 +457,7 @@ int run_launch(const LaunchOptions& o) {
   }
   if (g_signal) return interrupted();
   stop_all();
+  if (host_lost()) return failure("");
   if (recorder) recorder->write();
 
   const double steps_per_s = wall > 0 ? static_cast<double>(sc.steps + 1) / wall : 0.0;
@@ -384,11 +469,15 @@ int run_launch(const LaunchOptions& o) {
   summary.extra["steps_per_s"] = steps_per_s;
   summary.extra["processes"] = process_table(procs);
   nlohmann::ordered_json resp = nlohmann::ordered_json::object();
-  for (const auto& [producer, acc] : responses)
+  for (const auto& [producer, acc] : responses) {
     resp[producer] = {{"samples", acc.samples},
                       {"response_p50_us", acc.windows ? acc.p50_sum / acc.windows : 0.0},
                       {"response_p99_us_worst_second", acc.worst_p99}};
+    if (producer_offset_us.count(producer))  // on another host: corrected by its clock offset
+      resp[producer]["clock_offset_corrected_us"] = producer_offset_us.at(producer);
+  }
   summary.extra["response"] = resp;
+  add_hosts(summary);
   const int rc = finish_run(sc, log, wall, run_dir, o.json, o.quiet, summary);
   if (o.report) print_report(run_dir, o.json);
   return rc;
@@ -400,7 +489,7 @@ Command add_launch_command(CLI::App& root) {
   auto o = std::make_shared<LaunchOptions>();
   Command c;
   c.app = root.add_subcommand("launch", "Run a scenario distributed over DDS (lockstep), one process per service");
-  c.app->add_option("scenario", o->scenario, "Scenario file (YAML)")->required();
+  c.app->add_option("scenario", o->scenario, "Scenario file (YAML; required but with the internal --remote)");
   c.app->add_option("--host", o->host, "Start only the processes assigned to this host of the scenario");
   c.app->add_option("--dds", o->dds, "DDS vendor of the clock and of every process without a `dds` key in the scenario (default: dds.vendor, else fast)");
   c.app->add_option("--kill", o->kills, "Fault injection (realtime): SIGKILL PROCESS at SECONDS, as PROCESS@SECONDS");
@@ -418,6 +507,13 @@ Command add_launch_command(CLI::App& root) {
   c.app->add_flag("--json", o->json, "Print the metrics (and steps_per_s) as one JSON object");
   c.app->add_flag("--quiet,-q", o->quiet, "No live status line");
   c.app->add_flag("--report", o->report, "Then plot the run and print its metrics against the expectations (plexus report)");
+  c.app->add_option("--ssh-config", o->ssh_config,
+                    "Hosts reached over ssh (hosts.<h>.ssh): use this ssh configuration file (ssh -F; default ~/.ssh/config)");
+  c.app->add_flag("--allow-clock-offset", o->allow_clock_offset,
+                  "Realtime over ssh hosts: run even when a host's clock is beyond the offset bound (docs/distributed.md)");
+  c.app->add_flag("--remote", o->remote, "Internal: the share of one host, started over ssh by plexus launch")->group("");
+  c.app->add_option("--inject-clock-offset", o->clock_injections,
+                    "Tests: HOST=SECONDS added to that host's clock readings in the offset exchange")->group("");
   c.run = [o] { return run_launch(*o); };
   return c;
 }

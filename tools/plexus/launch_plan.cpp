@@ -39,6 +39,8 @@ void check_process_groups(const scenario::Scenario& sc) {
     clash("dds", c.dds, f.dds);
     clash("restart", c.restart, f.restart);
     clash("restart_delay", std::to_string(c.restart_delay), std::to_string(f.restart_delay));
+    clash("priority", std::to_string(c.priority), std::to_string(f.priority));
+    clash("cpu", std::to_string(c.cpu), std::to_string(f.cpu));
   }
 }
 
@@ -89,6 +91,8 @@ std::vector<Process> plan(const scenario::Scenario& sc, const std::string& host)
       p.select = {"--components", c.component->name()};
       p.restart = c.restart;
       p.restart_delay_ns = static_cast<int64_t>(c.restart_delay * 1e9);
+      p.priority = c.priority;
+      p.cpu = c.cpu;
       p.vendor = c.dds;
       procs.push_back(p);
     }

@@ -25,6 +25,8 @@ struct Process {
   int64_t restart_at_ns = 0;      ///< monotonic time of a pending restart (0: none)
   std::vector<std::string> args;  ///< as started, to restart it the same way
   int restarts = 0;
+  int priority = 0;  ///< realtime: SCHED_FIFO priority of its loop (scenario `priority`; 0: none)
+  int cpu = -1;      ///< realtime: the CPU its loop is pinned to (scenario `cpu`; -1: none)
 
   /// The service name the process reports in its heartbeats and DDS participant.
   std::string service() const { return select.empty() ? program : program + " " + select.back(); }

@@ -25,7 +25,8 @@ double percentile_us(std::vector<int64_t> v, double q) {
 
 RealtimeResult run_realtime(scenario::Scenario& sc, rt::Participant& participant, const rt::QosProfiles& profiles,
                             const std::vector<Process>& procs, double start_timeout_s, FaultClock& fault,
-                            StatusConsole& console, const std::atomic<bool>& stop) {
+                            StatusConsole& console, const std::atomic<bool>& stop,
+                            const std::map<std::string, int64_t>& host_clock_offset_ns) {
   RealtimeResult res;
   scenario::StepExecutor wiring(sc, std::vector<bool>(sc.components.size(), false));
   const auto& signals = wiring.signals();
@@ -34,6 +35,16 @@ RealtimeResult run_realtime(scenario::Scenario& sc, rt::Participant& participant
   for (std::size_t i = 0; i < sc.components.size(); ++i)
     plants[i] = sc.components[i].kind == scenario::ComponentKind::plant;
   const auto commands = scenario::StepExecutor(sc, plants).remote_inputs();
+  // A command's latency starts at its robot's sensor sample, stamped on the plant's host.
+  std::vector<int64_t> origin_offset(signals.size(), 0);
+  std::vector<bool> corrected(signals.size(), false);
+  for (const auto& c : sc.components) {
+    const auto off = host_clock_offset_ns.find(c.host);
+    if (!plants[&c - sc.components.data()] || off == host_clock_offset_ns.end()) continue;
+    for (const auto& in : c.component->inputs())
+      for (std::size_t s = 0; s < signals.size(); ++s)
+        if (signals[s].name == in->signal()) origin_offset[s] = off->second, corrected[s] = true;
+  }
 
   rt::QosProfile any = profiles.get("sensor");  // best effort, volatile: matches every producer
   any.depth = 256;
@@ -67,6 +78,7 @@ RealtimeResult run_realtime(scenario::Scenario& sc, rt::Participant& participant
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
+  res.all_running_ns = monotonic_ns();
   msg::ClockStep start;
   start.step_index(0);
   // The run's start on the wall clock, far enough ahead that every host has the start signal
@@ -143,7 +155,7 @@ RealtimeResult run_realtime(scenario::Scenario& sc, rt::Participant& participant
           continue;
         res.log.record(s, sample);
         const int64_t origin = subs[s]->header().origin_time_ns();
-        if (origin > distributed::kNoMeasurementOrigin) latency[s].push_back(now - origin);
+        if (origin > distributed::kNoMeasurementOrigin) latency[s].push_back(now - origin + origin_offset[s]);
         const int64_t killed = fault.killed_ns.load();
         const auto width = static_cast<std::ptrdiff_t>(signals[s].fields.size());
         if (killed && safe_after_s < 0 && std::find(commands.begin(), commands.end(), s) != commands.end() &&
@@ -170,11 +182,13 @@ RealtimeResult run_realtime(scenario::Scenario& sc, rt::Participant& participant
     res.fault["safe_command_after_s"] = safe_after_s >= 0 ? nlohmann::ordered_json(safe_after_s) : nlohmann::ordered_json();
     res.fault["input_deadline_periods"] = sc.input_deadline_periods;
   }
-  for (std::size_t s : commands)
+  for (std::size_t s : commands) {
     res.latency[signals[s].name] = {{"samples", latency[s].size()},
                                     {"p50_us", percentile_us(latency[s], 0.5)},
                                     {"p99_us", percentile_us(latency[s], 0.99)},
                                     {"max_us", percentile_us(latency[s], 1.0)}};
+    if (corrected[s]) res.latency[signals[s].name]["clock_offset_corrected_us"] = static_cast<double>(origin_offset[s]) * 1e-3;
+  }
   return res;
 }
 

@@ -5,6 +5,8 @@
 
 #include <atomic>
 #include <cstdint>
+#include <map>
+#include <string>
 #include <nlohmann/json.hpp>
 #include <vector>
 
@@ -24,6 +26,7 @@ struct RealtimeResult {
   nlohmann::ordered_json latency = nlohmann::ordered_json::object();
   nlohmann::ordered_json fault = nlohmann::ordered_json::object();
   double wall = 0;
+  int64_t all_running_ns = 0;  ///< monotonic time every process had reported (its first heartbeat)
 };
 
 /// Fault injection state shared with the launcher's watcher thread.
@@ -35,8 +38,12 @@ struct FaultClock {
 /// Waits (up to start_timeout_s) for a heartbeat from every process in `procs`, publishes the
 /// start signal, then records until the duration has passed, every host is draining, or
 /// `stop`. Throws distributed::LockstepError when a process never reports.
+/// `host_clock_offset_ns`: each other host's clock minus this one's (plexus launch over ssh);
+/// the sensor-to-command latency of a robot on such a host is corrected by it (the sample's
+/// origin time is that host's clock, the arrival this one's), and says so in its record.
 RealtimeResult run_realtime(scenario::Scenario& sc, rt::Participant& participant, const rt::QosProfiles& profiles,
                             const std::vector<Process>& procs, double start_timeout_s, FaultClock& fault,
-                            StatusConsole& console, const std::atomic<bool>& stop);
+                            StatusConsole& console, const std::atomic<bool>& stop,
+                            const std::map<std::string, int64_t>& host_clock_offset_ns = {});
 
 }  // namespace plexus::cli

@@ -36,8 +36,9 @@ void StatusConsole::line(const std::string& text) {
 
 void StatusConsole::status(const std::string& text) {
   if (!enabled_) return;
+  const std::string hosts = hosts_ ? hosts_() : std::string();
   std::lock_guard lk(mu_);
-  status_ = text;
+  status_ = hosts.empty() ? text : text + " | hosts: " + hosts;
   if (tty_) {
     erase_locked();
     std::fputs(status_.c_str(), stderr);

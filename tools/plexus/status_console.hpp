@@ -7,6 +7,7 @@
 #include <spdlog/spdlog.h>
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -26,6 +27,9 @@ class StatusConsole {
   void status(const std::string& text);
   /// Removes the status line (before the final report).
   void clear();
+  /// Appended to every status line after " | hosts: " (plexus launch over ssh: per-host
+  /// health, remote_share.hpp). Set before the status line is first drawn.
+  void set_hosts(std::function<std::string()> hosts) { hosts_ = std::move(hosts); }
 
  private:
   void erase_locked();
@@ -33,6 +37,7 @@ class StatusConsole {
   bool enabled_, tty_;
   int64_t plain_interval_ns_, next_plain_ns_ = 0;
   std::string status_;
+  std::function<std::string()> hosts_;
   bool drawn_ = false;
 };
 

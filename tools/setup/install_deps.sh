@@ -18,6 +18,8 @@ PACKAGES=(
   gnuplot-nox rt-tests iproute2 procps
   # the report page's test: headless Chromium renders report.html (tests/report)
   chromium chromium-driver
+  # plexus launch over ssh (and its tests: an sshd per namespace), systemd-analyze for the units, jq in the tests
+  openssh-client openssh-server systemd jq
 )
 
 SUDO=""

@@ -139,6 +139,10 @@ struct Loader {
       out.restart_delay = section.optional<double>("restart_delay", 0.0);
       if (!(out.restart_delay >= 0.0 && out.restart_delay <= 3600.0))
         section.fail("restart_delay", "must be in [0, 3600] s");
+      out.priority = section.optional<int>("priority", 0);
+      if (out.priority < 0 || out.priority > 99) section.fail("priority", "must be in 0..99 (SCHED_FIFO; 0: normal scheduling)");
+      out.cpu = section.optional<int>("cpu", -1);
+      if (out.cpu < -1 || out.cpu > 1023) section.fail("cpu", "must be a CPU number 0..1023 (-1: no affinity)");
     }
     cfg.section = &section;
     out.type = cfg.type;
@@ -219,6 +223,20 @@ struct Loader {
       for (const auto& h : hs.keys()) {
         const YamlMap host = hs.map(name_key(hs, h, "host"));
         sc.host_address[h] = host.optional<std::string>("address", "");
+        auto& access = sc.host_access[h];
+        access.ssh = host.optional<std::string>("ssh", "");
+        access.workdir = host.optional<std::string>("workdir", "");
+        access.plexus = host.optional<std::string>("plexus", "");
+        // An ssh destination is one word: a leading '-' would reach ssh as an option.
+        if (host.has("ssh") && (access.ssh.empty() || access.ssh[0] == '-' ||
+                                access.ssh.find_first_of(" \t\r\n") != std::string::npos))
+          host.fail("ssh", "expected [user@]host or a Host of the ssh config (one word, not starting with '-')");
+        for (const char* key : {"workdir", "plexus"})
+          if (host.has(key) && (host.optional<std::string>(key, "").empty() ||
+                                host.optional<std::string>(key, "").find_first_of("\r\n") != std::string::npos))
+            host.fail(key, "expected a path on that host");
+        if ((host.has("workdir") || host.has("plexus")) && !host.has("ssh"))
+          host.fail(host.has("workdir") ? "workdir" : "plexus", "only for a host reached over ssh (add ssh: [user@]host)");
         host.reject_unknown();
         hosts.insert(h);
         sc.hosts.push_back(h);

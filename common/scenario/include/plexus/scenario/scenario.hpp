@@ -40,6 +40,10 @@ struct ScenarioComponent {
   std::string restart = "on_failure";
   /// Seconds between the process's death and its restart (systemd's RestartSec), >= 0.
   double restart_delay = 0.0;
+  /// Realtime: SCHED_FIFO priority of its loop (0: normal scheduling) and the CPU it is
+  /// pinned to (-1: none), passed as the service's --priority and --cpu.
+  int priority = 0;
+  int cpu = -1;
   /// port -> "file:line: services.x.remap.port" of each `remap` entry, so that a wiring error
   /// a remap causes names the remap.
   std::map<std::string, std::string> remap_where;
@@ -98,6 +102,14 @@ struct Scenario {
   int dds_domain = 0;
   std::vector<std::string> hosts;                   ///< in document order; the first runs the clock
   std::map<std::string, std::string> host_address;  ///< host -> address ("" if not given)
+  /// How `plexus launch` reaches a host over ssh (hosts.<h>.ssh, workdir, plexus): empty
+  /// `ssh` for a host started by hand or the one the command runs on.
+  struct HostAccess {
+    std::string ssh;      ///< ssh destination, [user@]host or a Host alias of the ssh config
+    std::string workdir;  ///< folder the remote share runs in (empty: the login folder)
+    std::string plexus;   ///< plexus executable there (empty: the launcher's own path)
+  };
+  std::map<std::string, HostAccess> host_access;
   /// In execution order: by stage (ComponentKind), then in document order.
   std::vector<ScenarioComponent> components;
   std::vector<SignalSpec> signals;  ///< every signal, in component order (then external inputs)
