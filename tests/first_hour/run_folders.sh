@@ -46,4 +46,7 @@ echo "launch after SIGINT: exit $rc; $(tail -1 launch.err)"
 tail -1 launch.err | grep -q '^plexus launch: interrupted (SIGINT)' || fail "no 'interrupted' line"
 [ "$(cat interrupted/status)" = "interrupted (SIGINT)" ] || fail "status: $(cat interrupted/status)"
 [ ! -e interrupted/metrics.json ] || fail "an interrupted run was scored"
+err=$("$plexus" report interrupted 2>&1 >/dev/null); rc=$?
+echo "report of the interrupted run: exit $rc: $err"
+[ $rc -eq 2 ] && echo "$err" | grep -q 'the run did not complete (interrupted (SIGINT))' || fail "report of an interrupted run"
 echo "all run-folder checks passed"

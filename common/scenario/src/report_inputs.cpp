@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "plexus/base/input_error.hpp"
+#include "plexus/scenario/run_folder.hpp"
 #include "plexus/base/yaml_reader.hpp"
 
 namespace plexus::scenario {
@@ -134,6 +135,9 @@ double ReportInputs::duration() const {
 ReportInputs read_report_inputs(const fs::path& run_dir) {
   const std::string dir = run_dir.string();
   if (!fs::is_directory(run_dir)) throw InputError(dir + ": no such run folder");
+  // A run that did not reach its end has no metrics to report: say how it ended.
+  if (const std::string status = run_folder_status(run_dir); !status.empty() && status != "complete")
+    throw InputError(dir + ": the run did not complete (" + status + "): nothing to report");
   for (const char* f : {"metrics.json", "scenario.resolved.yaml"})
     if (!fs::is_regular_file(run_dir / f)) throw InputError(dir + ": not a run folder (no " + f + ")");
   ReportInputs in;
