@@ -10,6 +10,7 @@
 
 #include "../policy_names.hpp"
 #include "cdr_sertype.hpp"
+#include "cyclone_security.hpp"
 #include "plexus/base/clock.hpp"
 
 namespace plexus::rt {
@@ -261,9 +262,14 @@ CycloneParticipant::CycloneParticipant(const ParticipantOptions& o) : Participan
   if (d < 0 && d != DDS_RETCODE_PRECONDITION_NOT_MET) throw std::runtime_error(cyc_error("cannot create domain", d));
   dds_qos_t* pq = dds_create_qos();
   dds_qset_entity_name(pq, o.name.c_str());
+  detail::apply_cyclone_security(pq, o.security);
   participant_ = dds_create_participant(domain, pq, nullptr);
   dds_delete_qos(pq);
-  if (participant_ < 0) throw std::runtime_error(cyc_error("cannot create participant", participant_));
+  if (participant_ < 0)
+    throw std::runtime_error(cyc_error(o.security.enabled ? ("cannot create participant with DDS Security (identity '" +
+                                                             o.security.identity + "')").c_str()
+                                                          : "cannot create participant",
+                                       participant_));
   builtin_participants_ = dds_create_reader(participant_, DDS_BUILTIN_TOPIC_DCPSPARTICIPANT, nullptr, nullptr);
   builtin_publications_ = dds_create_reader(participant_, DDS_BUILTIN_TOPIC_DCPSPUBLICATION, nullptr, nullptr);
   builtin_subscriptions_ = dds_create_reader(participant_, DDS_BUILTIN_TOPIC_DCPSSUBSCRIPTION, nullptr, nullptr);

@@ -24,6 +24,7 @@
 
 #include "../policy_names.hpp"
 #include "fast_endpoint_qos.hpp"
+#include "fast_security.hpp"
 #include "plexus/base/clock.hpp"
 
 namespace plexus::rt {
@@ -383,10 +384,13 @@ FastParticipant::FastParticipant(const ParticipantOptions& o) : Participant(o), 
       pq.wire_protocol().builtin.initialPeersList.push_back(loc);
     }
   }
+  detail::apply_fast_security(pq, o.security);
   auto* factory = fdds::DomainParticipantFactory::get_instance();
   participant_ = factory->create_participant(static_cast<fdds::DomainId_t>(o.domain_id), pq, discovery_.get(),
                                              fdds::StatusMask::none() << fdds::StatusMask::data_on_readers());
-  if (!participant_) throw std::runtime_error("Fast DDS: cannot create participant on domain " + std::to_string(o.domain_id));
+  if (!participant_)
+    throw std::runtime_error("Fast DDS: cannot create participant on domain " + std::to_string(o.domain_id) +
+                             (o.security.enabled ? " with DDS Security (identity '" + o.security.identity + "')" : ""));
   {
     std::ostringstream g;
     g << participant_->guid().guidPrefix;
