@@ -20,6 +20,7 @@
 
 #include "child_process.hpp"
 #include "launch_plan.hpp"
+#include "launch_security.hpp"
 #include "realtime_run.hpp"
 #include "log_relay.hpp"
 #include "status_console.hpp"
@@ -113,6 +114,16 @@ int run_launch(const LaunchOptions& o) {
   if (!vendor_of.empty())
     throw InputError("--vendor " + vendor_of.begin()->first + ": no such process (processes: plant_simulator or a service name)");
 
+  // DDS Security: every participant's identity checked, and a mixed deployment whose
+  // handshakes would fail refused, before anything starts (launch_security.hpp).
+  std::vector<Process> all_vendors = plan(sc, "");
+  for (auto& p : all_vendors) {
+    const auto named = std::find_if(o.vendors.begin(), o.vendors.end(), [&](const std::string& v) { return v.rfind(p.name + "=", 0) == 0; });
+    p.vendor = named != o.vendors.end() ? named->substr(p.name.size() + 1) : p.vendor.empty() ? vendor : p.vendor;
+  }
+  all_vendors.erase(std::remove_if(all_vendors.begin(), all_vendors.end(), is_external), all_vendors.end());
+  const LaunchSecurity security = plan_security(sc, all_vendors, vendor);
+
   // Every QoS profile the scenario names must exist before anything starts.
   for (const auto& c : sc.components)
     if (!c.qos.empty() && !profiles.contains(c.qos))
@@ -138,6 +149,7 @@ int run_launch(const LaunchOptions& o) {
   po.domain_id = domain;
   po.name = "plexus launch" + (o.host.empty() ? std::string() : " " + o.host);
   po.network = net;
+  po.security = security.launcher;
   auto participant = rt::Participant::create(po);
 
   const bool realtime = sc.clock == scenario::ClockMode::realtime;
@@ -198,6 +210,8 @@ int run_launch(const LaunchOptions& o) {
       args.insert(args.end(), {"--dds", p.vendor, "--domain", std::to_string(domain), "--qos-file", qos_file,
                                "--interface", net.interface_address, "--peers", peers});
     }
+    const auto security_args = security.args(p.name);
+    args.insert(args.end(), security_args.begin(), security_args.end());
     p.args = args;
     start_process(p);
   }
@@ -299,6 +313,7 @@ int run_launch(const LaunchOptions& o) {
                   everywhere.size(), vendors_label.c_str(), r.wall);
     summary.headline = headline;
     summary.extra["processes"] = process_table(procs);
+    if (security.enabled) summary.extra["security"] = security.to_json();
     summary.extra["services"] = r.services;
     summary.extra["command_latency"] = r.latency;
     nlohmann::ordered_json restarts = nlohmann::ordered_json::object();
@@ -366,6 +381,7 @@ int run_launch(const LaunchOptions& o) {
   summary.headline = headline;
   summary.extra["steps_per_s"] = steps_per_s;
   summary.extra["processes"] = process_table(procs);
+  if (security.enabled) summary.extra["security"] = security.to_json();
   nlohmann::ordered_json resp = nlohmann::ordered_json::object();
   for (const auto& [producer, acc] : responses)
     resp[producer] = {{"samples", acc.samples},
