@@ -122,7 +122,13 @@ int run_launch(const LaunchOptions& o) {
     p.vendor = named != o.vendors.end() ? named->substr(p.name.size() + 1) : p.vendor.empty() ? vendor : p.vendor;
   }
   all_vendors.erase(std::remove_if(all_vendors.begin(), all_vendors.end(), is_external), all_vendors.end());
-  const LaunchSecurity security = plan_security(sc, all_vendors, vendor);
+  const LaunchSecurity security = [&] {
+    try {
+      return plan_security(sc, all_vendors, vendor);
+    } catch (const InputError& e) {  // a section set by --set has no line: name the override
+      throw InputError(scenario::attribute_to_override(e.what(), o.scenario, overrides));
+    }
+  }();
 
   // Every QoS profile the scenario names must exist before anything starts.
   for (const auto& c : sc.components)

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <filesystem>
 
 #include "plexus/base/input_error.hpp"
 
@@ -61,6 +62,10 @@ LaunchSecurity plan_security(const scenario::Scenario& sc, const std::vector<Pro
   for (const auto& [process, where] : sec.identity_where)
     if (process != kLauncherIdentity && std::none_of(all.begin(), all.end(), [&](const Process& p) { return p.name == process; }))
       throw InputError(where + ": no process '" + process + "' in this scenario (processes: " + names + ")");
+  std::error_code ec;
+  if (!std::filesystem::is_directory(sec.pki, ec)) throw InputError(sec.where + ".pki: " + sec.pki + ": no such folder");
+  if (!sec.governance.empty() && !std::filesystem::is_regular_file(sec.governance, ec))
+    throw InputError(sec.where + ".governance: " + sec.governance + ": no such file");
   auto resolve = [&](const std::string& process) {
     const auto named = sec.identities.find(process);
     const std::string id = named != sec.identities.end() ? named->second : default_identity(process);
@@ -69,7 +74,7 @@ LaunchSecurity plan_security(const scenario::Scenario& sc, const std::vector<Pro
     try {
       rt::check_security_files(s, origin);
     } catch (const InputError& e) {
-      if (named == sec.identities.end() && id.find('/') == std::string::npos)
+      if (named == sec.identities.end() && !std::filesystem::is_directory(std::filesystem::path(sec.pki) / "identities" / id, ec))
         throw InputError(std::string(e.what()) + " (process '" + process + "' uses identity '" + id +
                          "' unless security.identities names another; tools/security/make_test_pki.sh PKI " + id +
                          " creates it)");

@@ -26,7 +26,9 @@ ScenarioSecurity load_security_section(const YamlMap& top, const std::string& ba
   const YamlMap sec = top.map("security");
   s.where = sec.where() + ": security";
   s.enabled = sec.required<bool>("enabled");
-  if (sec.has("pki") || s.enabled) {
+  if (s.enabled && !sec.has("pki"))
+    sec.fail("enabled", "DDS Security needs `pki`, the PKI folder (tools/security/make_test_pki.sh writes one)");
+  if (sec.has("pki")) {
     const auto pki = sec.required<std::string>("pki");
     if (pki.empty()) sec.fail("pki", "expected the PKI folder (tools/security/make_test_pki.sh writes one)");
     s.pki = absolute_in(base_dir, pki);

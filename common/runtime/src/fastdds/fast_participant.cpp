@@ -4,6 +4,8 @@
 #include <fastdds/dds/domain/DomainParticipant.hpp>
 #include <fastdds/dds/domain/DomainParticipantFactory.hpp>
 #include <fastdds/dds/domain/DomainParticipantListener.hpp>
+#include <fastdds/dds/log/Log.hpp>
+#include <fastdds/dds/log/StdoutErrConsumer.hpp>
 #include <fastdds/dds/publisher/DataWriter.hpp>
 #include <fastdds/dds/publisher/DataWriterListener.hpp>
 #include <fastdds/dds/publisher/Publisher.hpp>
@@ -355,6 +357,16 @@ class FastParticipant::Discovery final : public fdds::DomainParticipantListener 
 };
 
 FastParticipant::FastParticipant(const ParticipantOptions& o) : Participant(o), discovery_(std::make_unique<Discovery>()) {
+  // Fast DDS logs to stdout by default, where tools print their results (`plexus topic list
+  // --json`): its own log goes to stderr instead. Security errors (a failed handshake with a
+  // participant of another CA, for one) otherwise broke the JSON.
+  static std::once_flag log_to_stderr;
+  std::call_once(log_to_stderr, [] {
+    auto consumer = std::make_unique<fdds::StdoutErrConsumer>();
+    consumer->stderr_threshold(fdds::Log::Kind::Info);
+    fdds::Log::ClearConsumers();
+    fdds::Log::RegisterConsumer(std::move(consumer));
+  });
   fdds::DomainParticipantQos pq;
   pq.name(o.name);
   // Transport: UDPv4 on the configured interface only (loopback by default); no shared

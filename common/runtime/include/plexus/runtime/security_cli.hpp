@@ -8,6 +8,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <filesystem>
 #include <string>
 
 #include "plexus/base/input_error.hpp"
@@ -31,6 +32,8 @@ inline SecurityOptions security_from_options(const std::string& pki, const std::
     if (!governance.empty()) throw InputError("--governance " + governance + ": needs --security PKI_FOLDER");
     return {};
   }
+  std::error_code ec;
+  if (!std::filesystem::is_directory(pki, ec)) throw InputError("--security " + pki + ": no such folder");
   SecurityOptions s = security_from_pki(pki, identity.empty() ? default_identity : identity, governance);
   check_security_files(s, "--security " + pki);
   return s;
