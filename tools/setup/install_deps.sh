@@ -16,6 +16,8 @@ PACKAGES=(
   libgtest-dev libgmock-dev libbenchmark-dev clang libclang-rt-14-dev
   # tools used at run time: plots, loop-jitter baseline, network namespaces for multi-host tests
   gnuplot-nox rt-tests iproute2 procps
+  # DDS Security (docs/security.md): the test PKI script, OpenSSL for the checks, captures
+  openssl libssl-dev tcpdump
 )
 
 SUDO=""
