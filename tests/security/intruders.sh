@@ -13,8 +13,8 @@ bin=$1 params=$2 pki=$3 foreign=$4 vendor=$5 domain=$6
 work=$(mktemp -d)
 trap 'kill $(jobs -p) 2>/dev/null; wait 2>/dev/null; rm -rf "$work"' EXIT
 failed=0
-check() {  # check WHAT CONDITION-RESULT
-  if [ "$2" -eq 0 ]; then echo "ok    $1"; else echo "FAIL  $1"; failed=1; fi
+check() {  # check EXIT-STATUS WHAT (the status first: an expansion in WHAT would reset $?)
+  if [ "$1" -eq 0 ]; then echo "ok    $2"; else echo "FAIL  $2"; failed=1; fi
 }
 "$bin/plant_simulator" --robot r1 --params "$params" --dds "$vendor" --domain "$domain" --security "$pki" \
   > "$work/plant.log" 2>&1 &
@@ -25,14 +25,14 @@ for _ in 1 2 3 4; do
   "$bin/plexus" topic list --json --dds "$vendor" --domain "$domain" --wait 4 --security "$pki" > "$work/list.json" 2> "$work/list.err"
   grep -q '"r1/truth/state"' "$work/list.json" && { seen=0; break; }
 done
-check "secure plexus topic list ($vendor) sees the secure plant's topics: $(grep -o '"topic":"[^"]*"' "$work/list.json" | tr '\n' ' ')" $seen
+check $seen "secure plexus topic list ($vendor) sees the secure plant's topics: $(grep -o '"topic":"[^"]*"' "$work/list.json" | tr '\n' ' ')"
 for iv in fast cyclone; do
   "$bin/plexus" topic list --json --dds "$iv" --domain "$domain" --wait 6 > "$work/none.json" 2> "$work/none.err"
   [ "$(cat "$work/none.json")" = "[]" ]
-  check "plexus topic list on $iv without an identity: $(cat "$work/none.json")" $?
+  check $? "plexus topic list on $iv without an identity: $(cat "$work/none.json")"
   "$bin/plexus" topic list --json --dds "$iv" --domain "$domain" --wait 6 --security "$foreign" > "$work/foreign.json" 2> "$work/foreign.err"
   [ "$(cat "$work/foreign.json")" = "[]" ]
-  check "plexus topic list on $iv with an identity of another CA: $(cat "$work/foreign.json")" $?
+  check $? "plexus topic list on $iv with an identity of another CA: $(cat "$work/foreign.json")"
 done
 # Injection: the secure subscriber reads for 12 s at least while intruders publish.
 probe=$bin/security_probe
@@ -52,12 +52,12 @@ for iv in fast cyclone; do
 done
 wait $sub
 rc=$?
-check "secure subscriber ($vendor) got the secure publisher's samples and none of the intruders': $(grep -h '^received' "$work/sub.log")" $rc
+check $rc "secure subscriber ($vendor) got the secure publisher's samples and none of the intruders': $(grep -h '^received' "$work/sub.log")"
 wait "${intruders[@]}"
 for f in "$work"/intruder_*.log; do
   line=$(grep -h '^published' "$f")
   [[ $line == *"matched 0" ]]
-  check "intruder $(basename "$f" .log | sed 's/intruder_//'): $line" $?
+  check $? "intruder $(basename "$f" .log | sed 's/intruder_//'): $line"
 done
 kill $pub 2>/dev/null
 if [ $failed -ne 0 ]; then
