@@ -27,6 +27,13 @@ for pki in "$out/pki" "$out/mixed" "$out/foreign"; do
       { echo "pki_fixture: $id/permissions.xml does not name $subject"; exit 1; }
   done
 done
+# A governance that signs payloads on their own (data_protection_kind SIGN), which Fast DDS 2.9
+# fails to check for payloads whose length is not a multiple of 4 (test security.fast_signed_payload).
+sed 's|<data_protection_kind>NONE</data_protection_kind>|<data_protection_kind>SIGN</data_protection_kind>|' \
+  "$out/pki/governance_sign.xml" > "$out/pki/governance_sign_payload.xml"
+openssl smime -sign -text -in "$out/pki/governance_sign_payload.xml" -out "$out/pki/governance_sign_payload.p7s" \
+  -signer "$out/pki/permissions_ca.pem" -inkey "$out/pki/permissions_ca_key.pem"
+grep -q "<data_protection_kind>SIGN</data_protection_kind>" "$out/pki/governance_sign_payload.xml"
 # The foreign CA is another CA: its identities do not verify against the test PKI's.
 if openssl verify -CAfile "$out/pki/identity_ca.pem" "$out/foreign/identities/probe_pub/cert.pem" > /dev/null 2>&1; then
   echo "pki_fixture: the foreign identity verifies against the test CA"; exit 1
