@@ -106,7 +106,7 @@ add_test(NAME security.governance_of_another_ca
          COMMAND ${EXPECT_EXIT} 2 "plexus topic: error: --security .*/pki: identity 'plexus_topic': .*/foreign/governance.p7s: not signed by the permissions CA .*/pki/permissions_ca.pem"
                  $<TARGET_FILE:plexus> topic list --security ${SEC_RUNS}/pki --governance ${SEC_RUNS}/foreign/governance.p7s)
 add_test(NAME security.key_of_another_identity
-         COMMAND bash -c "rm -rf ${SEC_RUNS}/mixed_up && mkdir -p ${SEC_RUNS}/mixed_up && cp ${SEC_RUNS}/pki/identities/observer/cert.pem ${SEC_RUNS}/pki/identities/observer/permissions.p7s ${SEC_RUNS}/mixed_up/ && cp ${SEC_RUNS}/pki/identities/controller/key.pem ${SEC_RUNS}/mixed_up/ && exec ${EXPECT_EXIT} 2 \"identity 'mixed_up': .*/mixed_up/key.pem: not the key of .*/mixed_up/cert.pem\" $<TARGET_FILE:localisation_observer> --security ${SEC_RUNS}/pki --identity ${SEC_RUNS}/mixed_up")
+         COMMAND bash -c "rm -rf ${SEC_RUNS}/mixed_up && mkdir -p ${SEC_RUNS}/mixed_up && cp ${SEC_RUNS}/pki/identities/observer/cert.pem ${SEC_RUNS}/pki/identities/observer/permissions.p7s ${SEC_RUNS}/mixed_up/ && cp ${SEC_RUNS}/pki/identities/controller/key.pem ${SEC_RUNS}/mixed_up/ && exec ${EXPECT_EXIT} 2 \"identity 'mixed_up': .*/mixed_up/key.pem: not the key of .*/mixed_up/cert.pem\" $<TARGET_FILE:localisation_observer> --params ${PROJECT_SOURCE_DIR}/deploy/params/heading_observer.yaml --security ${SEC_RUNS}/pki --identity ${SEC_RUNS}/mixed_up")
 set_tests_properties(security.governance_of_another_ca security.key_of_another_identity PROPERTIES LABELS "security;cli"
                      TIMEOUT 60 FIXTURES_REQUIRED security_pki)
 
