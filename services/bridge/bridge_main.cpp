@@ -133,7 +133,7 @@ int main(int argc, char** argv) {
       throw InputError(src.where + ": robot " + robot + "'s source is " + scenario::to_string(src.type) + ", not " + name);
     auto link = kSerial ? bridge::serial_link(src.device, src.baud) : bridge::udp_link(src.bind, src.peer, src.where);
 
-    const rt::ParticipantOptions po = net.participant(name + " " + robot);
+    const rt::ParticipantOptions po = net.participant(name + " " + robot, name);
     const auto profiles = net.profiles();
     auto participant = rt::Participant::create(po);
     bridge::Bridge b(sc, *participant, profiles, std::move(link),

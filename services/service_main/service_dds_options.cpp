@@ -1,6 +1,8 @@
 #include "services/service_main/service_dds_options.hpp"
 
 #include <set>
+
+#include "plexus/runtime/security_cli.hpp"
 #include <sstream>
 
 namespace plexus::scenario {
@@ -12,9 +14,11 @@ void ServiceDdsOptions::add_to(CLI::App& app) {
   app.add_option("--service", service, "Name in heartbeats and logs (default: the executable and what it hosts)");
   app.add_option("--interface", interface_address, "Address of the one interface DDS uses (default 127.0.0.1)");
   app.add_option("--peers", peers, "Comma-separated unicast discovery peers (default 127.0.0.1)");
+  rt::add_security_options(app, security, identity, governance);
 }
 
-rt::ParticipantOptions ServiceDdsOptions::participant(const std::string& default_name) const {
+rt::ParticipantOptions ServiceDdsOptions::participant(const std::string& default_name,
+                                                      const std::string& default_identity) const {
   rt::ParticipantOptions po;
   po.vendor = rt::parse_vendor(dds);
   po.domain_id = domain;
@@ -25,6 +29,7 @@ rt::ParticipantOptions ServiceDdsOptions::participant(const std::string& default
   for (std::string item; std::getline(ss, item, ',');)
     if (!item.empty()) unique.insert(item);
   po.network.peers.assign(unique.begin(), unique.end());
+  po.security = rt::security_from_options(security, identity, governance, default_identity);
   return po;
 }
 

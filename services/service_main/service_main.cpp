@@ -135,7 +135,7 @@ int main(int argc, char** argv) {
     if (sc.components.empty()) throw InputError(sc.file + ": no component to run");
     const std::vector<bool> hosted(sc.components.size(), true);
 
-    const rt::ParticipantOptions po = net.participant(std::string(kName) + " " + hosted_names);
+    const rt::ParticipantOptions po = net.participant(std::string(kName) + " " + hosted_names, kName);
     const auto profiles = net.profiles();
     auto participant = rt::Participant::create(po);
     if (realtime) {

@@ -379,6 +379,9 @@ int run_pipeline(const PipeOpts& o) {
     std::vector<std::string> args = {"record", "-o", file, "--dds", o.dds.dds, "--domain", std::to_string(o.dds.domain),
                                      "--duration", std::to_string(o.duration)};
     if (!o.topics.empty()) args.insert(args.end(), {"--topics", o.topics});
+    for (const auto& [flag, value] : {std::pair<const char*, std::string>{"--security", o.dds.security},
+                                      {"--identity", o.dds.identity}, {"--governance", o.dds.governance}})
+      if (!value.empty()) args.insert(args.end(), {flag, value});
     std::string out;
     const int rc = run_capture("plexus", args, out);
     if (rc != 0) throw std::runtime_error("live recording failed (plexus record exit " + std::to_string(rc) + ")");

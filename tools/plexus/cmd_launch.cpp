@@ -23,6 +23,7 @@
 #include "remote_session.hpp"
 #include "remote_share.hpp"
 #include "launch_plan.hpp"
+#include "launch_security.hpp"
 #include "realtime_run.hpp"
 #include "log_relay.hpp"
 #include "qos_names.hpp"
@@ -144,6 +145,22 @@ int run_launch(LaunchOptions o) {
   if (!vendor_of.empty())
     throw InputError("--vendor " + vendor_of.begin()->first + ": no such process (processes: plant_simulator or a service name)");
 
+  // DDS Security: every participant's identity checked, and a mixed deployment whose
+  // handshakes would fail refused, before anything starts (launch_security.hpp).
+  std::vector<Process> all_vendors = plan(sc, "");
+  for (auto& p : all_vendors) {
+    const auto named = std::find_if(o.vendors.begin(), o.vendors.end(), [&](const std::string& v) { return v.rfind(p.name + "=", 0) == 0; });
+    p.vendor = named != o.vendors.end() ? named->substr(p.name.size() + 1) : p.vendor.empty() ? vendor : p.vendor;
+  }
+  all_vendors.erase(std::remove_if(all_vendors.begin(), all_vendors.end(), is_external), all_vendors.end());
+  const LaunchSecurity security = [&] {
+    try {
+      return plan_security(sc, all_vendors, vendor);
+    } catch (const InputError& e) {  // a section set by --set has no line: name the override
+      throw InputError(scenario::attribute_to_override(e.what(), o.scenario, overrides));
+    }
+  }();
+
   // Every QoS profile the scenario names must exist before anything starts.
   check_qos_names(sc, profiles, qos_file);
 
@@ -182,6 +199,7 @@ int run_launch(LaunchOptions o) {
   po.domain_id = domain;
   po.name = "plexus launch" + (o.host.empty() ? std::string() : " " + o.host);
   po.network = net;
+  po.security = security.launcher;
   auto participant = rt::Participant::create(po);
 
   const bool realtime = sc.clock == scenario::ClockMode::realtime;
@@ -249,6 +267,8 @@ int run_launch(LaunchOptions o) {
       args.insert(args.end(), {"--dds", p.vendor, "--domain", std::to_string(domain), "--qos-file", qos_file,
                                "--interface", net.interface_address, "--peers", peers});
     }
+    const auto security_args = security.args(p.name);
+    args.insert(args.end(), security_args.begin(), security_args.end());
     p.args = args;
     start_process(p);
   }
@@ -386,6 +406,7 @@ int run_launch(LaunchOptions o) {
                   everywhere.size(), vendors_label.c_str(), r.wall);
     summary.headline = headline;
     summary.extra["processes"] = process_table(procs);
+    if (security.enabled) summary.extra["security"] = security.to_json();
     summary.extra["services"] = r.services;
     summary.extra["command_latency"] = r.latency;
     nlohmann::ordered_json restarts = nlohmann::ordered_json::object();
@@ -468,6 +489,7 @@ int run_launch(LaunchOptions o) {
   summary.headline = headline;
   summary.extra["steps_per_s"] = steps_per_s;
   summary.extra["processes"] = process_table(procs);
+  if (security.enabled) summary.extra["security"] = security.to_json();
   nlohmann::ordered_json resp = nlohmann::ordered_json::object();
   for (const auto& [producer, acc] : responses) {
     resp[producer] = {{"samples", acc.samples},

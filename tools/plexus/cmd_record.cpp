@@ -46,7 +46,7 @@ int run_record(const RecordOpts& o) {
   if (!o.profile.empty()) rt::QosProfiles::load(o.qos_file.empty() ? rt::default_qos_file() : o.qos_file).get(o.profile);
   RecordingWriter file(o.out);  // file errors first: exit 2 before any DDS work
   install_stop_handler();
-  auto p = make_participant(o.dds, "plexus_record");
+  auto p = make_participant(o.dds, "plexus_record", "plexus_record");
 
   // Which topics: the given ones (waiting for their writers), or every topic with a writer,
   // including topics that appear while recording (discovery is polled, as rosbag2 does).

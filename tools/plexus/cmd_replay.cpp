@@ -95,7 +95,7 @@ int run_replay(const ReplayOpts& o) {
     for (const auto& t : rec.topics()) found = found || t.name == w;
     if (!found) throw InputError("--topics: topic '" + w + "' is not in " + o.file);
   }
-  auto p = make_participant(o.dds, "plexus_replay");
+  auto p = make_participant(o.dds, "plexus_replay", "plexus_replay");
   struct Out {
     const msg::TypeSupport* ts = nullptr;
     std::unique_ptr<rt::WriterBackend> writer;

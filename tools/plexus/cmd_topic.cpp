@@ -75,7 +75,7 @@ void read_samples(rt::ReaderBackend& r, const msg::TypeSupport& ts, const TopicO
 
 int run_list(const TopicOpts& o) {
   check_common(o);
-  auto p = make_participant(o.dds, "plexus_topic");
+  auto p = make_participant(o.dds, "plexus_topic", "plexus_topic");
   struct Row {
     std::set<std::string> types;
     int writers = 0, readers = 0;
@@ -107,7 +107,7 @@ int run_list(const TopicOpts& o) {
 int run_echo(const TopicOpts& o) {
   check_common(o);
   if (o.csv && o.json) throw InputError("--csv and --json: choose one");
-  auto p = make_participant(o.dds, "plexus_topic_echo");
+  auto p = make_participant(o.dds, "plexus_topic_echo", "plexus_topic");
   std::vector<rt::EndpointQos> writers;
   const auto& ts = resolve_topic_type(*p, o.topic, o.type, o.wait < 0 ? 5.0 : o.wait, &writers);
   auto reader = p->make_reader(ts, o.topic, subscriber_qos(o.qos_file, o.profile, writers, 100));
@@ -142,7 +142,7 @@ int run_echo(const TopicOpts& o) {
 int run_hz(const TopicOpts& o) {
   check_common(o);
   if (!(o.window_s > 0)) throw InputError("--window: must be > 0 seconds");
-  auto p = make_participant(o.dds, "plexus_topic_hz");
+  auto p = make_participant(o.dds, "plexus_topic_hz", "plexus_topic");
   std::vector<rt::EndpointQos> writers;
   const auto& ts = resolve_topic_type(*p, o.topic, o.type, o.wait < 0 ? 5.0 : o.wait, &writers);
   auto reader = p->make_reader(ts, o.topic, subscriber_qos(o.qos_file, o.profile, writers, 100));
@@ -207,7 +207,7 @@ int run_hz(const TopicOpts& o) {
 
 int run_info(const TopicOpts& o) {
   check_common(o);
-  auto p = make_participant(o.dds, "plexus_topic_info");
+  auto p = make_participant(o.dds, "plexus_topic_info", "plexus_topic");
   std::vector<rt::DiscoveredEndpoint> eps;
   const double wait = o.wait < 0 ? 2.0 : o.wait;
   for (auto& e : remote_endpoints(*p, wait))

@@ -8,6 +8,7 @@
 #include "plexus/base/clock.hpp"
 #include "plexus/base/input_error.hpp"
 #include "plexus/base/logging.hpp"
+#include "plexus/runtime/security_cli.hpp"
 #include "plexus/runtime/vendor.hpp"
 
 namespace plexus::cli {
@@ -28,9 +29,10 @@ void add_dds_options(CLI::App* app, DdsOptions& o) {
   app->add_option("--domain", o.domain, "DDS domain id (0..232)")->capture_default_str();
   app->add_option("--interface", o.interface_address, "address of the one interface DDS uses")->capture_default_str();
   app->add_option("--peers", o.peers, "comma-separated unicast discovery peers")->capture_default_str();
+  rt::add_security_options(*app, o.security, o.identity, o.governance);
 }
 
-std::unique_ptr<rt::Participant> make_participant(const DdsOptions& o, const std::string& name) {
+std::unique_ptr<rt::Participant> make_participant(const DdsOptions& o, const std::string& name, const std::string& identity) {
   rt::ParticipantOptions po;
   po.vendor = rt::parse_vendor(o.dds);
   po.domain_id = o.domain;
@@ -40,6 +42,7 @@ std::unique_ptr<rt::Participant> make_participant(const DdsOptions& o, const std
   std::stringstream ss(o.peers);
   for (std::string peer; std::getline(ss, peer, ',');)
     if (!peer.empty()) po.network.peers.push_back(peer);
+  po.security = rt::security_from_options(o.security, o.identity, o.governance, identity);
   init_logging(name, "", "warn");  // tools print their own output; only problems are logged
   return rt::Participant::create(po);
 }

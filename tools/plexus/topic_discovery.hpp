@@ -20,9 +20,12 @@ struct DdsOptions {
   int domain = 0;
   std::string interface_address = "127.0.0.1";  ///< the one interface DDS uses
   std::string peers = "127.0.0.1";              ///< comma-separated unicast discovery peers
+  std::string security, identity, governance;   ///< DDS Security (plexus/runtime/security_cli.hpp)
 };
 void add_dds_options(CLI::App* app, DdsOptions& o);
-std::unique_ptr<rt::Participant> make_participant(const DdsOptions& o, const std::string& name);
+/// A participant named `name`; under --security its identity is --identity, else `identity`
+/// (the tool's own: plexus_topic, plexus_record, plexus_replay).
+std::unique_ptr<rt::Participant> make_participant(const DdsOptions& o, const std::string& name, const std::string& identity);
 
 /// Set by SIGINT/SIGTERM once install_stop_handler() ran.
 extern std::atomic<bool> g_stop;

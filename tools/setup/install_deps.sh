@@ -20,6 +20,8 @@ PACKAGES=(
   chromium chromium-driver
   # plexus launch over ssh (and its tests: an sshd per namespace), systemd-analyze for the units, jq in the tests
   openssh-client openssh-server systemd jq
+  # DDS Security (docs/security.md): the test PKI script, OpenSSL for the checks, captures
+  openssl libssl-dev tcpdump
 )
 
 SUDO=""

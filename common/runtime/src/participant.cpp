@@ -11,6 +11,7 @@ std::unique_ptr<Participant> Participant::create(const ParticipantOptions& optio
     throw InputError("--domain: DDS domain id must be in 0..232, got " + std::to_string(options.domain_id));
   if (options.network.max_participants_per_host < 1 || options.network.max_participants_per_host > 120)
     throw InputError("network: max_participants_per_host must be in 1..120");
+  if (options.security.enabled) check_security_files(options.security, "DDS Security of participant '" + options.name + "'");
   if (options.vendor == Vendor::fast) return std::make_unique<FastParticipant>(options);
   return std::make_unique<CycloneParticipant>(options);
 }

@@ -15,6 +15,7 @@
 #include "plexus/scenario/registry.hpp"
 #include "plexus/scenario/scenario.hpp"
 #include "plexus/scenario/evaluation.hpp"
+#include "security_section.hpp"
 #include "wiring.hpp"
 
 namespace plexus::scenario {
@@ -218,6 +219,7 @@ struct Loader {
       if (sc.dds_domain < 0 || sc.dds_domain > 232) dds.fail("domain", "must be in 0..232");
       dds.reject_unknown();
     }
+    if (top.has("security")) sc.security = load_security_section(top, sc.base_dir);
     if (top.has("hosts")) {
       const YamlMap hs = top.map("hosts");
       for (const auto& h : hs.keys()) {

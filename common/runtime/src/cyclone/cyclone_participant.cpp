@@ -10,6 +10,7 @@
 
 #include "../policy_names.hpp"
 #include "cdr_sertype.hpp"
+#include "cyclone_security.hpp"
 #include "plexus/base/clock.hpp"
 
 namespace plexus::rt {
@@ -243,6 +244,42 @@ class CycloneReader final : public ReaderBackend {
   std::atomic<uint64_t> malformed_{0};
 };
 
+// The domains this process created (dds_create_domain), with the participants on each: one
+// configuration per domain and process, made by the first participant and deleted with the
+// last. An explicitly created domain otherwise outlives main(), and its receive threads then
+// ran on while exit handlers had already cleaned up OpenSSL: with DDS Security on, a packet
+// decrypted at that moment crashed the process (SIGSEGV in EVP_CipherInit_ex, about one exit
+// in seven under load).
+struct DomainUse {
+  dds_entity_t handle = 0;  // 0: created by someone else in this process, not ours to delete
+  int participants = 0;
+};
+std::mutex g_domains_mu;
+std::map<dds_domainid_t, DomainUse>& domains() {
+  static auto* d = new std::map<dds_domainid_t, DomainUse>;  // never destroyed: used from destructors
+  return *d;
+}
+
+void acquire_domain(dds_domainid_t domain, const std::string& config) {
+  std::lock_guard lk(g_domains_mu);
+  auto& use = domains()[domain];
+  if (use.participants++ > 0) return;
+  const dds_entity_t d = dds_create_domain(domain, config.c_str());
+  if (d < 0 && d != DDS_RETCODE_PRECONDITION_NOT_MET) {
+    domains().erase(domain);
+    throw std::runtime_error(cyc_error("cannot create domain", d));
+  }
+  use.handle = d > 0 ? d : 0;
+}
+
+void release_domain(dds_domainid_t domain) {
+  std::lock_guard lk(g_domains_mu);
+  auto it = domains().find(domain);
+  if (it == domains().end() || --it->second.participants > 0) return;
+  if (it->second.handle > 0) dds_delete(it->second.handle);
+  domains().erase(it);
+}
+
 }  // namespace
 
 std::string CycloneParticipant::config_xml(const NetworkOptions& net) {
@@ -259,21 +296,33 @@ std::string CycloneParticipant::config_xml(const NetworkOptions& net) {
 
 CycloneParticipant::CycloneParticipant(const ParticipantOptions& o) : Participant(o) {
   const auto domain = static_cast<dds_domainid_t>(o.domain_id);
-  // One configuration per domain and process: the first participant creates it.
-  const dds_entity_t d = dds_create_domain(domain, config_xml(o.network).c_str());
-  if (d < 0 && d != DDS_RETCODE_PRECONDITION_NOT_MET) throw std::runtime_error(cyc_error("cannot create domain", d));
+  acquire_domain(domain, config_xml(o.network));
+  struct Release {  // the domain goes again if the participant cannot be created
+    dds_domainid_t domain;
+    bool armed = true;
+    ~Release() {
+      if (armed) release_domain(domain);
+    }
+  } release{domain};
   dds_qos_t* pq = dds_create_qos();
   dds_qset_entity_name(pq, o.name.c_str());
+  detail::apply_cyclone_security(pq, o.security);
   participant_ = dds_create_participant(domain, pq, nullptr);
   dds_delete_qos(pq);
-  if (participant_ < 0) throw std::runtime_error(cyc_error("cannot create participant", participant_));
+  if (participant_ < 0)
+    throw std::runtime_error(cyc_error(o.security.enabled ? ("cannot create participant with DDS Security (identity '" +
+                                                             o.security.identity + "')").c_str()
+                                                          : "cannot create participant",
+                                       participant_));
   builtin_participants_ = dds_create_reader(participant_, DDS_BUILTIN_TOPIC_DCPSPARTICIPANT, nullptr, nullptr);
   builtin_publications_ = dds_create_reader(participant_, DDS_BUILTIN_TOPIC_DCPSPUBLICATION, nullptr, nullptr);
   builtin_subscriptions_ = dds_create_reader(participant_, DDS_BUILTIN_TOPIC_DCPSSUBSCRIPTION, nullptr, nullptr);
+  release.armed = false;
 }
 
 CycloneParticipant::~CycloneParticipant() {
   if (participant_ > 0) dds_delete(participant_);
+  release_domain(static_cast<dds_domainid_t>(options().domain_id));
 }
 
 CycloneParticipant::Topic CycloneParticipant::topic(const msg::TypeSupport& type, const std::string& name) {

@@ -4,6 +4,8 @@
 #include <fastdds/dds/domain/DomainParticipant.hpp>
 #include <fastdds/dds/domain/DomainParticipantFactory.hpp>
 #include <fastdds/dds/domain/DomainParticipantListener.hpp>
+#include <fastdds/dds/log/Log.hpp>
+#include <fastdds/dds/log/StdoutErrConsumer.hpp>
 #include <fastdds/dds/publisher/DataWriter.hpp>
 #include <fastdds/dds/publisher/DataWriterListener.hpp>
 #include <fastdds/dds/publisher/Publisher.hpp>
@@ -24,6 +26,7 @@
 
 #include "../policy_names.hpp"
 #include "fast_endpoint_qos.hpp"
+#include "fast_security.hpp"
 #include "plexus/base/clock.hpp"
 
 namespace plexus::rt {
@@ -357,6 +360,16 @@ class FastParticipant::Discovery final : public fdds::DomainParticipantListener 
 };
 
 FastParticipant::FastParticipant(const ParticipantOptions& o) : Participant(o), discovery_(std::make_unique<Discovery>()) {
+  // Fast DDS logs to stdout by default, where tools print their results (`plexus topic list
+  // --json`): its own log goes to stderr instead. Security errors (a failed handshake with a
+  // participant of another CA, for one) otherwise broke the JSON.
+  static std::once_flag log_to_stderr;
+  std::call_once(log_to_stderr, [] {
+    auto consumer = std::make_unique<fdds::StdoutErrConsumer>();
+    consumer->stderr_threshold(fdds::Log::Kind::Info);
+    fdds::Log::ClearConsumers();
+    fdds::Log::RegisterConsumer(std::move(consumer));
+  });
   fdds::DomainParticipantQos pq;
   pq.name(o.name);
   // Transport: UDPv4 on the configured interface only (loopback by default); no shared
@@ -386,10 +399,13 @@ FastParticipant::FastParticipant(const ParticipantOptions& o) : Participant(o), 
       pq.wire_protocol().builtin.initialPeersList.push_back(loc);
     }
   }
+  detail::apply_fast_security(pq, o.security);
   auto* factory = fdds::DomainParticipantFactory::get_instance();
   participant_ = factory->create_participant(static_cast<fdds::DomainId_t>(o.domain_id), pq, discovery_.get(),
                                              fdds::StatusMask::none() << fdds::StatusMask::data_on_readers());
-  if (!participant_) throw std::runtime_error("Fast DDS: cannot create participant on domain " + std::to_string(o.domain_id));
+  if (!participant_)
+    throw std::runtime_error("Fast DDS: cannot create participant on domain " + std::to_string(o.domain_id) +
+                             (o.security.enabled ? " with DDS Security (identity '" + o.security.identity + "')" : ""));
   {
     std::ostringstream g;
     g << participant_->guid().guidPrefix;

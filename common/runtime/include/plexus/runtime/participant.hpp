@@ -20,6 +20,7 @@
 #include "plexus/runtime/endpoint_backend.hpp"
 #include "plexus/runtime/events.hpp"
 #include "plexus/runtime/qos.hpp"
+#include "plexus/runtime/security.hpp"
 #include "plexus/runtime/vendor.hpp"
 
 namespace plexus::rt {
@@ -39,6 +40,8 @@ struct ParticipantOptions {
   int domain_id = 0;                 ///< 0..232
   std::string name = "plexus";       ///< service name: appears in logs and in remote endpoints' events
   NetworkOptions network;
+  /// DDS Security (off by default): identity, permissions, governance (security.hpp).
+  SecurityOptions security;
 };
 
 template <class T>
@@ -48,8 +51,8 @@ class Subscriber;
 
 class Participant {
  public:
-  /// Creates the participant; throws InputError for bad options and std::runtime_error
-  /// if the vendor cannot create it.
+  /// Creates the participant; throws InputError for bad options (security files included,
+  /// checked by check_security_files) and std::runtime_error if the vendor cannot create it.
   static std::unique_ptr<Participant> create(const ParticipantOptions& options);
 
   virtual ~Participant() = default;

@@ -75,6 +75,19 @@ struct RobotSource {
 };
 const char* to_string(RobotSource::Type t);
 
+/// DDS Security of every participant under `plexus launch` (top-level `security:`,
+/// docs/security.md). `plexus sim` validates the keys and runs without DDS.
+struct ScenarioSecurity {
+  bool enabled = false;
+  std::string where;       ///< "file:line: security", for errors
+  std::string pki;         ///< the PKI folder (absolute): CA certificates, governance, identities/
+  std::string governance;  ///< governance document (absolute); empty: <pki>/governance.p7s
+  /// Process name (or plexus_launch) -> identity: a name in <pki>/identities, or a folder
+  /// (absolute) holding cert.pem, key.pem and permissions.p7s. Absent: the process's name.
+  std::map<std::string, std::string> identities;
+  std::map<std::string, std::string> identity_where;  ///< process -> "file:line: security.identities.<process>"
+};
+
 struct ScenarioMetric {
   std::string name;
   std::string type;
@@ -126,6 +139,7 @@ struct Scenario {
   std::map<std::string, RobotSource> sources;
   /// What the components found questionable in their parameters (log_warnings).
   std::vector<ScenarioWarning> warnings;
+  ScenarioSecurity security;
 };
 
 /// Logs a scenario's warnings once each: the short text at warn level, with `where_details`
