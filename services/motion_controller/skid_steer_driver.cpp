@@ -3,7 +3,7 @@
 // `<robot>/cmd` unless remapped and names its IDL type (docs/topics.md).
 //
 //   out cmd {v_l, v_r} (TrackCommand)
-//   pattern: straight | circle | figure_eight | segments; speed (0.5), turn_rate (0.5),
+//   pattern: straight | circle | slalom (also named figure_eight) | segments; speed (0.5), turn_rate (0.5),
 //   period (20), phase (0), track_width (0.4), segments: [[duration_s, v_l, v_r], ...], repeat (true)
 #include <memory>
 #include <stdexcept>
@@ -24,7 +24,7 @@ alg::DrivingPatternParams driver_params(const YamlMap& p) {
   try {
     d.kind = alg::driving_pattern_kind_from_string(kind);
   } catch (const std::invalid_argument&) {
-    p.fail("pattern", "expected straight, circle, figure_eight or segments, got '" + kind + "'");
+    p.fail("pattern", "expected straight, circle, slalom (figure_eight) or segments, got '" + kind + "'");
   }
   d.speed = p.optional<double>("speed", d.speed);
   d.turn_rate = p.optional<double>("turn_rate", d.turn_rate);
@@ -57,7 +57,7 @@ class DriverComponent final : public Component {
 };
 
 const ComponentRegistration kDriver{"skid_steer_driver", ComponentKind::controller,
-                                    "driving pattern (straight, circle, figure_eight, segments); out cmd {v_l, v_r}",
+                                    "driving pattern (straight, circle, slalom, segments); out cmd {v_l, v_r}",
                                     [](const ComponentConfig& c) { return std::make_unique<DriverComponent>(c); }};
 
 }  // namespace

@@ -64,6 +64,9 @@ skid_repro(icr_terrain_switch_prior.four_switches icr_terrain_switch_prior --set
            --set "robots.r1.plant.schedule=[[0, grass], [40, concrete], [80, tile], [120, grass]]"
            --set "expectations={reconvergence_time_s: '<= 3', classifier_accuracy: '>= 0.95', resets: '== 3'}")
 skid_repro(icr_terrain_switch_prior.gps_5Hz icr_terrain_switch_prior --set robots.r1.sensors.gps.rate=5 --set "${PRIOR_CHECK}")
+skid_repro(icr_terrain_switch_prior.gps_10Hz icr_terrain_switch_prior --set robots.r1.sensors.gps.rate=10 --set "${PRIOR_CHECK}")
+# The paper's pattern under its proper name: a slalom (sinusoidal turn rate), the same run.
+skid_repro(icr_terrain_switch_prior.slalom icr_terrain_switch_prior --set services.driver.pattern=slalom)
 skid_repro(icr_terrain_switch_prior.circle icr_terrain_switch_prior --set services.driver.pattern=circle
            --set services.driver.turn_rate=0.5 --set "${PRIOR_CHECK}")
 # A deliberately wrong library (tile and grass swapped: what a misclassified terrain gives):
