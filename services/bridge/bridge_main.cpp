@@ -49,6 +49,7 @@ int main(int argc, char** argv) {
   const std::string name(kName);
   CLI::App app{name + ": one robot's device on " + (kSerial ? "a serial line" : "UDP") +
                ", on the robot's typed topics in place of plant_simulator (docs/bridges.md)"};
+  app.set_version_flag("--version", std::string(name) + " " + PLEXUS_VERSION);
   std::string part_file, log_level = "info", mode = "realtime";
   scenario::ServiceDdsOptions net;
   std::string device, bind, peer;

@@ -141,6 +141,7 @@ int run_source(rt::Participant& p, const rt::QosProfile& qos, double rate, int c
 
 int main(int argc, char** argv) {
   CLI::App app{"demo_node: the two services of the plexus backbone demo"};
+  app.set_version_flag("--version", std::string("demo_node") + " " + PLEXUS_VERSION);
   std::string role, dds = "fast", qos_file, profile = "latency", log_level = "warn";
   int domain = 40, count = 2000;
   double rate = 500, duration = 0, timeout = 15;

@@ -87,6 +87,7 @@ int main(int argc, char** argv) {
                ": a robot's device (plant and sensors, as plant_simulator runs them) on the far end of a bridge's link: "
                "bridge-protocol frames on a pty or UDP, with a command watchdog, line-rate pacing and scripted faults "
                "(tools/device_emulator/README.md)"};
+  app.set_version_flag("--version", std::string(kName) + " " + PLEXUS_VERSION);
   scenario::StandaloneSpec alone;
   alone.program = kName;
   alone.robot_section = true;

@@ -73,6 +73,7 @@ int run_ping(rt::Participant& p, const rt::QosProfile& qos, const latency::PingP
 
 int main(int argc, char** argv) {
   CLI::App app{"pingpong_node: plexus side of plexus latency pingpong"};
+  app.set_version_flag("--version", std::string("pingpong_node") + " " + PLEXUS_VERSION);
   latency::PingPongOptions o;
   std::string dds = "fast", qos_file, profile = "latency", log_level = "error";
   latency::add_pingpong_options(app, o);

@@ -55,6 +55,7 @@ bool take_one(DataReader* r, plexus::msg::LatencyProbe& m) {
 
 int main(int argc, char** argv) {
   CLI::App app{"raw_fast_pingpong: plain Fast DDS ping-pong baseline"};
+  app.set_version_flag("--version", std::string("raw_fast_pingpong") + " " + PLEXUS_VERSION);
   plexus::latency::PingPongOptions o;
   bool best_effort = false;
   int depth = 16;
