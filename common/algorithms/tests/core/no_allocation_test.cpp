@@ -1,5 +1,7 @@
-// The filter steps must not allocate: this binary replaces the global operator new with
-// a counting one and checks the count around predict/update of all three filters.
+// The filter steps must not allocate: this binary counts every heap allocation (operator new
+// and malloc, support/count_allocations.hpp) and checks the count around predict/update of
+// all three filters. The counter itself is checked first: a counter that missed a way onto
+// the heap would let every NoAllocation test pass.
 #include <gtest/gtest.h>
 
 #include "../support/count_allocations.hpp"
@@ -19,6 +21,26 @@ namespace {
 using Vec3 = Eigen::Vector3d;
 using Mat3 = Eigen::Matrix3d;
 using V1 = Eigen::Matrix<double, 1, 1>;
+
+TEST(NoAllocation, TheCounterSeesEveryWayOntoTheHeap) {
+  // (volatile: the compiler may elide a new/delete pair whose memory nothing reads)
+  long before = plexus::test::allocations();
+  double* volatile n = new double[8];
+  EXPECT_EQ(plexus::test::allocations() - before, 1);  // operator new
+  delete[] n;
+  before = plexus::test::allocations();
+  {
+    Eigen::VectorXd v(64);  // Eigen's dynamic storage: aligned malloc
+    v.setZero();
+    EXPECT_EQ(v.size(), 64);
+  }
+  EXPECT_EQ(plexus::test::allocations() - before, 1);
+  before = plexus::test::allocations();
+  void* volatile p = std::calloc(4, 8);
+  p = std::realloc(p, 64);
+  std::free(p);
+  EXPECT_EQ(plexus::test::allocations() - before, 2);  // calloc, realloc
+}
 
 TEST(NoAllocation, FilterStepsDoNotAllocate) {
   ExtendedKalmanFilter<3> ekf;
