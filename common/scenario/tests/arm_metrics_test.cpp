@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <string>
 
@@ -155,6 +156,16 @@ TEST(ArmMetrics, SettlingTimeIsTheEntryAfterTheLastExcursion) {
               1e-9);
   // A window that ends inside the excursion: the last sample is outside, never settled (null).
   EXPECT_TRUE(std::isnan(compute(log, kSettle + ", band: 1e-3, to: 3.1}").value));
+}
+
+TEST(ArmMetrics, ANonFiniteErrorIsOutsideTheBand) {
+  // A run that diverged (NaN from 2 s on) never settled; nor does one that blew up for a while.
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_TRUE(std::isnan(compute(settling_run([&](int64_t k, double) { return k >= 200 ? nan : 0.0; }),
+                                 kSettle + ", band: 1e-3}").value));
+  EXPECT_NEAR(compute(settling_run([&](int64_t k, double) { return k >= 100 && k <= 150 ? nan : 0.0; }),
+                      kSettle + ", band: 1e-3}").value,
+              1.51, 1e-9);
 }
 
 TEST(ArmMetrics, SettlingTimeIsNullWhenTheLastSampleIsOutsideAndZeroWhenNeverOutside) {

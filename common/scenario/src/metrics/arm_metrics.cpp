@@ -91,7 +91,7 @@ const MetricRegistration kSettlingTime{
         for (std::size_t i = 0; i < es.t.size(); ++i) {
           const double e = std::abs(es.e[i][0]);
           r.series.emplace_back(es.t[i], e);
-          if (e > band) first_inside = i + 1;
+          if (!(e <= band)) first_inside = i + 1;  // outside, or not a number (a diverged run never settles)
         }
         if (es.t.empty() || first_inside >= es.t.size()) return r;  // never settled: null
         r.value = es.t[first_inside] - from;
