@@ -91,37 +91,3 @@ TEST(ArmNoAllocation, RobustTuningAndTorqueLimitDoNotAllocate) {
 
 }  // namespace
 }  // namespace plexus::algorithms
-
-namespace plexus::algorithms {
-namespace {
-
-TEST(ArmNoAllocation, PaperTuningDoesNotMallocEither) {
-  // HotPathsDoNotAllocate's loop (paper tuning, the plant, CT+PD), counting malloc too.
-  FlexibleJointArmPlant plant({});
-  FlexibleJointEkfParams ep;
-  ep.step = 2e-4;
-  FlexibleJointEkf ekf(ep);
-  VdcParams vp = VdcParams::paper_2dof();
-  vp.step = 2e-4;
-  VdcController vdc(vp);
-  CtPdController ctpd(CtPdParams::paper_2dof());
-  ArmSineReference ref(ArmSineReferenceParams::paper(2));
-  ArmReferenceSample r;
-  ref.sample(0.0, r);
-  Eigen::VectorXd u = Eigen::VectorXd::Zero(2), y = Eigen::VectorXd::Zero(4);
-  double sink = 0.0;
-  const long before = plexus::test::allocations();
-  for (int k = 1; k < 200; ++k) {
-    plant.step(u, 2e-4);
-    y << plant.state().phi, plant.state().phid;
-    ekf.update(u, y, 2e-4);
-    ref.sample(k * 2e-4, r);
-    u = vdc.step(r, ekf.feedback());
-    sink += ctpd.step(r, ekf.feedback()).sum();
-  }
-  EXPECT_EQ(plexus::test::allocations() - before, 0);
-  EXPECT_TRUE(std::isfinite(sink + u.sum()));
-}
-
-}  // namespace
-}  // namespace plexus::algorithms
