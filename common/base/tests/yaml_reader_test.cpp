@@ -55,5 +55,17 @@ TEST(YamlReader, SyntaxErrorAndMissingFile) {
   EXPECT_NE(error_of([] { YamlMap(load_yaml_string("- 1\n- 2", "l.yaml"), "l.yaml"); }).find("expected a mapping"), std::string::npos);
 }
 
+// Found by fuzzing (tests/fuzz, qos_file): yaml-cpp quotes the character a syntax error is
+// about, a newline or a NUL included, and a quoted key may hold a newline; the refusal must
+// still be one line.
+TEST(YamlReader, ErrorsStayOnOneLine) {
+  const std::string syntax = error_of([] { load_yaml_string(std::string("profiles: {\x01\0\n  \n", 17), "q.yaml"); });
+  EXPECT_EQ(syntax.rfind("q.yaml:2: YAML syntax error: ", 0), 0u) << syntax;
+  EXPECT_EQ(syntax.find('\n'), std::string::npos) << syntax;
+  EXPECT_EQ(syntax.find('\0'), std::string::npos) << syntax;
+  YamlMap m(load_yaml_string("\"a\\nb\": 1\n", "t.yaml"), "t.yaml");
+  EXPECT_EQ(error_of([&] { m.reject_unknown(); }), "t.yaml:1: a\\nb: unknown key");
+}
+
 }  // namespace
 }  // namespace plexus
