@@ -105,7 +105,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
 
   try {
     const auto sc = plexus::scenario::load_scenario_tree(YAML::Clone(base), origin, overrides);
-    CHECK(sc.step > 0.0 && sc.steps >= 1);
+    CHECK(sc.step >= 1e-6 && sc.steps >= 1);
   } catch (const plexus::InputError& e) {
     plexus::fuzz::check_one_line(e.what());
     const std::string what = e.what();

@@ -67,5 +67,34 @@ TEST(YamlReader, ErrorsStayOnOneLine) {
   EXPECT_EQ(error_of([&] { m.reject_unknown(); }), "t.yaml:1: a\\nb: unknown key");
 }
 
+// Found by fuzzing (qos_file): a key that is a mapping or a list made yaml-cpp throw its own
+// exception out of keys() and reject_unknown().
+TEST(YamlReader, KeyThatIsNotANameIsRefused) {
+  YamlMap m(load_yaml_string("a: 1\n? [x, y]\n: 2\n", "t.yaml"), "t.yaml");
+  EXPECT_EQ(error_of([&] { m.keys(); }), "t.yaml:2: document: a key must be a name, got a list");
+  YamlMap sub(load_yaml_string("p:\n  ? {q: 1}\n  : 2\n", "t.yaml"), "t.yaml");
+  EXPECT_EQ(error_of([&] { sub.map("p").reject_unknown(); }), "t.yaml:2: p: a key must be a name, got a mapping");
+}
+
+// yaml-cpp builds an alias as the anchored node itself: an alias inside it was a cycle that
+// overflowed the stack of the duplicate-key check, and aliases of aliases an exponential walk
+// (a 9-line file took minutes). Both are refused before the tree is built.
+TEST(YamlReader, AliasCycleAndAliasBombAreRefused) {
+  EXPECT_EQ(error_of([] { load_yaml_string("name: x\nrobots: &a [*a]\n", "c.yaml"); }),
+            "c.yaml:2: an alias inside the node its anchor names (a cycle)");
+  EXPECT_EQ(error_of([] { load_yaml_string("a: &a {b: {c: *a}}\n", "c.yaml"); }),
+            "c.yaml:1: an alias inside the node its anchor names (a cycle)");
+  std::string bomb = "a: &l0 [1, 1, 1, 1, 1, 1, 1, 1, 1, 1]\n";
+  for (int i = 1; i <= 8; ++i) {
+    bomb += "l" + std::to_string(i) + ": &l" + std::to_string(i) + " [";
+    for (int k = 0; k < 10; ++k) bomb += std::string(k ? ", " : "") + "*l" + std::to_string(i - 1);
+    bomb += "]\n";
+  }
+  EXPECT_EQ(error_of([&] { load_yaml_string(bomb, "b.yaml"); }), "b.yaml:6: aliases repeat more than 100000 nodes in all");
+  // Anchors used as a user would: accepted, and the aliases read as the anchored values.
+  const YAML::Node ok = load_yaml_string("common: &c {rate: 10, noise: 0.1}\ngps1: *c\ngps2: *c\n", "ok.yaml");
+  EXPECT_EQ(ok["gps2"]["rate"].as<int>(), 10);
+}
+
 }  // namespace
 }  // namespace plexus
