@@ -146,7 +146,7 @@ TEST(WireDecode, LatestDataTimeDoesNotOverflow) {
   m.header().data_time_ns(kMax);
   ASSERT_EQ(wire.decode(&m, out, bad), Rejection::none);
   EXPECT_EQ(out.step, kMax / kStepNs);  // 9223372036854775807 = 922337203685 steps + 4775807 ns < half a step
-  m.header().data_time_ns(kMax - 4'775'807 + kStepNs / 2 - kStepNs);  // half way below the last whole step
+  m.header().data_time_ns(kMax - 4'775'807 - kStepNs + kStepNs / 2);  // half way below the last whole step
   ASSERT_EQ(wire.decode(&m, out, bad), Rejection::none);
   EXPECT_EQ(out.step, kMax / kStepNs);
 }
