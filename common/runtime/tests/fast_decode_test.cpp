@@ -8,12 +8,14 @@
 #include <nlohmann/json.hpp>
 
 #include <cstring>
+#include <deque>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "plexus/msg/checked_fast_type.hpp"
 #include "plexus/msg/messages.hpp"
+#include "plexus/runtime/participant.hpp"
 
 namespace plexus::rt {
 namespace {
@@ -61,6 +63,32 @@ TEST(MessageCodec, TextMembersAlwaysPrintAsJson) {
   std::string text;
   ASSERT_NO_THROW(text = msg::to_json(hb).dump());
   EXPECT_NE(text.find("\"service\":\"a\xEF\xBF\xBD" "b\""), std::string::npos) << text;  // U+FFFD
+}
+
+// Both vendors decode in place: a malformed sample that follows the newest valid one left
+// take_latest's output half overwritten by it. The reader below does what they do.
+TEST(Subscriber, TakeLatestKeepsTheNewestValidSample) {
+  struct Reader final : ReaderBackend {
+    std::deque<std::pair<double, bool>> queue;  // x written into the sample, decoded whole?
+    bool take(void* sample, SampleMeta*) override {
+      while (!queue.empty()) {
+        const auto [x, whole] = queue.front();
+        queue.pop_front();
+        static_cast<msg::Pose2D*>(sample)->x(x);  // decoded in place, even when it then fails
+        if (whole) return true;
+      }
+      return false;
+    }
+    bool wait(int64_t) override { return !queue.empty(); }
+    int matched_count() const override { return 1; }
+    uint64_t malformed_count() const override { return 0; }
+  };
+  auto reader = std::make_unique<Reader>();
+  reader->queue = {{1.0, true}, {2.0, true}, {99.0, false}};
+  Subscriber<msg::Pose2D> sub(std::move(reader));
+  msg::Pose2D out;
+  ASSERT_TRUE(sub.take_latest(out));
+  EXPECT_EQ(out.x(), 2.0);
 }
 
 }  // namespace
