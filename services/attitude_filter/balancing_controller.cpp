@@ -13,6 +13,7 @@
 
 #include "plexus/algorithms/balancing/balancing_controller.hpp"
 #include "plexus/algorithms/balancing/wheeled_inverted_pendulum.hpp"
+#include "plexus/scenario/params.hpp"
 #include "plexus/scenario/registry.hpp"
 #include "services/common/balancing_params.hpp"
 
@@ -26,7 +27,9 @@ alg::BalancingControllerParams controller_params(const YamlMap& p) {
   if (p.has("poles")) {
     const auto poles = p.sequence("poles");
     if (poles.size() != 4) p.fail("poles", "must list 4 poles, got " + std::to_string(poles.size()));
-    for (std::size_t i = 0; i < 4; ++i) b.poles[i] = poles[i].as<double>();
+    // Through number(): yaml-cpp's as<double>() threw its own exception for a pole that was
+    // not a number (found by fuzzing the scenario loader) and took .nan.
+    for (std::size_t i = 0; i < 4; ++i) b.poles[i] = number(p, poles[i], "poles");
   }
   return b;
 }

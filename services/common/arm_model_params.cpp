@@ -1,5 +1,6 @@
 #include "services/common/arm_model_params.hpp"
 
+#include "plexus/scenario/params.hpp"
 #include "services/common/arm_fields.hpp"
 
 namespace plexus::scenario {
@@ -9,13 +10,7 @@ Eigen::VectorXd number_list(const YamlMap& p, const std::string& key, int n, con
   const auto items = p.sequence(key);
   if (static_cast<int>(items.size()) != n) p.fail(key, "needs " + std::to_string(n) + " numbers (one per joint)");
   Eigen::VectorXd v(n);
-  for (int i = 0; i < n; ++i) {
-    try {
-      v(i) = items[static_cast<std::size_t>(i)].as<double>();
-    } catch (const YAML::Exception&) {
-      p.fail(key, "expected a list of numbers");
-    }
-  }
+  for (int i = 0; i < n; ++i) v(i) = number(p, items[static_cast<std::size_t>(i)], key);  // finite, or an error naming it
   return v;
 }
 

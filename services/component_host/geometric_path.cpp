@@ -11,10 +11,12 @@
 //   normal_y) | ellipse (center_x, center_y, a, b, phi) | polynomial (terms: list of
 //   [i, j, c] for c x^i y^j)                                                    003 section 2
 //   (centres and points default to 0, the line's normal to (0, 1), phi to 0)
+#include <cmath>
 #include <memory>
 #include <string>
 
 #include "plexus/algorithms/unicycle/geometric_path.hpp"
+#include "plexus/scenario/params.hpp"
 #include "plexus/scenario/registry.hpp"
 #include "services/common/input_values.hpp"
 
@@ -59,10 +61,12 @@ class GeometricPathComponent final : public Component {
       alg::PolynomialPath poly;
       for (const auto& term : p.sequence("terms")) {
         if (!term.IsSequence() || term.size() != 3) p.fail("terms", "each term is [i, j, c] for c x^i y^j");
-        const int i = term[0].as<int>(), j = term[1].as<int>();
-        if (i < 0 || j < 0 || i + j > alg::PolynomialPath::kMaxDegree)
-          p.fail("terms", "powers must be >= 0 with i + j <= " + std::to_string(alg::PolynomialPath::kMaxDegree));
-        poly.c(i, j) += term[2].as<double>();
+        // Through number(), checked whole and in range before the conversion: yaml-cpp's
+        // as<int>() threw its own exception for a word, and took 1e10.
+        const double di = number(p, term[0], "terms"), dj = number(p, term[1], "terms");
+        if (di != std::floor(di) || dj != std::floor(dj) || di < 0 || dj < 0 || di + dj > alg::PolynomialPath::kMaxDegree)
+          p.fail("terms", "powers must be whole numbers >= 0 with i + j <= " + std::to_string(alg::PolynomialPath::kMaxDegree));
+        poly.c(static_cast<int>(di), static_cast<int>(dj)) += number(p, term[2], "terms");
       }
       return poly;
     }

@@ -215,6 +215,10 @@ TEST(BalancingController, BadParametersAreConfigurationErrors) {
   expect_config_errors(kController, {
                                         {"services.ctl.poles=[-2, -3, -9]", {"services.ctl.poles", "4 poles"}},
                                         {"services.ctl.poles=[-2, -3, -9, 1]", {"services.ctl", "pole"}},
+                                        // Found by fuzzing: a pole that is not a number threw yaml-cpp's
+                                        // own exception out of the loader; .nan was taken.
+                                        {"services.ctl.poles=[-2, -3, -9, x]", {"services.ctl.poles", "expected a finite number, got 'x'"}},
+                                        {"services.ctl.poles=[-2, -3, -9, .nan]", {"services.ctl.poles", "finite"}},
                                         {"services.ctl.max_torque=0", {"services.ctl", "max_torque"}},
                                         {"services.ctl.gain=1", {"services.ctl.gain", "unknown key"}},
                                     });

@@ -169,6 +169,11 @@ TEST(GeometricPath, BadParametersAreConfigurationErrors) {
                               });
   EXPECT_NE(config_error(kPath, {"services.path.shape=polynomial", "services.path.terms=[[1, 2]]"}).find("services.path.terms"),
             std::string::npos);
+  // Read through number(): a word as a power threw yaml-cpp's own exception; 1e10 was taken.
+  for (const char* terms : {"services.path.terms=[[x, 0, 1]]", "services.path.terms=[[0.5, 0, 1]]",
+                            "services.path.terms=[[1e10, 0, 1]]", "services.path.terms=[[1, 0, .inf]]"})
+    EXPECT_NE(config_error(kPath, {"services.path.shape=polynomial", terms}).find("services.path.terms"), std::string::npos)
+        << terms;
   EXPECT_NE(config_error(kPath, {"services.path.shape=ellipse", "services.path.a=2"}).find("services.path.b"),
             std::string::npos);
 }

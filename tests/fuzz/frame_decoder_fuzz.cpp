@@ -2,7 +2,7 @@
 // frame decoder take bytes from a device we do not control, so no input may crash them,
 // and what they hand on must be a frame the protocol allows.
 //
-// Input layout (the seed corpus in tests/fuzz/corpus/ follows it):
+// Input layout (the seed corpus in tests/fuzz/corpus/frame_decoder/ follows it):
 //   byte 0          control: bits 0-2 = m, the number of chunk bytes; bit 3 = end the stream
 //                   with reset() instead of a final 0x00; bit 4 = reset() after chunks
 //                   whose chunk byte has bit 7 set (a reconnect mid-stream)
@@ -21,19 +21,11 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "fuzz_support.hpp"
 #include "plexus/link/cobs.hpp"
 #include "plexus/link/frame.hpp"
 
 using namespace plexus::link;
-
-// Not assert(): it must hold in every build, and abort() is what libFuzzer reports.
-#define CHECK(cond)                                                               \
-  do {                                                                            \
-    if (!(cond)) {                                                                \
-      std::fprintf(stderr, "%s:%d: check failed: %s\n", __FILE__, __LINE__, #cond); \
-      std::abort();                                                               \
-    }                                                                             \
-  } while (0)
 
 namespace {
 

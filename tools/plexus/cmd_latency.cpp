@@ -404,7 +404,9 @@ int run_pipeline(const PipeOpts& o) {
       throw InputError("--topics: topic '" + w + "' is not in " + file);
   rec.for_each([&](const RecordedMessage& m) {
     auto it = topics.find(m.topic_id);
-    if (it == topics.end() || m.origin_time_ns == 0 || m.publish_time_ns == 0) return true;
+    // Header times at or before 0 are unset (or from a broken clock): such a sample joins nothing,
+    // and with every time positive no difference below can overflow.
+    if (it == topics.end() || m.origin_time_ns <= 0 || m.publish_time_ns <= 0) return true;
     auto& t = it->second;
     t.to_publish.push_back(static_cast<double>(m.publish_time_ns - m.origin_time_ns) * 1e-3);
     t.transport.push_back(static_cast<double>(m.receive_time_ns - m.publish_time_ns) * 1e-3);

@@ -29,6 +29,7 @@
 #include "plexus/distributed/realtime.hpp"
 #include "plexus/msg/messages.hpp"
 #include "recording.hpp"
+#include "replay_plan.hpp"
 #include "topic_discovery.hpp"
 
 namespace plexus::cli {
@@ -49,31 +50,19 @@ void sleep_until(int64_t t) {
 }
 
 int run_summary(const RecordingReader& rec, bool json) {
-  struct Acc {
-    uint64_t count = 0, digest = 1469598103934665603ull;
-    int64_t first = 0, last = 0;
-  };
-  std::map<int64_t, Acc> acc;
-  rec.for_each([&](const RecordedMessage& m) {
-    auto& a = acc[m.topic_id];
-    if (a.count++ == 0) a.first = m.receive_time_ns;
-    a.last = m.receive_time_ns;
-    for (unsigned char b : m.cdr) a.digest = (a.digest ^ b) * 1099511628211ull;  // FNV-1a over the CDR bytes
-    return true;
-  });
   nlohmann::ordered_json j = nlohmann::ordered_json::array();
-  for (const auto& t : rec.topics()) {
-    const auto& a = acc[t.id];
+  for (const auto& a : summarize_recording(rec)) {
+    const RecordedTopic& t = *a.topic;
     char digest[17];
     std::snprintf(digest, sizeof digest, "%016llx", static_cast<unsigned long long>(a.digest));
+    const double span_s = static_cast<double>(a.last_ns - a.first_ns) * 1e-9;
     if (json)
-      j.push_back({{"topic", t.name}, {"type", t.type}, {"count", a.count}, {"digest", digest},
-                   {"span_s", static_cast<double>(a.last - a.first) * 1e-9}});
+      j.push_back({{"topic", t.name}, {"type", t.type}, {"count", a.count}, {"digest", digest}, {"span_s", span_s}});
     else
       std::printf("%-40s %-36s %8llu samples  %.3f s  digest %s\n", t.name.c_str(), t.type.c_str(),
-                  static_cast<unsigned long long>(a.count), static_cast<double>(a.last - a.first) * 1e-9, digest);
+                  static_cast<unsigned long long>(a.count), span_s, digest);
   }
-  if (json) std::printf("%s\n", j.dump().c_str());
+  if (json) std::printf("%s\n", j.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace).c_str());
   return 0;
 }
 
@@ -89,12 +78,9 @@ int run_replay(const ReplayOpts& o) {
   if (o.summary) return run_summary(rec, o.json);
   install_stop_handler();
 
-  const auto wanted = split_list(o.topics);
-  for (const auto& w : wanted) {
-    bool found = false;
-    for (const auto& t : rec.topics()) found = found || t.name == w;
-    if (!found) throw InputError("--topics: topic '" + w + "' is not in " + o.file);
-  }
+  const auto profiles = rt::QosProfiles::load(o.qos_file.empty() ? rt::default_qos_file() : o.qos_file);
+  const rt::QosProfile* fixed = o.profile.empty() ? nullptr : &profiles.get(o.profile);
+  const auto plan = plan_replay_topics(rec, o.file, split_list(o.topics), fixed, o.restamp);
   auto p = make_participant(o.dds, "plexus_replay", "plexus_replay");
   struct Out {
     const msg::TypeSupport* ts = nullptr;
@@ -102,7 +88,6 @@ int run_replay(const ReplayOpts& o) {
     void* sample = nullptr;
   };
   std::map<int64_t, Out> outs;
-  const auto profiles = rt::QosProfiles::load(o.qos_file.empty() ? rt::default_qos_file() : o.qos_file);
   rt::Publisher<msg::Heartbeat> heartbeat;
   msg::Heartbeat hb;
   int64_t next_beat = 0;
@@ -120,30 +105,12 @@ int run_replay(const ReplayOpts& o) {
     hb = distributed::heartbeat_of(o.service);
     beat(msg::SERVICE_WAITING);
   }
-  for (const auto& t : rec.topics()) {
-    if (!wanted.empty() && std::find(wanted.begin(), wanted.end(), t.name) == wanted.end()) continue;
-    const msg::TypeSupport* ts = msg::find_type_support(t.type);
-    if (!ts) throw InputError(o.file + ": topic '" + t.name + "' has type '" + t.type + "', unknown to this build");
-    rt::QosProfile q;
-    if (!o.profile.empty()) {
-      q = rt::QosProfiles::load(o.qos_file.empty() ? rt::default_qos_file() : o.qos_file).get(o.profile);
-    } else {
-      nlohmann::json qj = nlohmann::json::object();
-      try {
-        if (!t.qos_json.empty()) qj = nlohmann::json::parse(t.qos_json);
-      } catch (const nlohmann::json::exception&) {
-      }
-      // A live stand-in (--restamp) keeps the recorded writer's history when discovery told
-      // it, else newest-wins (keep_last 1) as every plexus realtime topic; a plain replay
-      // keeps up to 64 samples for slow readers.
-      q = rt::writer_qos_like(qos_from_json(qj), o.restamp ? 1 : 64);
-      if (t.qos_json.empty()) q.reliability = rt::QosProfile::Reliability::reliable;
-    }
+  for (const auto& t : plan) {
     Out out;
-    out.ts = ts;
-    out.writer = p->make_writer(*ts, t.name, q);
-    out.sample = ts->create();
-    outs[t.id] = std::move(out);
+    out.ts = t.ts;
+    out.writer = p->make_writer(*t.ts, t.topic.name, t.qos);
+    out.sample = t.ts->create();
+    outs[t.topic.id] = std::move(out);
   }
   std::vector<RecordedMessage> msgs;
   rec.for_each([&](const RecordedMessage& m) {
@@ -206,7 +173,8 @@ int run_replay(const ReplayOpts& o) {
     } else if (o.rate > 0) {
       sleep_until(start_mono + static_cast<int64_t>(static_cast<double>(i) * 1e9 / o.rate));
     } else if (!o.fast) {
-      sleep_until(start_mono + static_cast<int64_t>(static_cast<double>(msgs[i].receive_time_ns - t0) / o.rate_scale));
+      const int64_t due = replay_due_ns(msgs[i].receive_time_ns, t0, o.rate_scale);
+      sleep_until(due > INT64_MAX - start_mono ? INT64_MAX : start_mono + due);
     }
     for (; i < group_end; ++i) {
       const auto& m = msgs[i];
@@ -216,9 +184,16 @@ int run_replay(const ReplayOpts& o) {
         continue;
       }
       if (!o.verbatim && out.ts->header) {
+        // A header time the shift would carry beyond an int64 (a sample from a writer with a
+        // broken clock) cannot be replayed: counted as failed.
         msg::StampHeader& h = *out.ts->header(out.sample);
-        if (h.origin_time_ns() != 0) h.origin_time_ns(h.origin_time_ns() + shift);
-        if (o.restamp) h.data_time_ns(h.data_time_ns() + shift);
+        int64_t origin = h.origin_time_ns(), data = h.data_time_ns();
+        if ((origin != 0 && !shift_time(origin, shift, origin)) || (o.restamp && !shift_time(data, shift, data))) {
+          ++failed;
+          continue;
+        }
+        h.origin_time_ns(origin);
+        h.data_time_ns(data);
         h.publish_time_ns(wall_time_ns());
       }
       out.writer->write(out.sample) ? ++published : ++failed;

@@ -91,7 +91,7 @@ int run_list(const TopicOpts& o) {
     nlohmann::ordered_json j = nlohmann::ordered_json::array();
     for (const auto& [t, r] : rows)
       j.push_back({{"topic", t}, {"types", r.types}, {"writers", r.writers}, {"readers", r.readers}});
-    std::printf("%s\n", j.dump().c_str());
+    std::printf("%s\n", j.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace).c_str());
     return 0;
   }
   for (const auto& [t, r] : rows) {
@@ -198,7 +198,7 @@ int run_hz(const TopicOpts& o) {
                                 {"interval_max_ms", all.max * 1e3},
                                 {"interval_std_ms", all.stddev() * 1e3},
                                 {"span_s", static_cast<double>(last - first) * 1e-9}};
-    std::printf("%s\n", j.dump().c_str());
+    std::printf("%s\n", j.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace).c_str());
   } else {
     print(all, "total");
   }
@@ -256,7 +256,7 @@ int run_info(const TopicOpts& o) {
     }
   }
   if (o.json) {
-    std::printf("%s\n", j.dump().c_str());
+    std::printf("%s\n", j.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace).c_str());
     return 0;
   }
   std::string type_text;

@@ -114,30 +114,6 @@ nlohmann::ordered_json qos_to_json(const rt::EndpointQos& q) {
   return j;
 }
 
-rt::EndpointQos qos_from_json(const nlohmann::json& j) {
-  rt::EndpointQos q;
-  if (!j.is_object()) return q;
-  q.reliability = j.value("reliability", "") == "reliable" ? rt::QosProfile::Reliability::reliable
-                                                            : rt::QosProfile::Reliability::best_effort;
-  const std::string d = j.value("durability", "volatile");
-  q.durability = d == "volatile" ? rt::QosProfile::Durability::volatile_ : rt::QosProfile::Durability::transient_local;
-  q.durability_stronger = d == "transient";
-  if (j.contains("history")) {
-    q.history_known = true;
-    q.history = j.value("history", "") == "keep_all" ? rt::QosProfile::History::keep_all : rt::QosProfile::History::keep_last;
-    q.depth = j.value("depth", 1);
-  }
-  q.deadline_s = j.value("deadline_s", 0.0);
-  const std::string l = j.value("liveliness", "automatic");
-  q.liveliness = l == "manual_by_topic"         ? rt::QosProfile::Liveliness::manual_by_topic
-                 : l == "manual_by_participant" ? rt::QosProfile::Liveliness::manual_by_participant
-                                                : rt::QosProfile::Liveliness::automatic;
-  q.liveliness_lease_s = j.value("liveliness_lease_s", 0.0);
-  q.lifespan_s = j.value("lifespan_s", 0.0);
-  q.latency_budget_s = j.value("latency_budget_s", 0.0);
-  return q;
-}
-
 std::vector<std::string> split_list(const std::string& s) {
   std::vector<std::string> out;
   std::istringstream in(s);

@@ -46,8 +46,9 @@ const msg::TypeSupport& resolve_topic_type(const rt::Participant& p, const std::
 rt::QosProfile subscriber_qos(const std::string& qos_file, const std::string& profile,
                               const std::vector<rt::EndpointQos>& writers, int32_t depth);
 
+/// A discovered endpoint's QoS as plexus record stores it (read back by replay_plan.cpp's
+/// recorded_qos).
 nlohmann::ordered_json qos_to_json(const rt::EndpointQos& q);
-rt::EndpointQos qos_from_json(const nlohmann::json& j);
 
 /// Comma-separated list "a,b" -> {"a", "b"} (empty items dropped).
 std::vector<std::string> split_list(const std::string& s);

@@ -7,6 +7,11 @@
 #include <limits>
 #include <map>
 #include <sstream>
+#include <utility>
+#include <vector>
+
+#include <yaml-cpp/eventhandler.h>
+#include <yaml-cpp/parser.h>
 
 namespace plexus {
 namespace {
@@ -44,11 +49,95 @@ void check_unique_keys(const YAML::Node& n, const std::string& origin, const std
   }
 }
 
+/// yaml-cpp builds an alias as the very node its anchor names. An alias inside that node
+/// (`a: &x [*x]`) makes the tree a cycle, which every walk of it follows until the stack
+/// overflows; aliases of aliases (`b: &b [*a, *a, ...]`, `c: [*b, *b, ...]`) make a tree
+/// whose walks take exponential time. Both are refused from the parser's events, before the
+/// tree is built: an alias of an anchor still open, and aliases that repeat more than
+/// kMaxAliasNodes nodes in all (counted as expanded: an anchored list of a thousand scalars
+/// aliased twice repeats 2002). Anchors in a hand-written file repeat tens of nodes. Found
+/// while writing the scenario loader's fuzz target (tests/fuzz) and confirmed through it.
+class AliasCheck final : public YAML::EventHandler {
+ public:
+  static constexpr uint64_t kMaxAliasNodes = 100'000;
+
+  explicit AliasCheck(const std::string& origin) : origin_(origin) {}
+
+  void OnDocumentStart(const YAML::Mark&) override {}
+  void OnDocumentEnd() override {}
+  void OnNull(const YAML::Mark&, YAML::anchor_t anchor) override { leaf(anchor); }
+  void OnScalar(const YAML::Mark&, const std::string&, YAML::anchor_t anchor, const std::string&) override {
+    leaf(anchor);
+  }
+  void OnSequenceStart(const YAML::Mark&, const std::string&, YAML::anchor_t anchor, YAML::EmitterStyle::value) override {
+    open(anchor);
+  }
+  void OnSequenceEnd() override { close(); }
+  void OnMapStart(const YAML::Mark&, const std::string&, YAML::anchor_t anchor, YAML::EmitterStyle::value) override {
+    open(anchor);
+  }
+  void OnMapEnd() override { close(); }
+  void OnAlias(const YAML::Mark& mark, YAML::anchor_t anchor) override {
+    const std::string at = origin_ + ":" + std::to_string(mark.line + 1) + ": ";
+    if (anchor < open_.size() && open_[anchor])
+      throw InputError(at + "an alias inside the node its anchor names (a cycle)");
+    const uint64_t n = anchor < size_.size() ? size_[anchor] : 1;
+    nodes_ += n;
+    added_ += n;
+    if (added_ > kMaxAliasNodes)
+      throw InputError(at + "aliases repeat more than " + std::to_string(kMaxAliasNodes) + " nodes in all");
+  }
+
+ private:
+  void grow(YAML::anchor_t anchor) {
+    if (anchor >= size_.size()) {
+      size_.resize(anchor + 1, 0);
+      open_.resize(anchor + 1, false);
+    }
+  }
+  void leaf(YAML::anchor_t anchor) {
+    ++nodes_;
+    if (anchor != YAML::NullAnchor) {
+      grow(anchor);
+      size_[anchor] = 1;
+    }
+  }
+  void open(YAML::anchor_t anchor) {
+    ++nodes_;
+    stack_.emplace_back(anchor, nodes_);
+    if (anchor != YAML::NullAnchor) {
+      grow(anchor);
+      open_[anchor] = true;
+    }
+  }
+  void close() {
+    if (stack_.empty()) return;
+    const auto [anchor, first] = stack_.back();
+    stack_.pop_back();
+    if (anchor != YAML::NullAnchor) {
+      size_[anchor] = nodes_ - first + 1;  // the node and everything below it, aliases expanded
+      open_[anchor] = false;
+    }
+  }
+
+  const std::string& origin_;
+  uint64_t nodes_ = 0, added_ = 0;
+  std::vector<std::pair<YAML::anchor_t, uint64_t>> stack_;
+  std::vector<uint64_t> size_;  // by anchor
+  std::vector<bool> open_;      // by anchor
+};
+
 }  // namespace
 
 YAML::Node load_yaml_string(const std::string& text, const std::string& origin) {
   YAML::Node root;
   try {
+    {
+      std::istringstream in(text);
+      YAML::Parser parser(in);
+      AliasCheck check(origin);
+      parser.HandleNextDocument(check);  // the first document: the one YAML::Load returns
+    }
     root = YAML::Load(text);
   } catch (const YAML::Exception& e) {
     std::string line = e.mark.line >= 0 ? std::to_string(e.mark.line + 1) : "?";
@@ -117,15 +206,24 @@ std::vector<YAML::Node> YamlMap::sequence(const std::string& key) const {
   return std::vector<YAML::Node>(n.begin(), n.end());
 }
 
+std::string YamlMap::key_text(const YAML::Node& key) const {
+  // A YAML key can be a mapping or a list (`? [a, b]: 1`); yaml-cpp's as<std::string>() then
+  // threw its own exception past every caller (found by fuzzing the QoS file parser).
+  if (!key.IsScalar())
+    throw InputError(where(key) + ": " + (path_.empty() ? std::string("document") : path_) +
+                     ": a key must be a name, got " + scalar_text(key));
+  return key.Scalar();
+}
+
 std::vector<std::string> YamlMap::keys() const {
   std::vector<std::string> out;
-  for (const auto& kv : node_) out.push_back(kv.first.as<std::string>());
+  for (const auto& kv : node_) out.push_back(key_text(kv.first));
   return out;
 }
 
 void YamlMap::reject_unknown() const {
   for (const auto& kv : node_) {
-    const auto k = kv.first.as<std::string>();
+    const auto k = key_text(kv.first);
     if (!read_.count(k)) throw InputError(where(kv.first) + ": " + key_path(k) + ": unknown key");
   }
 }

@@ -123,8 +123,16 @@ Rejection WireSignal::decode(const void* message, scenario::SignalSample& s, std
       bad_field = i;
       return r;
     }
-  const int64_t since = t - epoch_ns_ + step_ns_ / 2;  // nearest step, floored for times before the epoch
-  s.step = since >= 0 ? since / step_ns_ : -((-since + step_ns_ - 1) / step_ns_);
+  // The nearest step (floor((t - epoch + step/2) / step)), computed without the sum: a data
+  // time near the int64 limit overflowed it (found by fuzzing the subscriber edge). t >= 0 and
+  // the epoch >= 0, so their difference cannot overflow.
+  const int64_t since = t - epoch_ns_;
+  int64_t q = since / step_ns_, r = since % step_ns_;
+  if (r < 0) {  // floor for times before the epoch
+    --q;
+    r += step_ns_;
+  }
+  s.step = r >= step_ns_ - step_ns_ / 2 ? q + 1 : q;
   for (std::size_t i = 0; i < slots_.size(); ++i) s.values[i] = read(*slots_[i], m);
   std::fill(s.values.begin() + static_cast<std::ptrdiff_t>(slots_.size()), s.values.end(), 0.0);
   return Rejection::none;

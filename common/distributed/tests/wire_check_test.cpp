@@ -133,6 +133,24 @@ TEST(WireDecode, StepIsTheNearestOneToTheDataTime) {
   }
 }
 
+// Found by fuzzing the subscriber edge (tests/fuzz, cdr_decode): the nearest step was
+// (t + step/2) / step, and a data time near the int64 limit overflowed the sum (undefined
+// behaviour; in practice a huge negative step).
+TEST(WireDecode, LatestDataTimeDoesNotOverflow) {
+  const auto s = spec("r1/pose", {"x"}, "Pose2D");
+  const WireSignal wire(s, kStepNs);
+  msg::Pose2D m;
+  scenario::SignalSample out;
+  std::size_t bad = 0;
+  constexpr int64_t kMax = std::numeric_limits<int64_t>::max();
+  m.header().data_time_ns(kMax);
+  ASSERT_EQ(wire.decode(&m, out, bad), Rejection::none);
+  EXPECT_EQ(out.step, kMax / kStepNs);  // 9223372036854775807 = 922337203685 steps + 4775807 ns < half a step
+  m.header().data_time_ns(kMax - 4'775'807 - kStepNs + kStepNs / 2);  // half way below the last whole step
+  ASSERT_EQ(wire.decode(&m, out, bad), Rejection::none);
+  EXPECT_EQ(out.step, kMax / kStepNs);
+}
+
 TEST(WireDecode, BeforeTheEpochIsANegativeStepNotAnError) {
   // Realtime: data times are wall-clock; a sample from before the run's start decodes to a
   // negative step (not yet valid for any reader), while a negative time is refused.

@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <cstdio>
 #include <filesystem>
 
 #include "plexus/base/input_error.hpp"
@@ -25,9 +26,17 @@ E parse_enum(const YamlMap& m, const std::string& key, E fallback, const std::pa
   m.fail(key, "unknown value '" + text + "' (expected " + expected + ")");
 }
 
+// Both vendors must hold the value as it is: Fast DDS keeps whole seconds in an int32 (a
+// larger value was an undefined conversion), Cyclone DDS nanoseconds in an int64, and a value
+// below 1 ns became 0, which means something else. 1e9 s is 31 years.
 double duration(const YamlMap& m, const std::string& key, double fallback) {
   const double v = m.optional<double>(key, fallback);
   if (v < 0) m.fail(key, "must be >= 0 seconds (0 means infinite/none), got " + std::to_string(v));
+  if (v != 0.0 && (v < 1e-9 || v > 1e9)) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", v);
+    m.fail(key, std::string("must be 0 (infinite/none) or within [1e-9, 1e9] seconds, got ") + text);
+  }
   return v;
 }
 

@@ -41,6 +41,13 @@ TEST(QosProfiles, ErrorsNameFileLineAndKey) {
             "q.yaml:3: profiles.a.reliability: unknown value 'sometimes' (expected best_effort, reliable)");
   EXPECT_EQ(error_of([] { QosProfiles::parse("profiles:\n  a:\n    deadline_s: -1\n", "q.yaml"); }),
             "q.yaml:3: profiles.a.deadline_s: must be >= 0 seconds (0 means infinite/none), got -1.000000");
+  // Beyond what the vendors hold (Fast DDS: int32 seconds; below 1 ns: 0): the deadline
+  // reached an undefined float-to-int32 conversion in the Fast DDS back end.
+  EXPECT_EQ(error_of([] { QosProfiles::parse("profiles:\n  a:\n    deadline_s: 1e10\n", "q.yaml"); }),
+            "q.yaml:3: profiles.a.deadline_s: must be 0 (infinite/none) or within [1e-9, 1e9] seconds, got 1e+10");
+  EXPECT_EQ(error_of([] { QosProfiles::parse("profiles:\n  a:\n    lifespan_s: 1e-12\n", "q.yaml"); }),
+            "q.yaml:3: profiles.a.lifespan_s: must be 0 (infinite/none) or within [1e-9, 1e9] seconds, got 1e-12");
+  EXPECT_NO_THROW(QosProfiles::parse("profiles:\n  a:\n    liveliness_lease_s: 1e9\n    lifespan_s: 1e-9\n", "q.yaml"));
   EXPECT_EQ(error_of([] { QosProfiles::parse("profile:\n  a: {}\n", "q.yaml"); }),
             "q.yaml:1: profiles: required key is missing");
   EXPECT_EQ(error_of([] { QosProfiles::parse("profiles:\n  a:\n    depth: x\n", "q.yaml"); }),

@@ -26,10 +26,13 @@ std::vector<std::string> required_names(const YamlMap& params, const std::string
 
 double number(const YamlMap& p, const YAML::Node& n, const std::string& key) {
   try {
-    if (n.IsScalar()) return n.as<double>();
+    // yaml-cpp reads .nan and .inf as numbers; a parameter is finite, as YamlMap reads it.
+    if (n.IsScalar())
+      if (const double v = n.as<double>(); std::isfinite(v)) return v;
   } catch (const YAML::Exception&) {
   }
-  throw InputError(p.where(n) + ": " + p.key_path(key) + ": expected a number, got '" + (n.IsScalar() ? n.Scalar() : "a collection") + "'");
+  throw InputError(p.where(n) + ": " + p.key_path(key) + ": expected a finite number, got '" +
+                   (n.IsScalar() ? n.Scalar() : "a collection") + "'");
 }
 
 std::vector<double> numbers(const YamlMap& p, const YAML::Node& n, const std::string& key, std::size_t size) {

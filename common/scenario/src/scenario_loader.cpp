@@ -179,7 +179,9 @@ struct Loader {
       sc.base_dir = top.required<std::string>("base_dir");
     }
     sc.step = top.required<double>("step");
-    if (!(sc.step > 0.0) || !std::isfinite(sc.step)) top.fail("step", "must be > 0 s");
+    // At least 1 us: distributed runs carry the step in whole nanoseconds (a step below 0.5 ns
+    // was 0 there, and every process divided by it).
+    if (!(sc.step >= 1e-6) || !std::isfinite(sc.step)) top.fail("step", "must be at least 1e-6 s");
     if (sc.partial && !top.has("duration")) {
       sc.until_stopped = true;
       sc.steps = kUntilStopped;

@@ -74,7 +74,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"duration_type", with("duration: 1.0", "duration: long"),
                 "t.yaml:2: duration: expected a finite number, got 'long'"},
         BadCase{"duration_range", with("duration: 1.0", "duration: -1"), "t.yaml:2: duration: must be > 0 s"},
-        BadCase{"step_range", with("step: 0.1", "step: 0"), "t.yaml:3: step: must be > 0 s"},
+        BadCase{"step_range", with("step: 0.1", "step: 0"), "t.yaml:3: step: must be at least 1e-6 s"},
+        // Below 0.5 ns the step was 0 ns in a distributed run, and every process divided by it.
+        BadCase{"step_below_1us", with("step: 0.1", "step: 1e-10"), "t.yaml:3: step: must be at least 1e-6 s"},
         BadCase{"step_longer", with("step: 0.1", "step: 2"), "t.yaml:3: step: must not exceed the duration"},
         BadCase{"duration_not_whole", with("step: 0.1", "step: 0.3"),
                 "t.yaml:2: duration: must be a whole number of steps (duration / step = 3.333333)"},

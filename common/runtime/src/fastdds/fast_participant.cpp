@@ -28,6 +28,7 @@
 #include "fast_endpoint_qos.hpp"
 #include "fast_security.hpp"
 #include "plexus/base/clock.hpp"
+#include "plexus/msg/checked_fast_type.hpp"
 
 namespace plexus::rt {
 namespace {
@@ -168,7 +169,13 @@ class FastReader final : public ReaderBackend, public fdds::DataReaderListener {
 
   bool take(void* sample, SampleMeta* meta) override {
     fdds::SampleInfo info;
+    msg::take_fast_decode_failure();  // a stale flag of this thread is not ours
     while (reader_->take_next_sample(sample, &info) == eprosima::fastrtps::types::ReturnCode_t::RETCODE_OK) {
+      // Fast DDS hands over a sample whose decode failed as valid: dropped here, counted.
+      if (msg::take_fast_decode_failure()) {
+        ++malformed_;
+        continue;
+      }
       if (!info.valid_data) continue;  // dispose / unregister notifications
       if (meta) {
         meta->source_timestamp_ns = info.source_timestamp.to_ns();
@@ -183,7 +190,7 @@ class FastReader final : public ReaderBackend, public fdds::DataReaderListener {
     return reader_->wait_for_unread_message(eprosima::fastrtps::Duration_t(static_cast<long double>(timeout_ns) * 1e-9L));
   }
   int matched_count() const override { return matched_; }
-  uint64_t malformed_count() const override { return 0; }  // Fast DDS drops undecodable data itself
+  uint64_t malformed_count() const override { return malformed_; }
 
   void on_subscription_matched(fdds::DataReader*, const fdds::SubscriptionMatchedStatus& s) override {
     matched_ = s.current_count;
@@ -235,6 +242,7 @@ class FastReader final : public ReaderBackend, public fdds::DataReaderListener {
   std::string topic_;
   fdds::DataReader* reader_ = nullptr;
   std::atomic<int> matched_{0};
+  std::atomic<uint64_t> malformed_{0};
 };
 
 }  // namespace

@@ -57,7 +57,8 @@ const MetricRegistration kTrackingRms{
       if (fields.empty()) s.params().fail("fields", "needs at least one field");
       const double scale = s.params().optional<double>("scale", 1.0);
       if (!(scale > 0.0)) s.params().fail("scale", "must be > 0");
-      const auto [from, to] = s.window();
+      const auto span = s.window();
+      const double from = span.first, to = span.second;
       return [=, a = sig.name, b = ref.name, step = s.base_step()](const RunLog& log) {
         const ErrorSeries es = error_series(log, a, b, fields, from, to, step);
         MetricResult r;
@@ -83,7 +84,8 @@ const MetricRegistration kSettlingTime{
       const std::string field = sig.fields[static_cast<std::size_t>(f)];
       const double band = s.params().optional<double>("band", 1.15e-3);
       if (!(band > 0.0)) s.params().fail("band", "must be > 0");
-      const auto [from, to] = s.window();
+      const auto span = s.window();
+      const double from = span.first, to = span.second;
       return [=, a = sig.name, b = ref.name, step = s.base_step()](const RunLog& log) {
         const ErrorSeries es = error_series(log, a, b, {field}, from, to, step);
         MetricResult r;

@@ -111,7 +111,8 @@ const MetricRegistration kAngleErrorDeg{
       const int ia = field_or_theta(s, sig, "field");
       const int ib = field_or_theta(s, ref, "reference_field");
       const Stat stat = parse_stat(s.params());
-      const auto [from, to] = s.window();
+      const auto span = s.window();
+      const double from = span.first, to = span.second;
       return [=, a = sig.name, b = ref.name, step = s.base_step()](const RunLog& log) {
         MetricResult r;
         r.series = error_series(log, a, ia, b, ib, from, to, step);
@@ -130,7 +131,8 @@ const MetricRegistration kAngleErrorStdDifference{
       const int ia = field_or_theta(s, sig, "field");
       const int io = field_or_theta(s, other, "field");
       const int ib = field_or_theta(s, ref, "reference_field");
-      const auto [from, to] = s.window();
+      const auto span = s.window();
+      const double from = span.first, to = span.second;
       return [=, a = sig.name, o = other.name, b = ref.name, step = s.base_step()](const RunLog& log) {
         MetricResult r;
         r.value = reduce(error_series(log, a, ia, b, ib, from, to, step), Stat::std_dev) -
@@ -145,7 +147,8 @@ const MetricRegistration kAngleDeg{
       const SignalSpec& sig = s.signal("signal");
       const int f = s.field(sig, "field");
       const Stat stat = parse_stat(s.params());
-      const auto [from, to] = s.window();
+      const auto span = s.window();
+      const double from = span.first, to = span.second;
       return [=, a = sig.name, step = s.base_step()](const RunLog& log) {
         const SignalTrace& ta = *log.find(a);
         MetricResult r;

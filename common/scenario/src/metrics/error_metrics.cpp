@@ -56,7 +56,8 @@ MetricFactory error_metric(Reduce reduce) {
     const SignalSpec& sig = s.signal("signal");
     const SignalSpec& ref = s.signal("reference");
     const auto fields = s.fields({&sig, &ref}, "fields", {"x", "y"});
-    const auto [from, to] = s.window();
+    const auto span = s.window();
+    const double from = span.first, to = span.second;
     return [=, a = sig.name, b = ref.name, step = s.base_step()](const RunLog& log) {
       const SignalTrace& ta = *log.find(a);
       const SignalTrace& tb = *log.find(b);
@@ -92,7 +93,8 @@ MetricFactory value_metric(Reduce reduce) {
   return [reduce](const MetricSetup& s) -> MetricFunction {
     const SignalSpec& sig = s.signal("signal");
     const int field = s.field(sig, "field");
-    const auto [from, to] = s.window();
+    const auto span = s.window();
+    const double from = span.first, to = span.second;
     return [=, a = sig.name, step = s.base_step()](const RunLog& log) {
       const SignalTrace& ta = *log.find(a);
       MetricResult r;

@@ -115,7 +115,8 @@ const MetricRegistration kRiseTime{
     "icr_rise_time", "largest 10%->90% rise time of the ICR estimates towards their final values, s",
     [](const MetricSetup& s) -> MetricFunction {
       const Columns est = columns(s, "estimate", kIcrFields);
-      const auto [from, to] = s.window();
+      const auto span = s.window();
+      const double from = span.first, to = span.second;
       const double avg = s.params().optional<double>("final_average_s", 1.0);
       if (!(avg > 0.0) || avg > to - from) s.params().fail("final_average_s", "must be > 0 and fit in the window");
       return [=](const RunLog& log) {
@@ -160,7 +161,8 @@ const MetricRegistration kErrorFinal{
     [](const MetricSetup& s) -> MetricFunction {
       const Columns est = columns(s, "estimate", kIcrFields);
       const Columns tru = columns(s, "truth", kIcrFields);
-      const auto [from, to] = s.window();
+      const auto span = s.window();
+      const double from = span.first, to = span.second;
       return [=](const RunLog& log) {
         MetricResult r;
         for (const ErrorSample& e : errors(log, est, tru, from, to)) r.series.emplace_back(e.t, e.error);
@@ -206,7 +208,8 @@ const MetricRegistration kReconvergence{
     [](const MetricSetup& s) -> MetricFunction {
       const Columns est = columns(s, "estimate", kIcrFields);
       const Columns tru = columns(s, "truth", kIcrFields);
-      const auto [from, to] = s.window();
+      const auto span = s.window();
+      const double from = span.first, to = span.second;
       const double tol = s.params().optional<double>("tolerance", 0.02);
       if (!(tol > 0.0)) s.params().fail("tolerance", "must be > 0");
       const int choice = switch_choice(s);
@@ -235,7 +238,8 @@ const MetricRegistration kReconvergenceRise{
     [](const MetricSetup& s) -> MetricFunction {
       const Columns est = columns(s, "estimate", kIcrFields);
       const Columns tru = columns(s, "truth", kIcrFields);
-      const auto [from, to] = s.window();
+      const auto span = s.window();
+      const double from = span.first, to = span.second;
       const double fraction = s.params().optional<double>("fraction", 0.9);
       if (!(fraction > 0.0 && fraction <= 1.0)) s.params().fail("fraction", "must be in (0, 1]");
       const int choice = switch_choice(s);
@@ -273,7 +277,8 @@ const MetricRegistration kAccuracy{
     [](const MetricSetup& s) -> MetricFunction {
       const Columns cls = columns_of(s, "classifier", {"class", "windows"});
       const Columns tru = columns_of(s, "truth", {"terrain"});
-      const auto [from, to] = s.window();
+      const auto span = s.window();
+      const double from = span.first, to = span.second;
       const double window = s.params().optional<double>("window_s", 1.0);
       if (!(window > 0.0)) s.params().fail("window_s", "must be > 0 s");
       return [=](const RunLog& log) {
@@ -333,7 +338,8 @@ const MetricRegistration kOdometryRatio{
       const Columns sig = columns_of(s, "signal", {"x", "y"});
       const Columns other = columns_of(s, "other", {"x", "y"});
       const Columns ref = columns_of(s, "reference", {"x", "y"});
-      const auto [from, to] = s.window();
+      const auto span = s.window();
+      const double from = span.first, to = span.second;
       return [=](const RunLog& log) {
         const auto a = position_errors(log, sig, ref, from, to);
         const auto b = position_errors(log, other, ref, from, to);

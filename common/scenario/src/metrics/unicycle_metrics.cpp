@@ -52,7 +52,8 @@ using SeriesValue = std::function<double(const std::vector<double>&)>;
 using Reduce = std::function<double(const std::vector<std::pair<double, double>>&)>;
 
 MetricFunction series_metric(const MetricSetup& s, std::vector<Field> fields, SeriesValue value, Reduce reduce) {
-  const auto [from, to] = s.window();
+  const auto span = s.window();
+  const double from = span.first, to = span.second;
   return [=, step = s.base_step()](const RunLog& log) {
     std::vector<Held> held;
     std::vector<std::size_t> index;

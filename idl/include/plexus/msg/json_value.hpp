@@ -20,7 +20,11 @@ template <std::size_t N>
 nlohmann::ordered_json json_value(const std::array<char, N>& a) {
   std::size_t n = 0;
   while (n < N && a[n] != '\0') ++n;
-  return std::string(a.data(), n);
+  // The bytes come from the wire, and JSON text is UTF-8: dump() threw on anything else, and
+  // `plexus topic echo` stopped at the first such sample (found by fuzzing the subscriber
+  // edge). An invalid sequence becomes U+FFFD (nlohmann's replace handler).
+  const nlohmann::ordered_json raw = std::string(a.data(), n);
+  return nlohmann::ordered_json::parse(raw.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace));
 }
 
 template <class T, std::size_t N>

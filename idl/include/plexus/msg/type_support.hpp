@@ -25,7 +25,8 @@ class StampHeader;
 struct TypeSupport {
   /// Scoped IDL name, identical for both vendors ("plexus::msg::Pose2D").
   const char* type_name;
-  /// New fastddsgen TopicDataType (serialisation, sizes); the caller owns it.
+  /// New fastddsgen TopicDataType (serialisation, sizes), its decode checked
+  /// (checked_fast_type.hpp); the caller owns it.
   eprosima::fastdds::dds::TopicDataType* (*make_fast_type)();
   /// idlc topic descriptor: type name and keys for Cyclone.
   const dds_topic_descriptor* cyclone_descriptor;

@@ -68,6 +68,8 @@ class YamlMap {
 
  private:
   YAML::Node child(const std::string& key, bool required) const;
+  /// A key's text; InputError for a key that is a mapping, a list or empty.
+  std::string key_text(const YAML::Node& key) const;
   template <class T>
   T convert(const YAML::Node& n, const std::string& key) const;
 

@@ -35,7 +35,8 @@ class ReaderBackend {
  public:
   virtual ~ReaderBackend() = default;
   /// Takes the oldest unread valid sample into `sample` (a T). False if there is none.
-  /// Malformed data is dropped and counted, never returned.
+  /// Malformed data is dropped and counted, never returned; after false, `sample` may hold
+  /// part of a dropped one (it is decoded in place): read it only after true.
   virtual bool take(void* sample, SampleMeta* meta) = 0;
   /// Blocks until data is available or `timeout_ns` passes. True if data is available.
   virtual bool wait(int64_t timeout_ns) = 0;

@@ -132,10 +132,15 @@ class Subscriber {
 
   /// Oldest unread sample; false if none.
   bool take(T& out, SampleMeta* meta = nullptr) { return r_->take(&out, meta); }
-  /// Drains the reader and keeps the newest sample; false if there was none.
+  /// Drains the reader and keeps the newest sample; false if there was none. A malformed
+  /// sample after the newest valid one leaves `out` as that valid one.
   bool take_latest(T& out, SampleMeta* meta = nullptr) {
     bool any = false;
-    while (r_->take(&out, meta)) any = true;
+    T next;
+    while (r_->take(&next, meta)) {
+      out = next;
+      any = true;
+    }
     return any;
   }
   /// Blocks until data is available or the timeout passes.

@@ -59,7 +59,9 @@ class MetricSetup {
   std::vector<std::string> fields(const std::vector<const SignalSpec*>& specs, const std::string& key,
                           const std::vector<std::string>& fallback) const;
   /// Optional time window [from, to] in seconds (keys `from`, default 0, and `to`,
-  /// default the duration), validated to lie in [0, duration] with from <= to.
+  /// default the duration), validated to lie in [0, duration] with from <= to. (Read it into
+  /// two variables, not a structured binding, where a lambda captures them: clang 14, which
+  /// builds the fuzz targets, cannot capture a structured binding.)
   std::pair<double, double> window() const;
 
   /// The scenario's signals (a composite metric builds its parts' setups from them).

@@ -1,0 +1,48 @@
+// The Fast DDS type of every message: the fastddsgen PubSubType with a decode that cannot
+// throw and whose failure the reader sees.
+//
+// Fast DDS 2.9 calls TopicDataType::deserialize inside DataReader::take_next_sample and
+// ignores what it returns: bytes that do not decode (truncated CDR) were handed over as a
+// valid sample, partly decoded. And the generated deserialize catches only Fast CDR's
+// NotEnoughMemoryException: another one (BadParamException, for an encapsulation header that
+// does not start with a zero byte) went out of take_next_sample into the service. Both found
+// by fuzzing the subscriber edge (tests/fuzz/cdr_decode_fuzz.cpp). A failed decode now sets
+// a flag of the calling thread, which the Fast DDS reader (common/runtime/src/fastdds)
+// checks after each take: the sample is dropped and counted as malformed, as the Cyclone DDS
+// reader does.
+#pragma once
+
+#include <fastdds/dds/topic/TopicDataType.hpp>
+#include <fastdds/rtps/common/SerializedPayload.h>
+
+#include <exception>
+
+namespace plexus::msg {
+
+namespace detail {
+inline thread_local bool fast_decode_failed = false;
+}  // namespace detail
+
+/// True if a Fast DDS decode in this thread failed since the last call; clears the flag.
+inline bool take_fast_decode_failure() {
+  const bool failed = detail::fast_decode_failed;
+  detail::fast_decode_failed = false;
+  return failed;
+}
+
+template <class GeneratedPubSubType>
+class CheckedPubSubType final : public GeneratedPubSubType {
+ public:
+  bool deserialize(eprosima::fastrtps::rtps::SerializedPayload_t* payload, void* data) override {
+    bool ok = false;
+    try {
+      ok = GeneratedPubSubType::deserialize(payload, data);
+    } catch (const std::exception&) {
+      ok = false;
+    }
+    if (!ok) detail::fast_decode_failed = true;
+    return ok;
+  }
+};
+
+}  // namespace plexus::msg
