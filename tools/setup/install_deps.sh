@@ -16,6 +16,8 @@ PACKAGES=(
   libgtest-dev libgmock-dev libbenchmark-dev clang libclang-rt-14-dev
   # tools used at run time: plots, loop-jitter baseline, network namespaces for multi-host tests
   gnuplot-nox rt-tests iproute2 procps
+  # fault tests (tests/fault): packet loss and partitions inside network namespaces, launch.json
+  nftables jq
 )
 
 SUDO=""
