@@ -5,7 +5,8 @@
 # rule is created here and removed by `pair_down`, which the caller traps on EXIT; the rules
 # live in the namespaces, so they vanish with them, and the host's own ruleset is never touched.
 #
-#   pair_up TAG          create ns plxf1_TAG / plxf2_TAG ($NS1, $NS2) and the veth pair
+#   pair_up TAG          create ns plxf1_TAG / plxf2_TAG ($NS1, $NS2), the veth pair, the rules
+#   pair_reset           no loss, no partition, the packet counters at zero
 #   pair_loss PERCENT    drop PERCENT % of the packets arriving on each end (both directions)
 #   pair_partition       drop every packet crossing the pair, both directions
 #   pair_heal            remove the loss and partition rules
@@ -24,16 +25,24 @@ pair_up() {
   local ns
   for ns in "$NS1" "$NS2"; do ip -n "$ns" link set lo up || return 1; done
   ip -n "$NS1" link set "$VETH1" up && ip -n "$NS2" link set "$VETH2" up || return 1
-  # One table per namespace: a counter of every packet arriving on the veth end, then the
-  # loss and partition rules, each in its own chain so that it can be flushed on its own.
-  local dev
+  pair_reset
+}
+
+# (Re)creates the rules in both namespaces: no loss, no partition, counters at zero. One
+# table per namespace: a counter of every packet arriving on the veth end, then the loss and
+# partition rules, each in its own chain so that it can be flushed on its own.
+pair_reset() {
+  local ns dev
   for ns in "$NS1" "$NS2"; do
     dev=$VETH1
     [ "$ns" = "$NS2" ] && dev=$VETH2
+    ip netns exec "$ns" nft delete table inet plexus_fault 2>/dev/null
     ip netns exec "$ns" nft -f - <<EOF || return 1
 table inet plexus_fault {
-  chain loss { }
-  chain partition { }
+  chain loss {
+  }
+  chain partition {
+  }
   chain input {
     type filter hook input priority 0; policy accept;
     iifname "$dev" counter
@@ -96,5 +105,6 @@ pair_down() {
   for ns in "${NS1:-}" "${NS2:-}"; do
     [ -n "$ns" ] && ip netns del "$ns" 2>/dev/null
   done
+  [ -n "${VETH1:-}" ] && ip link del "$VETH1" 2>/dev/null  # created but not yet moved into a namespace
   return 0
 }
