@@ -148,8 +148,9 @@ int main(int argc, char** argv) {
       distributed::RealtimeHost host(sc, hosted, *participant, profiles, ro);
       const auto r = host.run(g_stop);
       spdlog::info("ran {} ticks: {} holds, {} stale and {} late input reads, {} refused samples, jitter p99 {:.1f} us, "
-                   "{} overruns",
-                   r.ticks, r.holds, r.stale_inputs, r.late_inputs, r.rejected_inputs, r.loop.jitter_p99_us, r.loop.overruns);
+                   "{} overruns, {} blind estimator steps",
+                   r.ticks, r.holds, r.stale_inputs, r.late_inputs, r.rejected_inputs, r.loop.jitter_p99_us, r.loop.overruns,
+                   r.blind_steps);
       return 0;
     }
     distributed::LockstepHost host(sc, hosted, *participant, profiles.get(profile), {.timeout_s = timeout});

@@ -49,6 +49,11 @@ void on_signal(int s) {
   g_stop = true;
 }
 
+/// Realtime: how long a run goes on after a process died for good (a plant simulator, a
+/// service with `restart: never`), recording the others' reaction, before it fails. A
+/// second: many input deadlines at any rate a scenario uses (3 periods: 30 ms at 100 Hz).
+constexpr int64_t kFatalGraceNs = 1'000'000'000;
+
 struct LaunchOptions {
   std::string scenario;
   std::vector<std::string> sets;
@@ -272,8 +277,11 @@ int run_launch(LaunchOptions o) {
     p.args = args;
     start_process(p);
   }
-  // A child that dies ends the run at once, with its name and exit code.
+  // A child that dies ends the run, with its name and exit code (realtime: after a grace
+  // during which the others' reaction is recorded).
   std::string died;
+  std::string killed_name;    // the process --kill killed (watcher thread only)
+  int64_t fatal_stop_ns = 0;  // realtime: when to stop after a death that is not restarted
   std::atomic<bool> watching{true};
   std::thread watcher([&] {
     while (watching) {
@@ -283,6 +291,7 @@ int run_launch(LaunchOptions o) {
         if (started && k != kill_at.end() && p.pid > 0 && monotonic_ns() - started >= static_cast<int64_t>(k->second * 1e9)) {
           ::kill(p.pid, SIGKILL);
           fault.killed_ns = monotonic_ns();
+          killed_name = p.name;
           spdlog::warn("fault injection: killed {} at {:.2f} s", p.service(), k->second);
           kill_at.erase(k);
         }
@@ -298,12 +307,19 @@ int run_launch(LaunchOptions o) {
             spdlog::warn("{} exited with code {}: restart in {:.2f} s", p.service(), status, p.restart_delay_ns * 1e-9);
           } else if (status != 0 && died.empty()) {
             died = p.service() + " exited with code " + std::to_string(status);
-            g_stop = true;
+            // Realtime: the run goes on for kFatalGraceNs, so that the recording shows how the
+            // others reacted (their controllers' holds), then fails. Lockstep: at once.
+            if (realtime && fault.run_start_ns.load())
+              fatal_stop_ns = monotonic_ns() + kFatalGraceNs;
+            else
+              g_stop = true;
           }
         }
+        if (fatal_stop_ns && monotonic_ns() >= fatal_stop_ns) g_stop = true;
         if (p.restart_at_ns && monotonic_ns() >= p.restart_at_ns && run_active) {
           p.restart_at_ns = 0;
           start_process(p);
+          if (fault.killed_ns.load() && !fault.respawned_ns.load() && p.name == killed_name) fault.respawned_ns = monotonic_ns();
           ++p.restarts;
           spdlog::warn("{}: restarted ({} restarts)", p.service(), p.restarts);
         }
@@ -399,7 +415,7 @@ int run_launch(LaunchOptions o) {
     }
     if (g_signal) return interrupted();
     stop_all();
-    if (!died.empty() || host_lost()) return failure(died);
+    if (host_lost()) return failure(died);
     RunSummary summary;
     char headline[256];
     std::snprintf(headline, sizeof headline, "scenario %s: realtime over %zu processes (%s), %.3g s", sc.name.c_str(),
@@ -413,7 +429,12 @@ int run_launch(LaunchOptions o) {
     for (const auto& p : procs)
       if (p.restarts) restarts[p.service()] = p.restarts;
     summary.extra["restarts"] = restarts;
-    if (!r.fault.empty()) summary.extra["fault"] = r.fault;
+    if (!r.fault.empty()) {
+      r.fault["killed"] = killed_name;
+      summary.extra["fault"] = r.fault;
+    }
+    // A process that died for good: the run folder still records what happened, then it fails.
+    if (!died.empty()) summary.extra["failure"] = died;
     for (const auto& [name, l] : r.latency.items()) {
       if (l["samples"].get<int>() == 0) continue;  // no sensor sample reached it (an open-loop command)
       char line[320];
@@ -427,6 +448,11 @@ int run_launch(LaunchOptions o) {
     add_hosts(summary);
     const int rc = finish_run(sc, r.log, r.wall, run_dir, o.json, o.quiet, summary);
     if (o.report) print_report(run_dir, o.json);
+    if (!died.empty()) {
+      scenario::mark_run_folder(run_dir, "failed: " + died);  // recorded, but not a complete run
+      std::fprintf(stderr, "plexus launch: %s\n", died.c_str());
+      return 1;
+    }
     return rc;
   }
   std::map<std::string, double> producer_offset_us;  // lockstep responses: per producer on another host

@@ -1,7 +1,9 @@
 #include "external_program.hpp"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <spawn.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -56,21 +58,28 @@ std::string find_program(const std::string& name) {
 
 pid_t spawn_program(const std::string& path, const std::vector<std::string>& args, const std::vector<std::string>& env,
                     const ProgramOutput& output) {
-  posix_spawn_file_actions_t fa;
-  posix_spawn_file_actions_init(&fa);
+  // Everything the child needs is prepared before fork(): after it, in a process with
+  // threads, the child may only make system calls until it execs.
+  int file_fd = -1;
   if (!output.file.empty()) {
-    posix_spawn_file_actions_addopen(&fa, STDOUT_FILENO, output.file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    posix_spawn_file_actions_adddup2(&fa, STDOUT_FILENO, STDERR_FILENO);
-  } else if (output.fd >= 0) {
-    posix_spawn_file_actions_adddup2(&fa, output.fd, STDOUT_FILENO);  // dup2 clears close-on-exec
-    posix_spawn_file_actions_adddup2(&fa, output.fd, STDERR_FILENO);
+    file_fd = ::open(output.file.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    if (file_fd < 0) throw std::runtime_error("cannot write " + output.file);
   }
+  const int out_fd = file_fd >= 0 ? file_fd : output.fd;
   auto argv = argv_of(path, args);
   Env e(env);
-  pid_t pid = 0;
-  const int rc = posix_spawn(&pid, path.c_str(), &fa, nullptr, argv.data(), e.ptrs.data());
-  posix_spawn_file_actions_destroy(&fa);
-  if (rc != 0) throw std::runtime_error("cannot start " + path);
+  const pid_t parent = getpid();
+  const pid_t pid = fork();
+  if (pid == 0) {
+    // The child never outlives this process: SIGTERM when it dies, even by SIGKILL. If it
+    // died before the request was made, the child is already orphaned: give up.
+    if (prctl(PR_SET_PDEATHSIG, SIGTERM) != 0 || getppid() != parent) _exit(127);
+    if (out_fd >= 0 && (dup2(out_fd, STDOUT_FILENO) < 0 || dup2(out_fd, STDERR_FILENO) < 0)) _exit(127);
+    execve(path.c_str(), argv.data(), e.ptrs.data());
+    _exit(127);
+  }
+  if (file_fd >= 0) ::close(file_fd);
+  if (pid < 0) throw std::runtime_error("cannot start " + path);
   return pid;
 }
 

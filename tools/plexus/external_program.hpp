@@ -19,7 +19,10 @@ struct ProgramOutput {
 };
 
 /// Starts `path args...` with extra environment entries ("KEY=VALUE") and its stdout and
-/// stderr to `output`. Returns the pid; throws std::runtime_error.
+/// stderr to `output`. The child gets SIGTERM when the thread that started it ends, or this
+/// process dies, even by SIGKILL (PR_SET_PDEATHSIG, set before exec: no window in which the
+/// parent's death goes unnoticed), so no child outlives plexus. Returns the pid; throws
+/// std::runtime_error (a program that cannot be executed exits 127).
 pid_t spawn_program(const std::string& path, const std::vector<std::string>& args,
                     const std::vector<std::string>& env = {}, const ProgramOutput& output = {});
 

@@ -160,6 +160,7 @@ YAML::Node part_document(const scenario::Scenario& sc, const Process& p) {
     in["period_steps"] = spec.period_steps;
     in["stage"] = scenario::to_string(producer->kind);
     if (!producer->qos.empty()) in["qos"] = producer->qos;
+    in["producer"] = spec.producer;  // named in this process's messages (a lockstep timeout)
     part["inputs"][spec.name] = in;
   }
   return part;

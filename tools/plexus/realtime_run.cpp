@@ -63,9 +63,17 @@ RealtimeResult run_realtime(scenario::Scenario& sc, rt::Participant& participant
   std::vector<msg::Heartbeat> last(procs.size());
   std::vector<bool> seen(procs.size(), false);
 
+  double heartbeat_after_s = -1;  // first heartbeat from a new pid (a restarted process) after the kill
+  std::vector<uint32_t> pid_of(procs.size(), 0);
   auto drain_beats = [&] {
-    for (std::size_t i = 0; i < beats.size(); ++i)
-      if (beats[i].take_latest(last[i])) seen[i] = true;
+    for (std::size_t i = 0; i < beats.size(); ++i) {
+      if (!beats[i].take_latest(last[i])) continue;
+      seen[i] = true;
+      // A heartbeat from another pid than before: the process was started again.
+      if (pid_of[i] && last[i].pid() != pid_of[i] && fault.killed_ns.load() && heartbeat_after_s < 0)
+        heartbeat_after_s = static_cast<double>(monotonic_ns() - fault.killed_ns.load()) * 1e-9;
+      pid_of[i] = last[i].pid();
+    }
   };
   const int64_t give_up = monotonic_ns() + static_cast<int64_t>(start_timeout_s * 1e9);
   while (std::find(seen.begin(), seen.end(), false) != seen.end()) {
@@ -90,6 +98,7 @@ RealtimeResult run_realtime(scenario::Scenario& sc, rt::Participant& participant
   const int64_t t0 = monotonic_ns() + kStartLeadNs;
   fault.run_start_ns = t0;
   double safe_after_s = -1;  // first all-zero command after an injected kill
+  std::vector<double> safe_after_by_command(signals.size(), -1.0);  // the same, per command signal
   const int64_t end = t0 + static_cast<int64_t>((sc.duration + 2.0) * 1e9);
   scenario::SignalSample sample;
   std::size_t bad_field = 0;
@@ -158,9 +167,11 @@ RealtimeResult run_realtime(scenario::Scenario& sc, rt::Participant& participant
         if (origin > distributed::kNoMeasurementOrigin) latency[s].push_back(now - origin + origin_offset[s]);
         const int64_t killed = fault.killed_ns.load();
         const auto width = static_cast<std::ptrdiff_t>(signals[s].fields.size());
-        if (killed && safe_after_s < 0 && std::find(commands.begin(), commands.end(), s) != commands.end() &&
-            std::all_of(sample.values.begin(), sample.values.begin() + width, [](double v) { return v == 0.0; }))
-          safe_after_s = static_cast<double>(monotonic_ns() - killed) * 1e-9;
+        if (killed && safe_after_by_command[s] < 0 && std::find(commands.begin(), commands.end(), s) != commands.end() &&
+            std::all_of(sample.values.begin(), sample.values.begin() + width, [](double v) { return v == 0.0; })) {
+          safe_after_by_command[s] = static_cast<double>(monotonic_ns() - killed) * 1e-9;
+          if (safe_after_s < 0) safe_after_s = safe_after_by_command[s];
+        }
       }
     }
     drain_beats();
@@ -179,7 +190,16 @@ RealtimeResult run_realtime(scenario::Scenario& sc, rt::Participant& participant
                                         {"compute_p50_us", hb.compute_p50_us()},   {"compute_p99_us", hb.compute_p99_us()}};
   }
   if (fault.killed_ns.load()) {
-    res.fault["safe_command_after_s"] = safe_after_s >= 0 ? nlohmann::ordered_json(safe_after_s) : nlohmann::ordered_json();
+    const auto seconds_or_null = [](double s) { return s >= 0 ? nlohmann::ordered_json(s) : nlohmann::ordered_json(); };
+    const auto since_kill = [&](int64_t ns) { return ns ? static_cast<double>(ns - fault.killed_ns.load()) * 1e-9 : -1.0; };
+    // The kill on the run's clock (the grid: step k at k base steps), for reading signals/.
+    res.fault["killed_at_s"] = static_cast<double>(fault.killed_ns.load() - t0) * 1e-9;
+    res.fault["safe_command_after_s"] = seconds_or_null(safe_after_s);
+    nlohmann::ordered_json per_command = nlohmann::ordered_json::object();
+    for (std::size_t s : commands) per_command[signals[s].name] = seconds_or_null(safe_after_by_command[s]);
+    res.fault["safe_command_after_s_by_command"] = per_command;
+    res.fault["respawned_after_s"] = seconds_or_null(since_kill(fault.respawned_ns.load()));
+    res.fault["first_heartbeat_after_s"] = seconds_or_null(heartbeat_after_s);
     res.fault["input_deadline_periods"] = sc.input_deadline_periods;
   }
   for (std::size_t s : commands) {

@@ -33,6 +33,7 @@ struct RealtimeResult {
 struct FaultClock {
   std::atomic<int64_t> run_start_ns{0};  ///< monotonic time of the start signal (0: not started)
   std::atomic<int64_t> killed_ns{0};     ///< monotonic time of the injected kill (0: none yet)
+  std::atomic<int64_t> respawned_ns{0};  ///< monotonic time the killed process was started again (0: not yet)
 };
 
 /// Waits (up to start_timeout_s) for a heartbeat from every process in `procs`, publishes the

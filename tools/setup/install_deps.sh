@@ -22,6 +22,8 @@ PACKAGES=(
   openssh-client openssh-server systemd jq
   # DDS Security (docs/security.md): the test PKI script, OpenSSL for the checks, captures
   openssl libssl-dev tcpdump
+  # fault tests (tests/fault): packet loss and partitions inside network namespaces
+  nftables
 )
 
 SUDO=""

@@ -37,6 +37,17 @@ struct RemoteLatest {
 };
 
 
+/// True if a signal comes from a plant or a sensor (a measurement): its producer's kind in
+/// this document, else the stage its `inputs:` entry gives (unstaged: read as a measurement).
+bool physical_producer(const scenario::Scenario& sc, const scenario::SignalSpec& spec) {
+  for (const auto& c : sc.components)
+    if (c.component->name() == spec.producer)
+      return c.kind == scenario::ComponentKind::plant || c.kind == scenario::ComponentKind::sensor;
+  const auto it = sc.inputs.find(spec.name);
+  if (it == sc.inputs.end() || !it->second.staged) return true;
+  return it->second.stage == scenario::ComponentKind::plant || it->second.stage == scenario::ComponentKind::sensor;
+}
+
 }  // namespace
 
 std::string health_topic(const std::string& service) {
@@ -99,6 +110,13 @@ struct RealtimeHost::Impl {
   std::vector<int64_t> local_origin;                  // by signal: origin of the latest local sample
   std::vector<std::vector<std::size_t>> local_inputs;  // by component: the signals it reads from this process
   std::vector<bool> stop_when_stale;                   // by signal: a plant's command (zeroed when stale)
+  // An estimator none of whose measurements is fresh is blind: it keeps stepping, but its
+  // outputs are not published (nor passed on as fresh in this process), so that staleness
+  // reaches the controllers downstream and they hold (a dead plant simulator stops them all).
+  std::vector<std::vector<std::size_t>> measurements;  // by component: its remote inputs from plants and sensors
+  std::vector<std::vector<std::size_t>> outputs_of;    // by component: the signals it produces here
+  std::vector<bool> fresh;                             // by signal: the last read found it fresh
+  std::vector<bool> blind;                             // by signal: its producer here is blind
   rt::Subscriber<msg::ClockStep> start;
   rt::Publisher<msg::Heartbeat> heartbeat;
   msg::Heartbeat hb;
@@ -127,6 +145,19 @@ struct RealtimeHost::Impl {
     for (std::size_t c = 0; c < sc.components.size(); ++c)
       if (exec.hosted(c) && sc.components[c].kind == scenario::ComponentKind::plant)
         for (std::size_t in : exec.inputs_of(c)) stop_when_stale[in] = true;
+    measurements.resize(sc.components.size());
+    outputs_of.resize(sc.components.size());
+    fresh.assign(signals.size(), false);
+    blind.assign(signals.size(), false);
+    for (std::size_t i : produced)
+      for (std::size_t c = 0; c < sc.components.size(); ++c)
+        if (sc.components[c].component->name() == signals[i].producer) outputs_of[c].push_back(i);
+    const auto remote_ins = exec.remote_inputs();
+    for (std::size_t c = 0; c < sc.components.size(); ++c)
+      if (exec.hosted(c))
+        for (std::size_t in : exec.inputs_of(c))
+          if (std::find(remote_ins.begin(), remote_ins.end(), in) != remote_ins.end() && physical_producer(sc, signals[in]))
+            measurements[c].push_back(in);
     for (std::size_t i : exec.remote_inputs()) {
       auto r = std::make_unique<RemoteLatest>(signals[i], p, input_qos(sc, signals[i], profiles), step_ns(sc));
       r->deadline_ns = static_cast<int64_t>(sc.input_deadline_periods * static_cast<double>(signals[i].period_steps) *
@@ -222,7 +253,9 @@ RealtimeReport RealtimeHost::run(const std::atomic<bool>& stop) {
     const RemoteLatest& r = *m.remote[signal];
     if (r.sample.step < due) ++m.report.late_inputs;  // the sample of this step has not arrived
     s = r.sample;
-    if (r.sample.step < 0 || monotonic_ns() - r.received_ns > r.deadline_ns) {
+    const bool stale = r.sample.step < 0 || monotonic_ns() - r.received_ns > r.deadline_ns;
+    m.fresh[signal] = !stale;
+    if (stale) {
       m.stale = true;
       ++m.report.stale_inputs;
       if (m.stop_when_stale[signal]) std::fill(s.values.begin(), s.values.end(), 0.0);
@@ -231,8 +264,16 @@ RealtimeReport RealtimeHost::run(const std::atomic<bool>& stop) {
   };
   const scenario::StepExecutor::Gate gate = [&m](std::size_t component) {
     const auto kind = m.sc.components[component].kind;
-    const bool hold = m.stale && kind == scenario::ComponentKind::controller;
+    bool stale = m.stale;
+    for (std::size_t s : m.local_inputs[component]) stale = stale || m.blind[s];  // a blind estimator in this process
+    const bool hold = stale && kind == scenario::ComponentKind::controller;
     m.stale = false;
+    if (kind == scenario::ComponentKind::estimator) {
+      const auto& ms = m.measurements[component];
+      const bool blind = !ms.empty() && std::none_of(ms.begin(), ms.end(), [&m](std::size_t s) { return m.fresh[s]; });
+      for (std::size_t s : m.outputs_of[component]) m.blind[s] = blind;
+      if (blind) ++m.report.blind_steps;
+    }
     // Its inputs are read: its outputs carry the newest origin among them, local or remote.
     // A measurement starts a chain (origin 0: set when published); a component that read no
     // measurement (a reference) marks its outputs as such.
@@ -248,6 +289,7 @@ RealtimeReport RealtimeHost::run(const std::atomic<bool>& stop) {
     return !hold;
   };
   const scenario::StepExecutor::OutputSink publish = [&](std::size_t signal, const SignalSample& s) {
+    if (m.blind[signal]) return;  // computed from no fresh measurement: not published
     m.out[signal]->publish(s, m.component_origin);  // origin 0: this sample starts a chain (stamped now)
     m.local_origin[signal] = m.out[signal]->last_origin();  // for readers in this process
   };

@@ -55,6 +55,25 @@ inline scenario::Scenario two_component_scenario(const std::string& robot, const
   return scenario::load_scenario_text(text, "test.yaml");
 }
 
+/// The plant, an estimator of its state (`estimator`: estimate = truth/state) and a controller
+/// that follows the estimate (`follower`): the chain through which a dead plant must stop the
+/// controller (the estimator goes blind).
+inline scenario::Scenario estimator_chain_scenario(const std::string& robot, const std::string& clock_yaml = "") {
+  const std::string text = "name: t\n"
+                           "duration: 30.0\n"
+                           "step: 0.01\n"
+                           "seed: 1\n" +
+                           clock_yaml +
+                           "robots:\n"
+                           "  " + robot + ":\n"
+                           "    plant: {type: test_echo_plant}\n"
+                           "services:\n"
+                           "  estimator: {type: test_pass_estimator, robot: " + robot + "}\n"
+                           "  follower: {type: test_follow_controller, robot: " + robot +
+                           ", remap: {truth/state: " + robot + "/estimate}}\n";
+  return scenario::load_scenario_text(text, "test.yaml");
+}
+
 /// `hosted` for the one component named `name` ("<robot>/plant", "follower"); "" hosts all.
 inline std::vector<bool> hosting(const scenario::Scenario& sc, const std::string& name) {
   std::vector<bool> hosted(sc.components.size(), false);

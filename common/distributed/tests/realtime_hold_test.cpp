@@ -6,7 +6,9 @@
 //  - a controller uses a fresh input; with a stale one (never received, or older than
 //    clock.input_deadline_periods periods) it runs hold(): its safe output, all zero; it
 //    recovers once the input is fresh again; every hold is counted in the report;
-//  - a plant whose command is stale gets the zero command (and does not hold).
+//  - a plant whose command is stale gets the zero command (and does not hold);
+//  - an estimator with no fresh measurement is blind: it publishes nothing, and a controller
+//    reading it in the same process holds (so a dead plant stops every loop).
 //
 // The deadline is 10 periods of 10 ms, far above a loaded machine's scheduling hiccups;
 // every wait is on a condition with a generous bound, never on a duration.
@@ -70,12 +72,21 @@ class Latest {
       : sub_(p, spec, step_ns, profiles().get("state")) {}
   /// True when the latest sample so far has fields 0 and 1 equal to {a, b}.
   bool is(double a, double b) {
+    drain();
+    return last_.step >= 0 && last_.values[0] == a && last_.values[1] == b;
+  }
+  /// True when nothing has arrived for `seconds` (the host stopped publishing).
+  bool silent_for(double seconds) {
+    drain();
+    return monotonic_ns() - received_ns_ > static_cast<int64_t>(seconds * 1e9);
+  }
+  void drain() {
     while (const void* m = sub_.take()) {
       std::size_t bad = 0;
       scenario::SignalSample s;
+      received_ns_ = monotonic_ns();
       if (sub_.wire().decode(m, s, bad) == Rejection::none) last_ = s;
     }
-    return last_.step >= 0 && last_.values[0] == a && last_.values[1] == b;
   }
   std::string describe() const {
     return last_.step < 0 ? "nothing received"
@@ -85,6 +96,7 @@ class Latest {
  private:
   WireSubscriber sub_;
   scenario::SignalSample last_;
+  int64_t received_ns_ = 0;
 };
 
 class RealtimeHold : public ::testing::TestWithParam<rt::Vendor> {
@@ -177,6 +189,67 @@ TEST_P(RealtimeHold, PlantGetsTheZeroCommandWhileItsCommandIsStale) {
   EXPECT_EQ(run.error(), "no error");
   EXPECT_GT(run.report().stale_inputs, 0u);
   EXPECT_EQ(run.report().holds, 0u);  // only controllers hold
+}
+
+TEST_P(RealtimeHold, EstimatorWithoutFreshMeasurementPublishesNothing) {
+  const std::string robot = unique_robot("rt_est", vendor());
+  auto sc_host = estimator_chain_scenario(robot, kRealtime);
+  auto sc_peer = estimator_chain_scenario(robot, kRealtime);
+  auto p_host = make("host estimator");
+  auto p_peer = make("plant and controller");
+  RealtimeOptions opt;
+  opt.service = "rt_est_" + std::string(rt::to_string(vendor()));
+  RealtimeHost host(sc_host, hosting(sc_host, "estimator"), *p_host, profiles(), opt);
+  ASSERT_EQ(sc_peer.signals[1].name, robot + "/estimate");
+  Feeder state(*p_peer, sc_peer.signals[0], step_ns(sc_peer));
+  Latest estimate(*p_peer, sc_peer.signals[1], step_ns(sc_peer));
+  HostThread run(host);
+
+  state.send(2.5, 1.0);
+  EXPECT_TRUE(eventually([&] { return estimate.is(2.5, 1.0); })) << estimate.describe();
+  // The measurement goes stale (10 periods): the estimator stops publishing. Before blind
+  // estimators it went on publishing its last estimate, and the stream never fell silent.
+  state.pause();
+  EXPECT_TRUE(eventually([&] { return estimate.silent_for(0.5); })) << "still publishing: " << estimate.describe();
+  state.send(-3.0, 2.0);
+  EXPECT_TRUE(eventually([&] { return estimate.is(-3.0, 2.0); })) << estimate.describe();
+
+  run.join();
+  EXPECT_EQ(run.error(), "no error");
+  EXPECT_GT(run.report().blind_steps, 0u);
+  EXPECT_EQ(run.report().holds, 0u);  // an estimator does not hold
+}
+
+TEST_P(RealtimeHold, ControllerHoldsBehindABlindEstimatorInItsProcess) {
+  const std::string robot = unique_robot("rt_chain", vendor());
+  auto sc_host = estimator_chain_scenario(robot, kRealtime);
+  auto sc_peer = estimator_chain_scenario(robot, kRealtime);
+  auto p_host = make("host estimator and follower");
+  auto p_peer = make("plant");
+  RealtimeOptions opt;
+  opt.service = "rt_chain_" + std::string(rt::to_string(vendor()));
+  std::vector<bool> both = hosting(sc_host, "estimator");
+  const std::vector<bool> follower = hosting(sc_host, "follower");
+  for (std::size_t i = 0; i < both.size(); ++i) both[i] = both[i] || follower[i];
+  RealtimeHost host(sc_host, both, *p_host, profiles(), opt);
+  ASSERT_EQ(sc_peer.signals[2].name, robot + "/cmd");
+  Feeder state(*p_peer, sc_peer.signals[0], step_ns(sc_peer));
+  Latest cmd(*p_peer, sc_peer.signals[2], step_ns(sc_peer));
+  HostThread run(host);
+
+  state.send(2.5, 0.0);
+  EXPECT_TRUE(eventually([&] { return cmd.is(2.5, 0.5); })) << cmd.describe();
+  // The plant goes silent: the estimate, passed in memory, is blind, so the controller holds
+  // instead of following the last estimate for ever.
+  state.pause();
+  EXPECT_TRUE(eventually([&] { return cmd.is(0.0, 0.0); })) << cmd.describe();
+  state.send(4.0, 0.0);
+  EXPECT_TRUE(eventually([&] { return cmd.is(4.0, 0.5); })) << cmd.describe();
+
+  run.join();
+  EXPECT_EQ(run.error(), "no error");
+  EXPECT_GT(run.report().blind_steps, 0u);
+  EXPECT_GT(run.report().holds, 0u);
 }
 
 INSTANTIATE_TEST_SUITE_P(Dds, RealtimeHold, ::testing::Values(rt::Vendor::fast, rt::Vendor::cyclone), vendor_name);

@@ -7,6 +7,8 @@
 //   test_follow_controller (controller) in truth/state {x, y, theta} (Pose2D)
 //                                      out cmd {v, omega} (UnicycleCommand) = {x, 0.5};
 //                                      hold(): Component's default safe output (all zero)
+//   test_pass_estimator (estimator)    in truth/state {x, y, theta} (Pose2D), a measurement
+//                                      out estimate {x, y, theta} (Pose2D) = truth/state
 #include <memory>
 
 #include "plexus/scenario/registry.hpp"
@@ -55,6 +57,22 @@ class FollowController final : public Component {
   OutputPort& cmd_;
 };
 
+class PassEstimator final : public Component {
+ public:
+  explicit PassEstimator(const ComponentConfig& c)
+      : Component(c),
+        state_(add_input("truth/state", {"x", "y", "theta"}, "Pose2D")),
+        out_(add_output("estimate", {"x", "y", "theta"}, "Pose2D")) {}
+
+  void step(int64_t /*k*/, double /*t*/) override {
+    for (std::size_t i = 0; i < 3; ++i) out_[i] = state_[i];
+  }
+
+ private:
+  InputPort& state_;
+  OutputPort& out_;
+};
+
 const scenario::ComponentRegistration kEchoPlant{
     "test_echo_plant", ComponentKind::plant, "test: out truth/state {x, y, theta} = {cmd.v, cmd.omega, 0}",
     [](const ComponentConfig& c) { return std::make_unique<EchoPlant>(c); }};
@@ -62,6 +80,10 @@ const scenario::ComponentRegistration kEchoPlant{
 const scenario::ComponentRegistration kFollowController{
     "test_follow_controller", ComponentKind::controller, "test: out cmd {v, omega} = {truth/state.x, 0.5}",
     [](const ComponentConfig& c) { return std::make_unique<FollowController>(c); }};
+
+const scenario::ComponentRegistration kPassEstimator{
+    "test_pass_estimator", ComponentKind::estimator, "test: out estimate {x, y, theta} = truth/state",
+    [](const ComponentConfig& c) { return std::make_unique<PassEstimator>(c); }};
 
 }  // namespace
 }  // namespace plexus::distributed::testing

@@ -267,6 +267,7 @@ struct Loader {
           in.fail("stage", "expected plant, sensor, reference, estimator or controller");
       }
       e.qos = in.optional<std::string>("qos", "");
+      e.producer = in.optional<std::string>("producer", "");
       in.reject_unknown();
       sc.inputs[signal] = e;
     }

@@ -90,7 +90,8 @@ Wiring wire(const Scenario& scenario) {
         spec.name = in->signal();
         spec.period_steps = ext != scenario.inputs.end() && ext->second.period_steps > 0 ? ext->second.period_steps
                                                                                          : c.period_steps;
-        spec.producer = "(another process)";
+        spec.producer = ext != scenario.inputs.end() && !ext->second.producer.empty() ? ext->second.producer
+                                                                                      : "(another process)";
         spec.message = in->message();
         it = by_name.emplace(spec.name, w.signals.size()).first;
         w.signals.push_back(std::move(spec));

@@ -4,7 +4,9 @@
 #include <dds/ddsi/ddsi_serdata.h>
 #include <dds/ddsi/ddsi_sertype.h>
 
+#include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <cstring>
 #include <stdexcept>
 
@@ -285,12 +287,17 @@ void release_domain(dds_domainid_t domain) {
 std::string CycloneParticipant::config_xml(const NetworkOptions& net) {
   std::string peers;
   for (const auto& p : net.peers) peers += "<Peer address=\"" + p + "\"/>";
+  // Reliable repair as on Fast DDS (NetworkOptions::reliable_heartbeat_s): heartbeats every
+  // period while samples are unacknowledged, a request for repair 1 ms after one.
+  const std::string hb = std::to_string(std::max<long long>(1, std::llround(net.reliable_heartbeat_s * 1e3))) + " ms";
   return "<CycloneDDS><Domain Id=\"any\">"
          "<General><Interfaces><NetworkInterface address=\"" + net.interface_address + "\"/></Interfaces>"
          "<AllowMulticast>false</AllowMulticast></General>"
          "<Discovery><ParticipantIndex>auto</ParticipantIndex>"
          "<MaxAutoParticipantIndex>" + std::to_string(net.max_participants_per_host - 1) + "</MaxAutoParticipantIndex>"
          "<Peers>" + peers + "</Peers></Discovery>"
+         "<Internal><HeartbeatInterval min=\"" + hb + "\" minsched=\"" + hb + "\">" + hb + "</HeartbeatInterval>"
+         "<NackDelay>1 ms</NackDelay></Internal>"
          "</Domain></CycloneDDS>";
 }
 

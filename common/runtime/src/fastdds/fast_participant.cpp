@@ -459,6 +459,10 @@ std::unique_ptr<WriterBackend> FastParticipant::make_writer(const msg::TypeSuppo
   fdds::Topic* t = topic(type, topic_name);
   fdds::DataWriterQos wq = publisher_->get_default_datawriter_qos();
   apply_common(wq, qos);
+  // A lost sample is asked for when the next heartbeat arrives, and repaired 1 ms after the
+  // request (NetworkOptions::reliable_heartbeat_s; Fast DDS's defaults: 3 s and 5 ms).
+  wq.reliable_writer_qos().times.heartbeatPeriod = to_duration(options().network.reliable_heartbeat_s);
+  wq.reliable_writer_qos().times.nackResponseDelay = eprosima::fastrtps::Duration_t(0, 1'000'000);
   {
     std::lock_guard lk(mu_);
     qos_by_endpoint_["w:" + topic_name] = describe(qos);
@@ -475,6 +479,8 @@ std::unique_ptr<ReaderBackend> FastParticipant::make_reader(const msg::TypeSuppo
   fdds::Topic* t = topic(type, topic_name);
   fdds::DataReaderQos rq = subscriber_->get_default_datareader_qos();
   apply_common(rq, qos);
+  // Asks for what a heartbeat says it missed 1 ms after it (default 5 ms): NetworkOptions.
+  rq.reliable_reader_qos().times.heartbeatResponseDelay = eprosima::fastrtps::Duration_t(0, 1'000'000);
   {
     std::lock_guard lk(mu_);
     qos_by_endpoint_["r:" + topic_name] = describe(qos);

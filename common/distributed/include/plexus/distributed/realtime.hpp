@@ -9,7 +9,10 @@
 //    `clock.input_deadline_periods`, default 3), or has never arrived.
 //  - A controller with a stale input runs hold() instead of step(): its documented safe
 //    output (by default all zero: zero velocity, zero torque). It recovers by itself at the
-//    first tick where its inputs are fresh again. Other components run on the last sample.
+//    first tick where its inputs are fresh again. Other components run on the last sample,
+//    but an estimator none of whose measurements (inputs from plants and sensors) is fresh is
+//    blind: it steps, and its outputs are not published, so its consumers' inputs go stale
+//    in turn and a controller behind it holds (a dead plant simulator stops every loop).
 //  - Every output carries in its header the origin time of the newest input it was
 //    computed from, in this process or another (a sensor starts a chain; an output computed
 //    from no measurement, a reference's, carries kNoMeasurementOrigin), so the latency from
@@ -83,6 +86,7 @@ struct RealtimeOptions {
 struct RealtimeReport {
   int64_t ticks = 0;
   uint64_t holds = 0;            ///< controller steps replaced by the safe output
+  uint64_t blind_steps = 0;      ///< estimator steps with no fresh measurement (outputs not published)
   uint64_t stale_inputs = 0;     ///< input reads that found a stale sample
   uint64_t late_inputs = 0;      ///< input reads that found an older sample than the sim would read
   uint64_t rejected_inputs = 0;  ///< received samples refused at the edge (non-finite, malformed)

@@ -33,6 +33,16 @@ struct NetworkOptions {
   std::vector<std::string> peers = {"127.0.0.1"};
   /// Participants per host that discovery probes on each peer (RTPS participant ids 0..n-1).
   int max_participants_per_host = 32;
+  /// Period of a reliable writer's heartbeat while a reader has not acknowledged a sample.
+  /// A reader asks for a lost sample only when a heartbeat tells it what it missed, and it
+  /// delivers in order, so a loss holds a reliable stream up for about this long: a lockstep
+  /// step, or a realtime input (at 100 Hz, a repair within half a period arrives before the
+  /// reader's next tick). Fast DDS applies it to every reliable writer (its default is 3 s),
+  /// Cyclone DDS to the domain (Internal/HeartbeatInterval, default 100 ms); both then answer
+  /// a heartbeat and a request for repair within 1 ms (Fast DDS: 5 ms each; Cyclone's
+  /// NackDelay: 100 ms). The cost is a heartbeat and its answer per reader every period, only
+  /// while samples are unacknowledged. docs/runtime.md, docs/distributed.md (Faults).
+  double reliable_heartbeat_s = 0.005;
 };
 
 struct ParticipantOptions {

@@ -56,6 +56,7 @@ struct ExternalInput {
   ComponentKind stage = ComponentKind::plant;  ///< the producer's stage: a reader in the same or an earlier stage reads it one step late
   bool staged = false;       ///< stage given (else: read without delay)
   std::string qos;           ///< the producer's QoS profile (empty: "state")
+  std::string producer;      ///< the producing component's name, for messages (empty: unknown)
 };
 
 /// Where a robot's sensor topics come from and where its command goes (robot key `source`,

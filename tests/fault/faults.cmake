@@ -1,0 +1,24 @@
+# Issue 14, the reliability campaign's network faults, process faults and soak (tests/fault/;
+# what each measures, and the figures: docs/distributed.md, "Faults"). Domains 120-129.
+# Everything here runs realtime loops or several processes whose behaviour under the fault
+# is checked, so each test is RUN_SERIAL; those over ~30 s are labelled slow.
+set(FAULT_DIR ${CMAKE_CURRENT_LIST_DIR})
+set(FAULT_RUNS ${CMAKE_BINARY_DIR}/test-runs/fault)
+
+# SIGKILL of every service executable in turn, in realtime (kill_each.sh): the safe output,
+# the restart within 1 s, the loop resuming; the plant simulator's death makes every feedback
+# controller hold. One test per vendor runs the nine cases in turn (about 1.5 min).
+foreach(variant "fast;125" "cyclone;126")
+  list(POP_FRONT variant vendor domain)
+  add_test(NAME fault.kill_each_service_${vendor}
+           COMMAND bash ${FAULT_DIR}/kill_each.sh $<TARGET_FILE:plexus> ${FAULT_DIR}/three_robots.yaml
+                   ${PROJECT_SOURCE_DIR}/deploy/scenarios/arm_vdc_ekf.yaml ${FAULT_RUNS}/kill_each_${vendor} ${domain} ${vendor})
+  set_tests_properties(fault.kill_each_service_${vendor} PROPERTIES
+                       LABELS "fault;realtime;multiprocess;slow" TIMEOUT 600 RUN_SERIAL TRUE)
+endforeach()
+
+# SIGKILL of `plexus launch` itself leaves no child behind, on both vendors.
+add_test(NAME fault.launcher_killed_leaves_no_orphan
+         COMMAND bash ${FAULT_DIR}/launcher_kill.sh $<TARGET_FILE:plexus>
+                 ${PROJECT_SOURCE_DIR}/deploy/scenarios/wmr_output_feedback_rfid.yaml ${FAULT_RUNS}/launcher_kill 127)
+set_tests_properties(fault.launcher_killed_leaves_no_orphan PROPERTIES LABELS "fault;multiprocess" TIMEOUT 120 RUN_SERIAL TRUE)

@@ -1,0 +1,35 @@
+# Sourced by the network fault tests, after netns_pair.sh and `pair_up`: runs a scenario
+# split across the two namespaces, `plexus launch --host h2` in $NS2 and `--host h1` (the
+# clock, the recording and the run folder) in $NS1, with the same arguments.
+#
+#   split_start OUT DOMAIN ARGS...   start both launchers; h1's stdout (--json) goes to
+#                                    OUT/h1.json, its stderr to OUT/h1.log, the run folder
+#                                    is OUT/launch; h2's output goes to OUT/h2.log
+#   split_wait                       wait for both; sets SPLIT_RC and SPLIT_H2_RC
+#   json_of FILE FILTER              a value from a JSON file (jq), "null" if absent
+#
+# The placement flags (which host runs what) are the caller's, in ARGS.
+
+split_start() {
+  local out=$1 domain=$2
+  shift 2
+  mkdir -p "$out"
+  ip netns exec "$NS2" "$PLEXUS" launch "$SCENARIO" --host h2 --domain "$domain" --quiet "$@" > "$out/h2.log" 2>&1 &
+  SPLIT_H2=$!
+  ip netns exec "$NS1" "$PLEXUS" launch "$SCENARIO" --host h1 --domain "$domain" --quiet --json --out "$out/launch" "$@" \
+    > "$out/h1.json" 2> "$out/h1.log" &
+  SPLIT_H1=$!
+}
+
+split_wait() {
+  wait "$SPLIT_H1"
+  SPLIT_RC=$?
+  wait "$SPLIT_H2"
+  SPLIT_H2_RC=$?
+  SPLIT_H1= SPLIT_H2=
+}
+
+json_of() { jq -r "$2 // \"null\"" "$1" 2>/dev/null || echo null; }
+
+# The two hosts' addresses (netns_pair.sh) as the scenario's hosts.
+HOSTS=(--set hosts.h1.address=10.231.0.1 --set hosts.h2.address=10.231.0.2)
