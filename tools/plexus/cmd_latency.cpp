@@ -249,14 +249,19 @@ int run_pingpong(const PingOpts& o) {
 struct LoopOpts {
   double rate = 1000, duration = 10;
   int priority = 80, cpu = -1;
+  int cpu_dma_latency = 0;     // us, as cyclictest's default; -1: no request (cyclictest --laptop)
+  int64_t timer_slack = 1;     // ns; 0 keeps the thread's (Linux default 50 us)
   std::string out;
-  bool json = false, no_cyclictest = false;
+  bool json = false, no_cyclictest = false, no_mlock = false;
 };
 
 int run_loop(const LoopOpts& o) {
   if (!(o.rate > 0 && o.rate <= 100000)) throw InputError("--rate: must be in (0, 100000] Hz");
   if (!(o.duration > 0 && o.duration <= 3600)) throw InputError("--duration: must be in (0, 3600] seconds");
   if (o.priority < 0 || o.priority > 99) throw InputError("--priority: must be in 0..99 (0: no real-time priority)");
+  if (o.cpu_dma_latency < -1 || o.cpu_dma_latency > 10'000'000)
+    throw InputError("--cpu-dma-latency: must be -1 (no request) or in 0..10000000 us");
+  if (o.timer_slack < 0) throw InputError("--timer-slack: must be >= 0 ns (0: keep the default)");
   make_out_dir(o.out);
   const auto n = static_cast<std::size_t>(o.rate * o.duration);
   std::vector<double> lateness(n);  // preallocated: the loop only stores
@@ -265,7 +270,8 @@ int run_loop(const LoopOpts& o) {
   std::exception_ptr failed;  // a bad option the loop refuses (a CPU that does not exist): exit 2 here
   std::thread th([&] {
     try {
-      rt::PeriodicLoop loop({.rate_hz = o.rate, .priority = o.priority, .cpu = o.cpu, .lock_memory = true});
+      rt::PeriodicLoop loop({.rate_hz = o.rate, .priority = o.priority, .cpu = o.cpu, .lock_memory = !o.no_mlock,
+                              .timer_slack_ns = o.timer_slack, .cpu_dma_latency_us = o.cpu_dma_latency});
       refused = loop.refused();
       loop.start();
       for (std::size_t i = 0; i < n; ++i) {
@@ -283,7 +289,8 @@ int run_loop(const LoopOpts& o) {
   const bool prio_refused = refused.find("priority") != std::string::npos || refused.find("SCHED_FIFO") != std::string::npos;
 
   Json result = {{"rate_hz", o.rate}, {"duration_s", o.duration}, {"priority", prio_refused ? 0 : o.priority},
-                 {"plexus", pct_json(a)}};
+                 {"cpu_dma_latency_us", o.cpu_dma_latency}, {"timer_slack_ns", o.timer_slack},
+                 {"mlockall", !o.no_mlock}, {"plexus", pct_json(a)}};
   if (!refused.empty()) result["refused"] = refused;
   Percentiles b;
   std::vector<double> hist;
@@ -296,7 +303,10 @@ int run_loop(const LoopOpts& o) {
       const int prio = prio_refused ? 0 : o.priority;
       const int interval_us = static_cast<int>(std::lround(1e6 / o.rate));
       std::vector<std::string> args = {"-q", "-t1", "-p" + std::to_string(prio), "-i" + std::to_string(interval_us),
-                                       "-D" + std::to_string(static_cast<int>(std::ceil(o.duration))), "-m", "-h2000"};
+                                       "-D" + std::to_string(static_cast<int>(std::ceil(o.duration))), "-h2000"};
+      // The same settings as the plexus loop: memory locking and the CPU wake-up latency request.
+      if (!o.no_mlock) args.push_back("-m");
+      args.push_back(o.cpu_dma_latency < 0 ? std::string("--laptop") : "--latency=" + std::to_string(o.cpu_dma_latency));
       if (o.cpu >= 0) args.push_back("-a" + std::to_string(o.cpu));
       std::string out;
       int rc = run_program(ct, args, out, {}, true);
@@ -346,8 +356,12 @@ int run_loop(const LoopOpts& o) {
     std::printf("%s\n", result.dump().c_str());
     return 0;
   }
-  std::printf("plexus latency loop: %g Hz for %g s, SCHED_FIFO priority %d%s\n", o.rate, o.duration,
-              prio_refused ? 0 : o.priority, refused.empty() ? "" : (" (refused: " + refused + ")").c_str());
+  std::printf("plexus latency loop: %g Hz for %g s, SCHED_FIFO priority %d, %s, CPU wake-up latency request %s, "
+              "timer slack %s%s\n",
+              o.rate, o.duration, prio_refused ? 0 : o.priority, o.no_mlock ? "no mlockall" : "mlockall",
+              o.cpu_dma_latency < 0 ? "none" : (std::to_string(o.cpu_dma_latency) + " us").c_str(),
+              o.timer_slack > 0 ? (std::to_string(o.timer_slack) + " ns").c_str() : "default",
+              refused.empty() ? "" : (" (refused: " + refused + ")").c_str());
   if (have_cyclictest) {
     print_compare("wake-up lateness", a, b, "cyclictest", true);
     std::printf("(cyclictest percentiles from its 1 us histogram)\n");
@@ -543,6 +557,12 @@ Command add_latency_command(CLI::App& root) {
   loop->add_option("--duration", lo->duration, "seconds")->capture_default_str();
   loop->add_option("--priority", lo->priority, "SCHED_FIFO priority (0: none)")->capture_default_str();
   loop->add_option("--cpu", lo->cpu, "pin to this CPU (-1: no affinity)")->capture_default_str();
+  loop->add_option("--cpu-dma-latency", lo->cpu_dma_latency,
+                   "CPU wake-up latency request, us, held on /dev/cpu_dma_latency by both (-1: none; cyclictest --laptop)")
+      ->capture_default_str();
+  loop->add_option("--timer-slack", lo->timer_slack, "the plexus loop thread's timer slack, ns (0: keep Linux's 50 us)")
+      ->capture_default_str();
+  loop->add_flag("--no-mlock", lo->no_mlock, "neither locks its memory (mlockall)");
   loop->add_option("-o,--out", lo->out, "directory for the PNG histogram");
   loop->add_flag("--no-cyclictest", lo->no_cyclictest, "skip the cyclictest baseline");
   loop->add_flag("--json", lo->json, "one JSON object");

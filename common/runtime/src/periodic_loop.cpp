@@ -1,7 +1,9 @@
 #include "plexus/runtime/periodic_loop.hpp"
 
+#include <fcntl.h>
 #include <sched.h>
 #include <sys/mman.h>
+#include <sys/prctl.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -37,6 +39,10 @@ PeriodicLoop::PeriodicLoop(const LoopOptions& o) {
     throw InputError("loop rate must be in (0, 100000] Hz, got " + std::to_string(o.rate_hz));
   if (o.priority < 0 || o.priority > 99) throw InputError("loop priority must be in 0..99, got " + std::to_string(o.priority));
   if (o.stats_window < 16) throw InputError("loop stats_window must be >= 16");
+  if (o.timer_slack_ns < 0) throw InputError("loop timer_slack_ns must be >= 0 (0: keep), got " + std::to_string(o.timer_slack_ns));
+  if (o.cpu_dma_latency_us < -1 || o.cpu_dma_latency_us > 10'000'000)
+    throw InputError("loop cpu_dma_latency_us must be -1 (none) or in 0..10000000, got " +
+                     std::to_string(o.cpu_dma_latency_us));
   period_ns_ = static_cast<int64_t>(1e9 / o.rate_hz + 0.5);
   lateness_.assign(o.stats_window, 0);
   compute_.assign(o.stats_window, 0);
@@ -58,6 +64,19 @@ PeriodicLoop::PeriodicLoop(const LoopOptions& o) {
     throw InputError("loop CPU " + std::to_string(o.cpu) + ": no such CPU (this machine has CPUs 0.." +
                      std::to_string(cpus - 1) + ")");
   if (o.lock_memory && mlockall(MCL_CURRENT | MCL_FUTURE) != 0) refuse("mlockall", errno, "CAP_IPC_LOCK", "memlock");
+  if (o.timer_slack_ns > 0 && prctl(PR_SET_TIMERSLACK, static_cast<unsigned long>(o.timer_slack_ns), 0, 0, 0) != 0)
+    refuse("timer slack " + std::to_string(o.timer_slack_ns) + " ns", errno, "CAP_SYS_NICE", "rtprio");
+  if (o.cpu_dma_latency_us >= 0) {
+    // The kernel keeps the request while the file stays open (Documentation/power/pm_qos_interface).
+    dma_latency_fd_ = open("/dev/cpu_dma_latency", O_RDWR | O_CLOEXEC);
+    const auto value = static_cast<int32_t>(o.cpu_dma_latency_us);
+    if (dma_latency_fd_ < 0 || write(dma_latency_fd_, &value, sizeof value) != static_cast<ssize_t>(sizeof value)) {
+      refuse("CPU wake-up latency request of " + std::to_string(o.cpu_dma_latency_us) + " us (/dev/cpu_dma_latency)",
+             errno, "root access to /dev/cpu_dma_latency", "nothing (the file is root's)");
+      if (dma_latency_fd_ >= 0) close(dma_latency_fd_);
+      dma_latency_fd_ = -1;
+    }
+  }
   if (o.cpu >= 0) {
     cpu_set_t set;
     CPU_ZERO(&set);
@@ -71,6 +90,10 @@ PeriodicLoop::PeriodicLoop(const LoopOptions& o) {
     if (sched_setscheduler(0, SCHED_FIFO, &sp) != 0)
       refuse("SCHED_FIFO priority " + std::to_string(o.priority), errno, "CAP_SYS_NICE", "rtprio");
   }
+}
+
+PeriodicLoop::~PeriodicLoop() {
+  if (dma_latency_fd_ >= 0) close(dma_latency_fd_);
 }
 
 void PeriodicLoop::start(int64_t first_deadline_ns) {

@@ -1,7 +1,11 @@
 #include "plexus/runtime/periodic_loop.hpp"
 
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <sys/prctl.h>
+#include <unistd.h>
 
+#include <cstdint>
 #include <vector>
 
 #include "plexus/base/clock.hpp"
@@ -59,6 +63,39 @@ TEST(PeriodicLoop, OverrunsAreCounted) {
 TEST(PeriodicLoop, RejectsBadOptions) {
   EXPECT_THROW(PeriodicLoop({.rate_hz = 0}), InputError);
   EXPECT_THROW(PeriodicLoop({.rate_hz = 100, .priority = 120}), InputError);
+  EXPECT_THROW(PeriodicLoop({.rate_hz = 100, .timer_slack_ns = -1}), InputError);
+  EXPECT_THROW(PeriodicLoop({.rate_hz = 100, .cpu_dma_latency_us = -2}), InputError);
+}
+
+// The loop thread's timer slack is 1 ns by default (Linux's 50 us default delays every
+// wake-up of a loop without SCHED_FIFO), and 0 keeps what the thread had.
+TEST(PeriodicLoop, SetsTheThreadTimerSlack) {
+  ASSERT_EQ(prctl(PR_SET_TIMERSLACK, 50'000UL, 0, 0, 0), 0);
+  {
+    PeriodicLoop keep({.rate_hz = 100, .timer_slack_ns = 0});
+    EXPECT_EQ(prctl(PR_GET_TIMERSLACK, 0, 0, 0, 0), 50'000);
+  }
+  PeriodicLoop loop({.rate_hz = 100});
+  EXPECT_EQ(prctl(PR_GET_TIMERSLACK, 0, 0, 0, 0), 1);
+  prctl(PR_SET_TIMERSLACK, 0UL, 0, 0, 0);  // back to the default for the other tests
+}
+
+// A CPU wake-up latency request is held while the loop exists: /dev/cpu_dma_latency then
+// reads at most the requested value (the kernel keeps the smallest request of all). Without
+// the permission (not root) the request is refused with a warning and the loop runs.
+TEST(PeriodicLoop, HoldsACpuWakeUpLatencyRequest) {
+  PeriodicLoop loop({.rate_hz = 100, .cpu_dma_latency_us = 7});
+  if (!loop.refused().empty()) {
+    EXPECT_NE(loop.refused().find("cpu_dma_latency"), std::string::npos) << loop.refused();
+    GTEST_SKIP() << "no permission for /dev/cpu_dma_latency: " << loop.refused();
+  }
+  const int fd = open("/dev/cpu_dma_latency", O_RDONLY);
+  ASSERT_GE(fd, 0);
+  int32_t value = -1;
+  ASSERT_EQ(read(fd, &value, sizeof value), static_cast<ssize_t>(sizeof value));
+  close(fd);
+  EXPECT_GE(value, 0);
+  EXPECT_LE(value, 7);
 }
 
 }  // namespace

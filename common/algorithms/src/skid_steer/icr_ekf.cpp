@@ -87,28 +87,32 @@ void IcrEkf::reset_to_prior(const IcrParams& icr, const Eigen::Vector3d& sd) {
   ekf_.reset(x, p);
 }
 
-IcrVector IcrEkf::transition(const IcrVector& x, const TrackSpeeds& u, double dt) {
-  const BodyVelocity b = icr_body_velocity({x(3), x(4), x(5)}, u);
-  const Pose2 p = icr_euler_step({x(0), x(1), x(2)}, b, dt);
-  IcrVector out = x;
-  out(0) = p.x;
-  out(1) = p.y;
-  out(2) = p.theta;
-  return out;
-}
+namespace {
 
-IcrMatrix IcrEkf::jacobian(const IcrVector& x, const TrackSpeeds& u, double dt) {
+/// The Euler transition's pose rows and the top three rows of its Jacobian (header
+/// comment), from one evaluation of the body velocities and one sincos; the ICR rows of F
+/// are the identity (random walks).
+struct IcrStep {
+  Eigen::Vector3d pose;
+  Eigen::Matrix<double, 3, 6> F_top;
+};
+
+IcrStep icr_step(const IcrVector& x, const TrackSpeeds& u, double dt) {
   const double yl = x(3), yr = x(4), xg = x(5);
   const double d = yl - yr;
   const double dv = u.v_r - u.v_l;
   const double d2 = d * d;
   const BodyVelocity b = icr_body_velocity({yl, yr, xg}, u);
   const double c = std::cos(x(2)), s = std::sin(x(2));
+  IcrStep out;
+  out.pose = {x(0) + dt * (b.v_x * c - b.v_y * s), x(1) + dt * (b.v_x * s + b.v_y * c), x(2) + dt * b.omega};  // eq. (7)
   // Partial derivatives of the body velocities (header comment).
   const double dvx_dyl = -yr * dv / d2, dvx_dyr = yl * dv / d2;
   const double dvy_dyl = -xg * dv / d2, dvy_dyr = xg * dv / d2, dvy_dxg = dv / d;
   const double dw_dyl = -dv / d2, dw_dyr = dv / d2;
-  IcrMatrix F = IcrMatrix::Identity();
+  auto& F = out.F_top;
+  F.setZero();
+  F(0, 0) = F(1, 1) = F(2, 2) = 1.0;
   F(0, 2) = -dt * (b.v_x * s + b.v_y * c);
   F(1, 2) = dt * (b.v_x * c - b.v_y * s);
   F(0, 3) = dt * (c * dvx_dyl - s * dvy_dyl);
@@ -119,6 +123,20 @@ IcrMatrix IcrEkf::jacobian(const IcrVector& x, const TrackSpeeds& u, double dt) 
   F(1, 5) = dt * (c * dvy_dxg);
   F(2, 3) = dt * dw_dyl;
   F(2, 4) = dt * dw_dyr;
+  return out;
+}
+
+}  // namespace
+
+IcrVector IcrEkf::transition(const IcrVector& x, const TrackSpeeds& u, double dt) {
+  IcrVector out = x;
+  out.head<3>() = icr_step(x, u, dt).pose;
+  return out;
+}
+
+IcrMatrix IcrEkf::jacobian(const IcrVector& x, const TrackSpeeds& u, double dt) {
+  IcrMatrix F = IcrMatrix::Identity();
+  F.topRows<3>() = icr_step(x, u, dt).F_top;
   return F;
 }
 
@@ -132,8 +150,12 @@ bool IcrEkf::predict(const TrackSpeeds& u, double dt) {
   double scale = 1.0;  // L Q L^T with L = I * sqrt(scale)
   if (params_.process_noise == ProcessNoiseModel::kDtSquared) scale = dt * dt;  // eq. (12): L = I dt
   if (params_.process_noise == ProcessNoiseModel::kContinuous) scale = dt;
-  const IcrMatrix Q = (scale * params_.q_diag).asDiagonal();
-  if (!ekf_.predict(transition(x, u, dt), jacobian(x, u, dt), Q)) {
+  const IcrVector q = scale * params_.q_diag;  // Q is diagonal
+  const IcrStep step = icr_step(x, u, dt);
+  IcrVector x_pred = x;
+  x_pred.head<3>() = step.pose;
+  // The ICR rows of F are the identity: the shared EKF's structured prediction (ekf.hpp).
+  if (!ekf_.predict_partial<3>(x_pred, step.F_top, q)) {
     ++rejected_;
     return false;
   }
@@ -141,12 +163,9 @@ bool IcrEkf::predict(const TrackSpeeds& u, double dt) {
 }
 
 bool IcrEkf::update(const Pose2& z) {
-  Eigen::Matrix<double, 3, 6> H = Eigen::Matrix<double, 3, 6>::Zero();
-  H.leftCols<3>().setIdentity();  // eq. (14)
-  const IcrVector& x = ekf_.state();
+  // H = [I3 0] (eq. (14)): the pose is measured directly, the EKF's structured update.
   const Eigen::Vector3d zm(z.x, z.y, z.theta);
-  const Eigen::Vector3d zp(x(0), x(1), x(2));
-  if (!ekf_.update<3>(zm, zp, H, r_, AngularMask{1u << 2})) return false;  // heading residual wrapped
+  if (!ekf_.update_segment<3>(zm, 0, r_, AngularMask{1u << 2})) return false;  // heading residual wrapped
   if (params_.enforce_track_sides) {
     const double m = params_.track_side_margin;
     if (ekf_.state()(3) < m || ekf_.state()(4) > -m) {

@@ -72,6 +72,55 @@ TEST(Ekf, EqualsKalmanFilterOnLinearGaussianProblem) {
 }
 
 // The Joseph form keeps P SPD with a near-perfect sensor where the short form loses it.
+// The structured forms (random-walk rows of F, a direct measurement of consecutive states)
+// compute what the general forms compute, in both covariance update forms; only rounding
+// may differ.
+TEST(Ekf, StructuredPredictAndUpdateEqualTheGeneralForms) {
+  plexus::algorithms::Rng rng(11);
+  for (const bool joseph : {true, false}) {
+    for (int trial = 0; trial < 20; ++trial) {
+      using Vec6 = Eigen::Matrix<double, 6, 1>;
+      using Mat6 = Eigen::Matrix<double, 6, 6>;
+      ExtendedKalmanFilter<6> general({.angular_states = 1u << 2, .joseph_form = joseph});
+      ExtendedKalmanFilter<6> structured({.angular_states = 1u << 2, .joseph_form = joseph});
+      const Vec6 x0 = random_matrix<6, 1>(rng);
+      const Mat6 P0 = random_spd<6>(rng, 0.3);
+      general.reset(x0, P0);
+      structured.reset(x0, P0);
+      const Eigen::Matrix<double, 3, 6> F_top = random_matrix<3, 6>(rng, 0.5);
+      Mat6 F = Mat6::Identity();
+      F.topRows<3>() = F_top;
+      const Vec6 x_pred = random_matrix<6, 1>(rng);
+      const Vec6 q = random_matrix<6, 1>(rng).cwiseAbs() * 0.01;
+      const Mat6 Q = q.asDiagonal();
+      ASSERT_TRUE(general.predict(x_pred, F, Q));
+      ASSERT_TRUE(structured.predict_partial<3>(x_pred, F_top, q));
+      EXPECT_LT(rel(structured.state(), general.state()), 1e-14);
+      EXPECT_LT(rel(structured.covariance(), general.covariance()), 1e-12) << "prediction, trial " << trial;
+      ExtendedKalmanFilter<6> full_q = structured;
+      full_q.reset(x0, P0);
+      ASSERT_TRUE(full_q.predict_partial<3>(x_pred, F_top, Q));
+      EXPECT_LT(rel(full_q.covariance(), general.covariance()), 1e-12);
+
+      // z measures states 1..3 (the heading, state 2, is an angle).
+      const Vec3 z = random_matrix<3, 1>(rng) + Vec3(0, 3.0, 0);  // a residual that needs wrapping
+      const Mat3 R = random_spd<3>(rng, 0.1);
+      Eigen::Matrix<double, 3, 6> H = Eigen::Matrix<double, 3, 6>::Zero();
+      H.middleCols<3>(1).setIdentity();
+      const Vec3 z_pred = general.state().segment<3>(1);
+      ASSERT_TRUE(general.update<3>(z, z_pred, H, R, 1u << 1));
+      ASSERT_TRUE(structured.update_segment<3>(z, 1, R, 1u << 1));
+      EXPECT_LT(rel(structured.state(), general.state()), 1e-12) << "update, trial " << trial;
+      EXPECT_LT(rel(structured.covariance(), general.covariance()), 1e-12) << "update, trial " << trial;
+      EXPECT_NEAR(structured.last_nis(), general.last_nis(), 1e-10 * (1.0 + general.last_nis()));
+      EXPECT_NEAR(structured.last_log_det_s(), general.last_log_det_s(), 1e-10);
+    }
+  }
+  ExtendedKalmanFilter<6> ekf;
+  EXPECT_THROW(ekf.update_segment<3>(Vec3::Zero(), 4, Mat3::Identity()), std::invalid_argument);
+  EXPECT_FALSE(ekf.update_segment<3>(Vec3(NAN, 0, 0), 0, Mat3::Identity()));
+}
+
 TEST(Ekf, JosephFormKeepsCovariancePositiveDefinite) {
   ExtendedKalmanFilter<2> ekf;
   ekf.reset(Vec2(0, 0), Vec2(1e6, 1e-6).asDiagonal());

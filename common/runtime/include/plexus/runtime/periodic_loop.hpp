@@ -4,9 +4,11 @@
 //   PeriodicLoop loop({.rate_hz = 1000, .priority = 80});
 //   loop.run([&](const PeriodicLoop::Tick& t) { ...; return keep_going; });
 //
-// Real-time settings (SCHED_FIFO priority, CPU affinity, mlockall) are optional. When the
-// system refuses one, the loop logs a clear warning saying what was refused and why, and
-// runs anyway. The steady-state loop does not allocate: statistics go into ring buffers
+// Real-time settings (SCHED_FIFO priority, CPU affinity, mlockall, a CPU wake-up latency
+// request) are optional. When the system refuses one, the loop logs a clear warning saying
+// what was refused and why, and runs anyway. The thread's timer slack is set to 1 ns by
+// default (Linux's default of 50 us delays every wake-up of a loop without SCHED_FIFO by up
+// to that much; docs/performance.md has the measurements). The steady-state loop does not allocate: statistics go into ring buffers
 // sized at construction.
 #pragma once
 
@@ -22,6 +24,12 @@ struct LoopOptions {
   int priority = 0;           ///< SCHED_FIFO priority 1..99; 0 keeps normal scheduling
   int cpu = -1;               ///< pin the calling thread to this CPU; -1: no affinity
   bool lock_memory = false;   ///< mlockall(MCL_CURRENT | MCL_FUTURE)
+  /// PR_SET_TIMERSLACK of the calling thread, ns (>= 1); 0 keeps the thread's slack.
+  int64_t timer_slack_ns = 1;
+  /// >= 0: hold a PM QoS request on /dev/cpu_dma_latency for this CPU wake-up latency (us)
+  /// while the loop exists, as cyclictest does (0 keeps idle CPUs out of their halt states,
+  /// at the price of idle CPUs polling); -1: no request.
+  int cpu_dma_latency_us = -1;
   std::size_t stats_window = 16384;  ///< samples kept for percentiles (most recent)
 };
 
@@ -43,6 +51,9 @@ class PeriodicLoop {
   /// Validates the options (InputError for out-of-range values) and applies the real-time
   /// settings to the calling thread, warning for each one the system refuses.
   explicit PeriodicLoop(const LoopOptions& options);
+  ~PeriodicLoop();
+  PeriodicLoop(const PeriodicLoop&) = delete;
+  PeriodicLoop& operator=(const PeriodicLoop&) = delete;
 
   /// Calls body(tick) once per period until it returns false or stop() is called. The first
   /// deadline is `first_deadline_ns` (CLOCK_MONOTONIC) if given, else one period from now;
@@ -81,6 +92,7 @@ class PeriodicLoop {
   uint64_t overruns_ = 0;
   std::atomic<bool> stop_{false};
   std::string refused_;
+  int dma_latency_fd_ = -1;  ///< the PM QoS request lives as long as this file is open
 
   // Ring buffers of the most recent samples (ns), and all-time maxima.
   std::vector<int64_t> lateness_, compute_, scratch_;

@@ -8,6 +8,9 @@ namespace plexus::algorithms {
 
 /// Wraps an angle to (-pi, pi].
 inline double wrap_angle(double a) {
+  // Already in range: returned as is, which is exactly what remainder() gives there (the
+  // quotient rounds to 0), without its cost.
+  if (a > -std::numbers::pi && a <= std::numbers::pi) return a;
   a = std::remainder(a, 2.0 * std::numbers::pi);  // [-pi, pi]
   return a <= -std::numbers::pi ? a + 2.0 * std::numbers::pi : a;
 }

@@ -99,6 +99,65 @@ class ExtendedKalmanFilter {
     return true;
   }
 
+  /// Predict with a Jacobian that is the identity below its first K rows (states K..N-1 are
+  /// random walks, f_i(x) = x_i): F = [F_top; 0 I]. Same covariance as predict(x_pred, F, Q)
+  /// up to rounding, with about a third of the products:
+  ///   T = F_top P (K x N);  P-[0:K, 0:K] = T F_top^T,  P-[0:K, K:] = T[:, K:],
+  ///   P-[K:, 0:K] = T[:, K:]^T,  P-[K:, K:] = P[K:, K:];  then + Q.
+  template <int K>
+  bool predict_partial(const State& x_pred, const Eigen::Matrix<double, K, N>& F_top, const Covariance& Q) {
+    if (!Q.allFinite()) return false;
+    if (!propagate_partial<K>(x_pred, F_top)) return false;
+    P_ += Q;
+    guard();
+    return true;
+  }
+  /// The same with a diagonal Q = diag(q).
+  template <int K>
+  bool predict_partial(const State& x_pred, const Eigen::Matrix<double, K, N>& F_top, const State& q) {
+    if (!q.allFinite()) return false;
+    if (!propagate_partial<K>(x_pred, F_top)) return false;
+    P_.diagonal() += q;
+    guard();
+    return true;
+  }
+
+  /// Update with a direct measurement of M consecutive states: h(x) = x[first .. first+M-1],
+  /// H = [0 I 0]. The same update as update(z, z_pred, H, R) (Joseph form or not, as the
+  /// options say) up to rounding, with H's structure used instead of multiplied by:
+  ///   P H^T = P[:, first..],  S = P[first.., first..] + R,  K = P H^T S^-1,
+  ///   Joseph: A P = P - K P[first.., :],  A P A^T + K R K^T = A P + (K R - (A P)[:, first..]) K^T.
+  template <int M>
+  bool update_segment(const Measurement<M>& z, int first, const Eigen::Matrix<double, M, M>& R,
+                      AngularMask angular_measurements = 0) {
+    static_assert(M > 0 && M <= N, "1..N measured states");
+    if (first < 0 || first + M > N) throw std::invalid_argument("ekf: measured states outside the state");
+    const Measurement<M> z_pred = x_.template segment<M>(first);
+    if (!z.allFinite() || !R.allFinite()) return false;
+    const Measurement<M> r = masked_difference(z, z_pred, angular_measurements);
+    const Eigen::Matrix<double, N, M> PHt = P_.template middleCols<M>(first);
+    Eigen::Matrix<double, M, M> S = P_.template block<M, M>(first, first) + R;
+    S = 0.5 * (S + S.transpose()).eval();
+    const SmallLdlt<M> ldlt(S);
+    if (!ldlt.ok) return false;
+    const Eigen::Matrix<double, M, M> S_inv = ldlt.inverse();
+    const Eigen::Matrix<double, N, M> K = PHt * S_inv;
+    x_ += K * r;
+    wrap_masked(x_, options_.angular_states);
+    if (options_.joseph_form) {
+      // A P A^T + K R K^T = A P - (A P) H^T K^T + K R K^T = A P + (K R - (A P) H^T) K^T
+      const Covariance AP = P_ - K * P_.template middleRows<M>(first);
+      const Eigen::Matrix<double, N, M> B = K * R - AP.template middleCols<M>(first);
+      P_ = AP + B * K.transpose();
+    } else {
+      P_ = P_ - K * PHt.transpose();
+    }
+    guard();
+    last_nis_ = r.dot(S_inv * r);
+    last_log_det_s_ = ldlt.log_det();
+    return true;
+  }
+
   /// Update with a measurement callable: `h(const State& x, MeasurementJacobian<M>& H)
   /// -> Measurement<M>` returns h(x) and writes H = dh/dx(x). Returns false (estimate
   /// unchanged) if anything is not finite or S = H P H^T + R is not positive definite.
@@ -151,6 +210,25 @@ class ExtendedKalmanFilter {
  private:
   void guard() {
     if (keep_symmetric_pd<N>(P_, options_.min_eigenvalue)) ++guard_repairs_;
+  }
+
+  /// x = x_pred, P = F P F^T for F = [F_top; 0 I] (predict_partial), without Q or the guard.
+  template <int K>
+  bool propagate_partial(const State& x_pred, const Eigen::Matrix<double, K, N>& F_top) {
+    static_assert(K > 0 && K <= N, "F_top has 1..N rows");
+    if (!x_pred.allFinite() || !F_top.allFinite()) return false;
+    x_ = x_pred;
+    wrap_masked(x_, options_.angular_states);
+    const Eigen::Matrix<double, K, N> T = (F_top * P_).eval();
+    Covariance P;
+    P.template topLeftCorner<K, K>().noalias() = T * F_top.transpose();
+    if constexpr (K < N) {
+      P.template topRightCorner<K, N - K>() = T.template rightCols<N - K>();
+      P.template bottomLeftCorner<N - K, K>() = T.template rightCols<N - K>().transpose();
+      P.template bottomRightCorner<N - K, N - K>() = P_.template bottomRightCorner<N - K, N - K>();
+    }
+    P_ = P;
+    return true;
   }
 
   EkfOptions options_;

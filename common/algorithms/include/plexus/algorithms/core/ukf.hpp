@@ -100,14 +100,15 @@ class UkfEstimate {
                Eigen::Matrix<double, M, M> Pzz) {
     Pzz = 0.5 * (Pzz + Pzz.transpose()).eval();
     if (!r.allFinite() || !Pxz.allFinite() || !Pzz.allFinite()) return false;
-    Eigen::LLT<Eigen::Matrix<double, M, M>> llt(Pzz);
-    if (llt.info() != Eigen::Success) return false;
-    const Eigen::Matrix<double, N, M> K = llt.solve(Pxz.transpose()).transpose();
+    const SmallLdlt<M> ldlt(Pzz);  // covariance.hpp
+    if (!ldlt.ok) return false;
+    const Eigen::Matrix<double, M, M> Pzz_inv = ldlt.inverse();
+    const Eigen::Matrix<double, N, M> K = Pxz * Pzz_inv;
     x_ += K * r;
     wrap_masked(x_, options_.angular_states);
     P_ -= K * Pzz * K.transpose();
     guard();
-    last_nis_ = r.dot(llt.solve(r));
+    last_nis_ = r.dot(Pzz_inv * r);
     return true;
   }
 

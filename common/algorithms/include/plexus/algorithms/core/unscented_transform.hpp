@@ -79,9 +79,9 @@ struct UnscentedWeights {
 template <int L>
 bool covariance_square_root(const Eigen::Matrix<double, L, L>& P, Eigen::Matrix<double, L, L>& S) {
   if (!P.allFinite()) return false;
-  Eigen::LLT<Eigen::Matrix<double, L, L>> llt(P);
-  if (llt.info() == Eigen::Success) {
-    S = llt.matrixL();
+  const SmallCholesky<L> chol(P);  // covariance.hpp
+  if (chol.ok) {
+    S = chol.L;
     return true;
   }
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, L, L>> es(P);
