@@ -7,7 +7,7 @@ set -euo pipefail
 cd "$(dirname "$0")/../.."
 start=$(date +%s)
 cmake -S . -B build-fuzz -DPLEXUS_FUZZ=ON
-cmake --build build-fuzz -j2
+cmake --build build-fuzz -j2 --target fuzz  # the fuzz targets and what they link, nothing else
 echo "fuzz build: $(( $(date +%s) - start )) s"
 start=$(date +%s)
 ctest --test-dir build-fuzz --output-on-failure -j2 -L fuzz
