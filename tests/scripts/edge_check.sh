@@ -4,7 +4,9 @@
 # Issue 12, edge checks end to end: a standalone localisation_observer is fed, on each of
 # its input topics, samples with a NaN, an infinite or an out-of-range field by another
 # process (on the other vendor). Every one must be refused and counted (heartbeat
-# rejected_inputs, closing summary), and the estimate it publishes must stay finite.
+# rejected_inputs, closing summary), and the estimate it publishes must stay finite. A
+# refused sample is no measurement, so the observer is blind (publishes nothing) until valid
+# positions follow the bad ones: the estimate is read then (docs/distributed.md).
 set -u
 bin=$1 params=$2 domain=$3 vendor=$4 pub_vendor=$5
 "$bin/localisation_observer" --robot r1 --params "$params/heading_observer.yaml" --dds "$vendor" --domain "$domain" \
@@ -20,12 +22,18 @@ publish r1/position PositionMeasurement y 2e6 5     # 2000 km: beyond a position
 publish r1/cmd UnicycleCommand omega inf 5
 expected=15
 beat=$("$bin/plexus" topic echo health/localisation_observer_localisation_observer --dds "$vendor" --domain "$domain" \
-       --count 1 --wait 5 --json 2>&1)
+       --count 1 --wait 5 --duration 10 --json 2>&1)
 echo "heartbeat: $beat"
 echo "$beat" | grep -q "\"rejected_inputs\":$expected[,}]" || { echo "FAIL: expected rejected_inputs $expected"; fail=1; }
-heading=$("$bin/plexus" topic echo r1/heading --dds "$vendor" --domain "$domain" --count 1 --wait 5 --json 2>&1)
+# Valid positions after the bad ones: the estimate computed from them must be finite.
+"$bin/plexus" topic echo r1/heading --dds "$vendor" --domain "$domain" --count 1 --wait 10 --duration 20 --json \
+  > /tmp/edge_check_heading_$domain.json 2>&1 &
+echo_pid=$!
+publish r1/position PositionMeasurement x 1.5 100
+wait $echo_pid
+heading=$(cat /tmp/edge_check_heading_$domain.json)
 echo "estimate: $heading"
-echo "$heading" | grep -Eq '"heading":-?[0-9]' || { echo "FAIL: the estimate is not finite"; fail=1; }
+echo "$heading" | grep -Eq '"heading":-?[0-9]' || { echo "FAIL: no finite estimate after valid positions"; fail=1; }
 echo "$heading" | grep -Eq '"direction":\[-?[0-9][^],]*,-?[0-9]' || { echo "FAIL: the observer state is not finite"; fail=1; }
 kill -TERM $pid
 wait $pid
