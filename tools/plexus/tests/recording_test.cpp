@@ -149,7 +149,7 @@ TEST(RecordedQos, WhatPlexusRecordWritesIsReplayedAsRecorded) {
 // escaped as a JSON exception (exit 1, "failed"); each is now one line naming file, topic, key.
 TEST(RecordedQos, ValuesNoVendorAppliesAreRefused) {
   const std::string at = "f: topic 'r1/position': recorded QoS: ";
-  const std::string hint = " (replay with --qos PROFILE to publish with a profile instead)";
+  const std::string hint = " (replay with --profile PROFILE to publish with a profile instead)";
   EXPECT_EQ(error_of([&] { recorded_qos(topic("[1]"), "f", 1); }), at + "not a JSON object");
   EXPECT_EQ(error_of([&] { recorded_qos(topic("{\"depth\""), "f", 1); }), at + "not a JSON object");
   EXPECT_EQ(error_of([&] { recorded_qos(topic(R"({"history":"keep_last","depth":1e300})"), "f", 1); }),
