@@ -210,6 +210,8 @@ struct Loader {
       sc.input_deadline_periods = clock.optional<double>("input_deadline_periods", sc.input_deadline_periods);
       if (!(sc.input_deadline_periods >= 1.0 && sc.input_deadline_periods <= 1000.0))
         clock.fail("input_deadline_periods", "must be in [1, 1000]");
+      sc.blind_after_s = clock.optional<double>("blind_after_s", sc.blind_after_s);
+      if (!(sc.blind_after_s >= 0.0 && sc.blind_after_s <= 60.0)) clock.fail("blind_after_s", "must be in [0, 60] s");
       clock.reject_unknown();
     }
     if (top.has("dds")) {

@@ -45,6 +45,20 @@ TEST(ScenarioLoader, LoadsTheValidScenario) {
   EXPECT_TRUE(sc.resolved["robots"]["r1"]["sensors"]["gps"]["seed"]);
 }
 
+TEST(ScenarioLoader, RealtimeClockSettings) {
+  const Scenario sc =
+      load_scenario_text(with("seed: 5\n", "seed: 5\nclock: {mode: realtime, input_deadline_periods: 4, blind_after_s: 0.5}\n"),
+                         "t.yaml");
+  EXPECT_EQ(sc.clock, ClockMode::realtime);
+  EXPECT_EQ(sc.input_deadline_periods, 4.0);
+  EXPECT_EQ(sc.blind_after_s, 0.5);
+  EXPECT_EQ(load_scenario_text(kValid, "t.yaml").blind_after_s, 0.3);  // the documented default
+  const std::string e = load_error(with("seed: 5\n", "seed: 5\nclock: {mode: realtime, blind_after_s: -1}\n"));
+  EXPECT_NE(e.find("clock.blind_after_s"), std::string::npos) << e;
+  EXPECT_NE(e.find("must be in [0, 60] s"), std::string::npos) << e;
+  EXPECT_EQ(e.find('\n'), std::string::npos) << e;  // one line
+}
+
 TEST(ScenarioLoader, BuiltInScenarioLoads) {
   const Scenario sc = load_scenario(std::string(PLEXUS_SOURCE_DIR) + "/deploy/scenarios/unicycle_circle.yaml");
   EXPECT_EQ(sc.name, "unicycle_circle");

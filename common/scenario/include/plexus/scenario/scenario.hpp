@@ -112,6 +112,10 @@ struct Scenario {
   ClockMode clock = ClockMode::lockstep;
   /// Realtime mode: an input older than this many periods of its producer is stale.
   double input_deadline_periods = 3.0;
+  /// Realtime mode: an estimator none of whose measurements has been fresh for this long
+  /// is blind (publishes nothing, so the controllers behind it hold); shorter gaps it
+  /// bridges with its prediction. 0: blind at the first tick with no fresh measurement.
+  double blind_after_s = 0.3;
   std::string dds_vendor;  ///< "fast" | "cyclone" | "" (launch default)
   int dds_domain = 0;
   std::vector<std::string> hosts;                   ///< in document order; the first runs the clock
