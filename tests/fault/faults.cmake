@@ -22,3 +22,23 @@ add_test(NAME fault.launcher_killed_leaves_no_orphan
          COMMAND bash ${FAULT_DIR}/launcher_kill.sh $<TARGET_FILE:plexus>
                  ${PROJECT_SOURCE_DIR}/deploy/scenarios/wmr_output_feedback_rfid.yaml ${FAULT_RUNS}/launcher_kill 127)
 set_tests_properties(fault.launcher_killed_leaves_no_orphan PROPERTIES LABELS "fault;multiprocess" TIMEOUT 120 RUN_SERIAL TRUE)
+
+# Network faults (netns_pair.sh: two network namespaces joined by a veth pair, nftables rules
+# inside them; created and removed by each test). The unicycle RFID loop split across the
+# pair: plant and reference on h1, observer and controller on h2. Root needed (skipped
+# otherwise: exit 77).
+set(FAULT_RFID ${PROJECT_SOURCE_DIR}/deploy/scenarios/wmr_output_feedback_rfid.yaml)
+# Lockstep over 10 % and 30 % loss both ways gives the sim's digest (fast also runs mixed at 10 %).
+foreach(variant "fast;120;fast;mixed" "cyclone;121;cyclone")
+  list(POP_FRONT variant vendor domain)
+  add_test(NAME fault.loss_lockstep_${vendor}
+           COMMAND bash ${FAULT_DIR}/loss_lockstep.sh $<TARGET_FILE:plexus> ${FAULT_RFID} ${FAULT_RUNS}/loss_lockstep_${vendor} ${domain} ${variant})
+  set_tests_properties(fault.loss_lockstep_${vendor} PROPERTIES LABELS "fault;netns" TIMEOUT 300 RUN_SERIAL TRUE SKIP_RETURN_CODE 77)
+endforeach()
+# A 2 s partition: lockstep within and beyond --timeout, then realtime (both sides hold, tracking resumes).
+foreach(variant "fast;128" "cyclone;129")
+  list(POP_FRONT variant vendor domain)
+  add_test(NAME fault.partition_${vendor}
+           COMMAND bash ${FAULT_DIR}/partition.sh $<TARGET_FILE:plexus> ${FAULT_RFID} ${FAULT_RUNS}/partition_${vendor} ${domain} ${vendor})
+  set_tests_properties(fault.partition_${vendor} PROPERTIES LABELS "fault;netns;realtime;slow" TIMEOUT 300 RUN_SERIAL TRUE SKIP_RETURN_CODE 77)
+endforeach()
