@@ -42,3 +42,11 @@ foreach(variant "fast;128" "cyclone;129")
            COMMAND bash ${FAULT_DIR}/partition.sh $<TARGET_FILE:plexus> ${FAULT_RFID} ${FAULT_RUNS}/partition_${vendor} ${domain} ${vendor})
   set_tests_properties(fault.partition_${vendor} PROPERTIES LABELS "fault;netns;realtime;slow" TIMEOUT 300 RUN_SERIAL TRUE SKIP_RETURN_CODE 77)
 endforeach()
+
+# Soak (soak.sh): the main job's 13 processes in realtime for 2 minutes, /proc of every child
+# sampled every 5 s; after a 30 s warm-up no child may open more file descriptors or grow its
+# RSS by more than 1 % or 256 kB. The 30-minute form is run by hand (docs/distributed.md, Faults).
+add_test(NAME fault.soak_fast
+         COMMAND bash ${FAULT_DIR}/soak.sh $<TARGET_FILE:plexus> ${PROJECT_SOURCE_DIR}/deploy/scenarios/four_robots.yaml
+                 ${FAULT_RUNS}/soak_fast 122 fast 120 30)
+set_tests_properties(fault.soak_fast PROPERTIES LABELS "fault;realtime;multiprocess;slow" TIMEOUT 400 RUN_SERIAL TRUE)

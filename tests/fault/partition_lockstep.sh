@@ -14,7 +14,8 @@
 #     step (`lockstep: no sample of 'r1/heading' from 'observer' for step N within 1 s`, or
 #     the same for 'r1/cmd' from 'controller'), and the far host's share ends too.
 # Each case checks that the partition was real (its rules dropped packets) and fell inside
-# the run (the launcher still ran when the link came back).
+# the run: it starts once a listener in h2 has seen 200 of the clock's steps, and the
+# launcher still runs when the link comes back.
 set -u
 PLEXUS=$1 SCENARIO=$2 out=$3 domain=$4 vendor=$5
 if [ "$(id -u)" -ne 0 ]; then echo "needs root for network namespaces"; exit 77; fi
@@ -33,7 +34,7 @@ sim=$("$PLEXUS" sim "$SCENARIO" --json --quiet --out "$out/sim" "${RFID_STEADY[@
 sim_digest=$(echo "$sim" | jq -r .digest)
 [ -n "$sim_digest" ] && [ "$sim_digest" != null ] || { echo "FAIL: plexus sim gave no digest"; tail -3 "$out/sim.log"; exit 1; }
 fail=0
-echo "case | vendor | timeout | partition | packets dropped | h1 exit | h2 exit | digest (sim $sim_digest) / message | result"
+echo "case | vendor | timeout | partition (from step) | packets dropped | h1 exit | h2 exit | digest (sim $sim_digest) / message | result"
 for c in short long; do
   run=$out/$c
   targs=()
@@ -41,8 +42,22 @@ for c in short long; do
   pair_reset || { echo "FAIL: cannot set the rules"; exit 1; }
   split_start "$run" "$domain" "${HOSTS[@]}" "${PLACE[@]}" "${RFID_STEADY[@]}" --dds "$vendor" "${targs[@]}"
   problems=()
-  if ! pair_wait_busy 200 60; then
-    problems+=("the run never exchanged samples over the pair (no partition made)")
+  # Mid-run: a listener in h2 prints the clock's steps as they cross the pair (best effort,
+  # so it slows nothing); the cut comes once it has seen 200 of them, and the last step seen
+  # before the cut is reported.
+  steps=$run/clock_steps.csv
+  ip netns exec "$NS2" "$PLEXUS" topic echo lockstep/clock --dds "$vendor" --domain "$domain" --interface 10.231.0.2 \
+    --peers 10.231.0.1,10.231.0.2 --csv --profile sensor --duration 60 > "$steps" 2> "$run/clock_steps.log" &
+  listener=$!
+  seen=0
+  for ((i = 0; i < 600 && seen < 200; ++i)); do
+    sleep 0.1
+    seen=$(($(wc -l < "$steps") - 1))
+    kill -0 "$SPLIT_H1" 2>/dev/null || break
+  done
+  cut_step=$(awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) if ($i == "step_index") c = i; next } { s = $c } END { print s + 0 }' "$steps")
+  if [ "$seen" -lt 200 ]; then
+    problems+=("the h2 listener saw $seen clock steps within 60 s (no partition made)")
   else
     pair_partition || { echo "FAIL: cannot set the partition rules"; exit 1; }
     t_cut=$(date +%s.%N)
@@ -55,6 +70,8 @@ for c in short long; do
     [ "$dropped" -gt 0 ] || problems+=("the partition dropped nothing")
   fi
   split_wait
+  kill "$listener" 2>/dev/null
+  wait "$listener" 2>/dev/null
   digest=$(json_of "$run/h1.json" .digest)
   if [ $c = short ]; then
     shown=$digest
@@ -78,6 +95,6 @@ for c in short long; do
     grep -v "gain condition" "$run/h1.log" | tail -4
     tail -3 "$run/h2.log"
   fi
-  echo "$c | $vendor | ${targs[*]:-default (10 s)} | ${part:-none} | ${dropped:-0} | $SPLIT_RC | $SPLIT_H2_RC | $shown | $verdict"
+  echo "$c | $vendor | ${targs[*]:-default (10 s)} | ${part:-none} (${cut_step:-?} of 6000) | ${dropped:-0} | $SPLIT_RC | $SPLIT_H2_RC | $shown | $verdict"
 done
 exit $fail
