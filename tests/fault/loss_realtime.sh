@@ -17,6 +17,9 @@
 # link losing 30 % of its packets takes seconds, during which the plant runs on the zero
 # command while the reference moves on, and the 0.11 gains take longer than the run to
 # close the gap that leaves (docs/distributed.md, Faults).
+# Status: not registered in ctest. The 10 % run misses the 2x bound on both vendors
+# (2026-11-24: Cyclone 22 mm against 2.1 mm; Fast DDS 0.40 m against 0.043 m on a loaded
+# machine); docs/distributed.md, Faults, gives the figures and what is left to find out.
 set -u
 PLEXUS=$1 SCENARIO=$2 out=$3 domain=$4 vendor=$5
 if [ "$(id -u)" -ne 0 ]; then echo "needs root for network namespaces"; exit 77; fi
