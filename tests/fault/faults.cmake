@@ -35,8 +35,15 @@ foreach(variant "fast;120;fast;mixed" "cyclone;121;cyclone")
            COMMAND bash ${FAULT_DIR}/loss_lockstep.sh $<TARGET_FILE:plexus> ${FAULT_RFID} ${FAULT_RUNS}/loss_lockstep_${vendor} ${domain} ${variant})
   set_tests_properties(fault.loss_lockstep_${vendor} PROPERTIES LABELS "fault;netns" TIMEOUT 300 RUN_SERIAL TRUE SKIP_RETURN_CODE 77)
 endforeach()
-# Realtime over 10 % loss (loss_realtime.sh) is not registered: its tracking error misses the
-# issue's 2x bound on both vendors (docs/distributed.md, Faults); run it by hand.
+# Realtime at 0, 10 and 30 % loss, the three runs side by side (each in namespaces of its
+# own, so that they meet the same CPU stalls): the steady tracking error at 10 % within 2x
+# the loss-free one; 30 % reported.
+foreach(variant "fast;123" "cyclone;124")
+  list(POP_FRONT variant vendor domain)
+  add_test(NAME fault.loss_realtime_${vendor}
+           COMMAND bash ${FAULT_DIR}/loss_realtime.sh $<TARGET_FILE:plexus> ${FAULT_RFID} ${FAULT_RUNS}/loss_realtime_${vendor} ${domain} ${vendor})
+  set_tests_properties(fault.loss_realtime_${vendor} PROPERTIES LABELS "fault;netns;realtime;slow" TIMEOUT 400 RUN_SERIAL TRUE SKIP_RETURN_CODE 77)
+endforeach()
 # A 2 s partition: lockstep within and beyond --timeout, then realtime (both sides hold, tracking resumes).
 foreach(variant "fast;128" "cyclone;129")
   list(POP_FRONT variant vendor domain)
