@@ -9,8 +9,8 @@
 #   - open file descriptors: no growth at all (a leak of one socket or file per reconnect
 #     or per recording chunk shows here);
 #   - RSS: growth at most RSS_BOUND_PCT % (default 1, the aim) or RSS_SLACK_KB
-#     (default 256: one allocator arena top-up, as measured in docs/distributed.md, Faults),
-#     whichever is larger.
+#     (default 256: room for one allocator top-up; the growth measured so far is 0,
+#     docs/distributed.md, Faults), whichever is larger.
 # The launcher itself is sampled and reported but not bounded: in realtime it keeps every
 # signal sample it records for the run folder, so its memory grows with the run by design.
 # Also reported from launch.json: per service the loop's deadline misses (overruns), the
