@@ -11,6 +11,9 @@
 #   pair_partition       drop every packet crossing the pair, both directions
 #   pair_heal            remove the loss and partition rules
 #   pair_counters        "dropped N of M" over both ends (what the rules did)
+#   pair_packets         packets that arrived on either end so far
+#   pair_wait_busy R S   wait (up to S s) until the pair carries R packets/s: a run is stepping
+#   pair_partition_dropped  packets the partition rules dropped (read it before pair_heal)
 #   pair_down            kill what still runs in the namespaces, delete them
 # Needs root (network namespaces, nftables): callers exit 77 (skipped) without it.
 
@@ -107,4 +110,42 @@ pair_down() {
   done
   [ -n "${VETH1:-}" ] && ip link del "$VETH1" 2>/dev/null  # created but not yet moved into a namespace
   return 0
+}
+
+# pair_wait_busy RATE SECONDS: waits until the pair carries at least RATE packets/s (counted
+# by the input rules of both ends) over three 0.25 s windows in a row: a run is exchanging
+# its samples, not only discovering (discovery announces at a few packets/s). Returns 1 if
+# that did not happen within SECONDS.
+pair_wait_busy() {
+  local rate=$1 limit=$2 prev now busy=0 i
+  prev=$(pair_packets)
+  for ((i = 0; i < limit * 4; ++i)); do
+    sleep 0.25
+    now=$(pair_packets)
+    if [ $(((now - prev) * 4)) -ge "$rate" ]; then busy=$((busy + 1)); else busy=0; fi
+    prev=$now
+    [ $busy -ge 3 ] && return 0
+  done
+  return 1
+}
+
+# pair_packets: every packet that arrived on either veth end so far.
+pair_packets() {
+  local ns total=0 n
+  for ns in "$NS1" "$NS2"; do
+    n=$(ip netns exec "$ns" nft list chain inet plexus_fault input | sed -n 's/.*iifname.*counter packets \([0-9]*\).*/\1/p' | head -1)
+    total=$((total + ${n:-0}))
+  done
+  echo "$total"
+}
+
+# pair_partition_dropped: packets the partition rules dropped so far, over both ends.
+pair_partition_dropped() {
+  local ns total=0 n
+  for ns in "$NS1" "$NS2"; do
+    for n in $(ip netns exec "$ns" nft list chain inet plexus_fault partition | sed -n 's/.*counter packets \([0-9]*\).*/\1/p'); do
+      total=$((total + n))
+    done
+  done
+  echo "$total"
 }

@@ -29,7 +29,11 @@ split_wait() {
   SPLIT_H1= SPLIT_H2=
 }
 
-json_of() { jq -r "$2 // \"null\"" "$1" 2>/dev/null || echo null; }
+json_of() {  # an empty or missing file (a failed run prints no JSON) gives "null" too
+  local v
+  v=$(jq -r "$2 // \"null\"" "$1" 2>/dev/null)
+  echo "${v:-null}"
+}
 
 # The two hosts' addresses (netns_pair.sh) as the scenario's hosts.
 HOSTS=(--set hosts.h1.address=10.231.0.1 --set hosts.h2.address=10.231.0.2)
