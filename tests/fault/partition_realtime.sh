@@ -10,10 +10,11 @@
 #     r1/cmd (which h1 receives from h2) has a gap of at least 1.5 s that starts after 2 s
 #     of run and ends before the run's last 10 s;
 #   - the far side held: a listener in h2 (`plexus topic echo r1/cmd`) saw the controller
-#     publish only the zero command from 0.1 s after the cut to the heal (at least 95 of the
+#     publish only the zero command from 0.4 s after the cut to the heal (at least 95 of the
 #     2 s partition's 200 ticks), steering commands before the cut and again after the heal;
 #     its heartbeats (which reach h1 again afterwards) count the stale reads (the observer,
-#     without measurements, goes blind, so the controller's input goes stale: hold());
+#     without measurements for clock.blind_after_s = 0.3 s, goes blind, so the controller's
+#     input goes stale: hold());
 #   - the near side held: the plant found r1/cmd stale and applied the zero command, so the
 #     robot stood still (its pose unchanged from one step to the next) within the gap;
 #   - tracking resumed: r1/cmd came back non-zero, and the tracking error |truth - reference|
@@ -73,15 +74,16 @@ end_t=$(awk -F, 'END { print $1 }' "$truth" 2>/dev/null)
 gap=$(awk -v a="${gap_from:-0}" -v b="${gap_to:-0}" 'BEGIN { printf "%.3f", b - a }')
 awk -v g="$gap" -v a="${gap_from:-0}" -v b="${gap_to:-0}" -v e="${end_t:-0}" 'BEGIN { exit !(g >= 1.5 && a >= 2 && b <= e - 10) }' ||
   problems+=("r1/cmd gap ${gap} s from ${gap_from:-?} to ${gap_to:-?} s of ${end_t:-?} s: not a 2 s partition mid-run")
-# The far side held: every r1/cmd the controller published from 0.1 s after the cut (the
-# observer's and then the controller's input deadline, 3 periods each, with margin) to the
-# heal was the zero command, and there were at least half the partition's ticks of them;
+# The far side held: every r1/cmd the controller published from 0.4 s after the cut (the
+# observer's grace before it goes blind, clock.blind_after_s = 0.3 s by default, then the
+# controller's input deadline, 3 periods, with margin) to the heal was the zero command, and
+# there were at least half the partition's ticks of them;
 # before the cut it was steering (non-zero), and after the heal it steered again.
 read -r far_before far_zero far_moving far_after < <(awk -F, -v c="${t_cut:-0}" -v h="${t_heal:-0}" '
     NR == 1 { for (i = 1; i <= NF; ++i) { if ($i == "v") iv = i; if ($i == "omega") iw = i; } next }
     { t = $1 * 1e-9; zero = ($iv == 0 && $iw == 0) }
     t < c && !zero { before++ }
-    t > c + 0.1 && t < h { if (zero) z++; else moving++ }
+    t > c + 0.4 && t < h { if (zero) z++; else moving++ }
     t > h + 1 && !zero { after++ }
     END { print before + 0, z + 0, moving + 0, after + 0 }' "$far" 2>/dev/null)
 [ "${far_before:-0}" -gt 0 ] || problems+=("the far-side listener saw no steering command before the partition")
