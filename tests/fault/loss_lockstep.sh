@@ -18,23 +18,14 @@ vendor_list=("$@")
 for v in "${vendor_list[@]}"; do
   case $v in fast|cyclone|mixed) ;; *) echo "loss_lockstep.sh: vendor '$v' is not fast, cyclone or mixed"; exit 2 ;; esac
 done
-if [ "$(id -u)" -ne 0 ]; then echo "needs root for network namespaces"; exit 77; fi
 here=$(cd "$(dirname "$0")" && pwd)
 . "$here/netns_pair.sh"
 . "$here/split_run.sh"
-trap pair_down EXIT
-rm -rf "$out" && mkdir -p "$out"
-pair_up "$$" || { echo "FAIL: cannot create the namespaces"; exit 1; }
-# The RFID case started on its reference (robot at the reference's start, heading and the
-# observer's velocity estimate matching it), 8 s: the same loop as the paper's case, but a
-# run short enough to repeat under 30 % loss.
-RFID_STEADY=(--set robots.r1.plant.y0=-5 --set robots.r1.plant.theta0=3.141592653589793 --set services.observer.z3_0=-0.2
-             --set duration=8 --set metrics.0.from=0 --set metrics.1.from=0)
-PLACE=(--set robots.r1.host=h1 --set services.reference.host=h1 --set services.observer.host=h2
-       --set services.controller.host=h2)
-sim=$("$PLEXUS" sim "$SCENARIO" --json --quiet --out "$out/sim" "${RFID_STEADY[@]}" 2> "$out/sim.log")
-sim_digest=$(echo "$sim" | jq -r .digest)
-[ -n "$sim_digest" ] && [ "$sim_digest" != null ] || { echo "FAIL: plexus sim gave no digest"; tail -3 "$out/sim.log"; exit 1; }
+pair_start "$out"
+# The RFID case started on its reference, 8 s: short enough to repeat under 30 % loss.
+rfid_on_reference 8 0
+sim_digest "$out" "${RFID_STEADY[@]}"
+sim_digest=$SIM_DIGEST
 fail=0
 echo "vendors | loss (each way) | packets dropped | steps/s | digest (sim $sim_digest) | result"
 for vendors in "${vendor_list[@]}"; do

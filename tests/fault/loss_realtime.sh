@@ -23,10 +23,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 . "$here/netns_pair.sh"
 . "$here/split_run.sh"
 rm -rf "$out" && mkdir -p "$out"
-RFID_STEADY=(--set robots.r1.plant.y0=-5 --set robots.r1.plant.theta0=3.141592653589793 --set services.observer.z3_0=-0.2
-             --set duration=80 --set metrics.0.from=20 --set metrics.1.from=20 --set clock.mode=realtime)
-PLACE=(--set robots.r1.host=h1 --set services.reference.host=h1 --set services.observer.host=h2
-       --set services.controller.host=h2)
+rfid_on_reference 80 20 --set clock.mode=realtime
 losses=(0 10 30)
 # One loss case in its own namespaces (a subshell: netns_pair.sh keeps its names in globals).
 run_case() {

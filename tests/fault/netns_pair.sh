@@ -5,6 +5,7 @@
 # rule is created here and removed by `pair_down`, which the caller traps on EXIT; the rules
 # live in the namespaces, so they vanish with them, and the host's own ruleset is never touched.
 #
+#   pair_start OUT       a test's start: root or exit 77, a fresh OUT, `pair_up $$`, `pair_down` on EXIT
 #   pair_up TAG          create ns plxf1_TAG / plxf2_TAG ($NS1, $NS2), the veth pair, the rules
 #   pair_reset           no loss, no partition, the packet counters at zero
 #   pair_loss PERCENT    drop PERCENT % of the packets arriving on each end (both directions)
@@ -16,6 +17,13 @@
 #   pair_partition_dropped  packets the partition rules dropped (read it before pair_heal)
 #   pair_down            kill what still runs in the namespaces, delete them
 # Needs root (network namespaces, nftables): callers exit 77 (skipped) without it.
+
+pair_start() {
+  if [ "$(id -u)" -ne 0 ]; then echo "needs root for network namespaces"; exit 77; fi
+  trap pair_down EXIT
+  rm -rf "$1" && mkdir -p "$1"
+  pair_up "$$" || { echo "FAIL: cannot create the namespaces"; exit 1; }
+}
 
 pair_up() {
   local tag=$1

@@ -18,21 +18,14 @@
 # launcher still runs when the link comes back.
 set -u
 PLEXUS=$1 SCENARIO=$2 out=$3 domain=$4 vendor=$5
-if [ "$(id -u)" -ne 0 ]; then echo "needs root for network namespaces"; exit 77; fi
 here=$(cd "$(dirname "$0")" && pwd)
 . "$here/netns_pair.sh"
 . "$here/split_run.sh"
-trap pair_down EXIT
-rm -rf "$out" && mkdir -p "$out"
-pair_up "$$" || { echo "FAIL: cannot create the namespaces"; exit 1; }
+pair_start "$out"
 # 60 s of the loop (6000 lockstep steps): long enough over the pair for a 2 s pause mid-run.
-RFID_STEADY=(--set robots.r1.plant.y0=-5 --set robots.r1.plant.theta0=3.141592653589793 --set services.observer.z3_0=-0.2
-             --set duration=60 --set metrics.0.from=0 --set metrics.1.from=0)
-PLACE=(--set robots.r1.host=h1 --set services.reference.host=h1 --set services.observer.host=h2
-       --set services.controller.host=h2)
-sim=$("$PLEXUS" sim "$SCENARIO" --json --quiet --out "$out/sim" "${RFID_STEADY[@]}" 2> "$out/sim.log")
-sim_digest=$(echo "$sim" | jq -r .digest)
-[ -n "$sim_digest" ] && [ "$sim_digest" != null ] || { echo "FAIL: plexus sim gave no digest"; tail -3 "$out/sim.log"; exit 1; }
+rfid_on_reference 60 0
+sim_digest "$out" "${RFID_STEADY[@]}"
+sim_digest=$SIM_DIGEST
 fail=0
 echo "case | vendor | timeout | partition (from step) | packets dropped | h1 exit | h2 exit | digest (sim $sim_digest) / message | result"
 for c in short long; do

@@ -23,17 +23,11 @@
 # Figures printed: the gap, the stale reads, the peak and final errors.
 set -u
 PLEXUS=$1 SCENARIO=$2 out=$3 domain=$4 vendor=$5
-if [ "$(id -u)" -ne 0 ]; then echo "needs root for network namespaces"; exit 77; fi
 here=$(cd "$(dirname "$0")" && pwd)
 . "$here/netns_pair.sh"
 . "$here/split_run.sh"
-trap pair_down EXIT
-rm -rf "$out" && mkdir -p "$out"
-pair_up "$$" || { echo "FAIL: cannot create the namespaces"; exit 1; }
-RFID_STEADY=(--set robots.r1.plant.y0=-5 --set robots.r1.plant.theta0=3.141592653589793 --set services.observer.z3_0=-0.2
-             --set duration=40 --set metrics.0.from=0 --set metrics.1.from=0 --set clock.mode=realtime)
-PLACE=(--set robots.r1.host=h1 --set services.reference.host=h1 --set services.observer.host=h2
-       --set services.controller.host=h2)
+pair_start "$out"
+rfid_on_reference 40 0 --set clock.mode=realtime
 run=$out/run
 split_start "$run" "$domain" "${HOSTS[@]}" "${PLACE[@]}" "${RFID_STEADY[@]}" --dds "$vendor"
 problems=()
