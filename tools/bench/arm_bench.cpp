@@ -61,16 +61,27 @@ struct ArmRecord {
   std::vector<double> t;
 };
 
-ArmRecord record_arm(bool robust) {
-  FlexibleJointArmPlant plant({});
-  plant.reset_in_motion(Eigen::Vector2d::Zero(), Eigen::Vector2d::Ones());
+// The paper's or the default (robust) tuning of the EKF and the VDC controller at 5 kHz,
+// as BM_VdcEkfStepOnArm records and replays them.
+FlexibleJointEkfParams arm_ekf_params(bool robust) {
   FlexibleJointEkfParams ep = robust ? FlexibleJointEkfParams::robust() : FlexibleJointEkfParams::paper();
   ep.step = 2e-4;
-  FlexibleJointEkf ekf(ep);
+  return ep;
+}
+
+VdcParams arm_vdc_params(bool robust) {
   VdcParams vp = VdcParams::paper_2dof();
   vp.step = 2e-4;
   if (robust) vp.disturbance_compensation = VdcParams::kRobustDisturbanceCompensation;
-  VdcController vdc(vp);
+  return vp;
+}
+
+ArmRecord record_arm(bool robust) {
+  FlexibleJointArmPlant plant({});
+  plant.reset_in_motion(Eigen::Vector2d::Zero(), Eigen::Vector2d::Ones());
+  const FlexibleJointEkfParams ep = arm_ekf_params(robust);
+  FlexibleJointEkf ekf(ep);
+  VdcController vdc(arm_vdc_params(robust));
   ArmSineReference ref(ArmSineReferenceParams::paper(2));
   ArmReferenceSample r;
   Eigen::VectorXd u = Eigen::VectorXd::Zero(2), y(4), x0(8);
@@ -97,13 +108,9 @@ ArmRecord record_arm(bool robust) {
 void BM_VdcEkfStepOnArm(benchmark::State& state) {
   const bool robust = state.range(0) == 1;
   const ArmRecord rec = record_arm(robust);
-  FlexibleJointEkfParams ep = robust ? FlexibleJointEkfParams::robust() : FlexibleJointEkfParams::paper();
-  ep.step = 2e-4;
+  const FlexibleJointEkfParams ep = arm_ekf_params(robust);
   FlexibleJointEkf ekf(ep);
-  VdcParams vp = VdcParams::paper_2dof();
-  vp.step = 2e-4;
-  if (robust) vp.disturbance_compensation = VdcParams::kRobustDisturbanceCompensation;
-  VdcController vdc(vp);
+  VdcController vdc(arm_vdc_params(robust));
   ArmSineReference ref(ArmSineReferenceParams::paper(2));
   ArmReferenceSample r;
   ArmChainDynamics dyn(ep.model);
