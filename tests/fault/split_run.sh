@@ -8,8 +8,7 @@
 #   split_wait                       wait for both; sets SPLIT_RC and SPLIT_H2_RC
 #   json_of FILE FILTER              a value from a JSON file (jq), "null" if absent
 #   rfid_on_reference DURATION FROM [ARGS...]
-#                                    RFID_STEADY: the --set flags of the RFID case started on
-#                                    its reference, DURATION s, metrics from FROM s, and ARGS
+#                                    RFID_STEADY (tests/scripts/rfid_on_reference.sh)
 #   sim_digest OUT ARGS...           `plexus sim` of SCENARIO with ARGS (run folder OUT/sim):
 #                                    sets SIM_DIGEST, or fails the test
 #
@@ -46,13 +45,7 @@ HOSTS=(--set hosts.h1.address=10.231.0.1 --set hosts.h2.address=10.231.0.2)
 PLACE=(--set robots.r1.host=h1 --set services.reference.host=h1 --set services.observer.host=h2
        --set services.controller.host=h2)
 
-# The RFID case started on its reference (robot at the reference's start, heading and the
-# observer's velocity estimate matching it): the same loop as the paper's case, but a run
-# short enough to repeat, that measures the steady loop from its start.
-rfid_on_reference() {
-  RFID_STEADY=(--set robots.r1.plant.y0=-5 --set robots.r1.plant.theta0=3.141592653589793 --set services.observer.z3_0=-0.2
-               --set duration="$1" --set metrics.0.from="$2" --set metrics.1.from="$2" "${@:3}")
-}
+. "$(dirname "${BASH_SOURCE[0]}")/../scripts/rfid_on_reference.sh"
 
 sim_digest() {
   local out=$1 sim

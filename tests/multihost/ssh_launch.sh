@@ -4,7 +4,7 @@
 # per namespace, keys and known_hosts in OUT/ssh, ssh -F). Cases:
 #   lockstep2, lockstep3   closed loop over 2 / 3 hosts: the digest of `plexus sim`, remote
 #                          log lines relayed into the run folder, nothing left in any namespace
-#   realtime_rfid          paper 000's RFID case in realtime over 3 hosts: its bounds
+#   realtime_rfid          paper 000's RFID case in realtime over 3 hosts: its steady bounds
 #   teardown               Ctrl-C mid-run (realtime, 3 hosts): everything stops, nothing left
 #   session_dies           the ssh session of h2 killed mid-run: h2's share stops, the run
 #                          ends with an error naming h2, nothing left anywhere
@@ -108,10 +108,13 @@ lockstep2|lockstep3)
   wait_all_stopped "the run" 10 || fail "processes left after the run"
   ;;
 realtime_rfid)
-  # Paper 000 section 6.3.2 in realtime (101 s, the bounds' window starts at 100 s): the plant
-  # on h1, the observer on h2, the reference and the controller on h3. Not --quiet: the status
-  # line (every 10 s off a terminal) must show each host's processes.
-  QUIET= launch "$rfid" --json --set clock.mode=realtime --set duration=101 --set robots.r1.host=h1 \
+  # Paper 000 section 6.3.2 in realtime, the robot started on its reference: the paper's
+  # steady bounds over [20, 45] s (tests/scripts/rfid_on_reference.sh): the plant on h1, the
+  # observer on h2, the reference and the controller on h3. Not --quiet: the status line
+  # (every 10 s off a terminal) must show each host's processes.
+  . "$root/tests/scripts/rfid_on_reference.sh"
+  rfid_on_reference 45 20
+  QUIET= launch "$rfid" --json --set clock.mode=realtime "${RFID_STEADY[@]}" --set robots.r1.host=h1 \
     --set services.observer.host=h2 --set services.reference.host=h3 --set services.controller.host=h3
   rc=$?
   cat "$out/launch.out"

@@ -405,7 +405,9 @@ int run_launch(LaunchOptions o) {
       all.erase(std::remove_if(all.begin(), all.end(), is_external), all.end());
       std::map<std::string, int64_t> host_offsets;  // corrects cross-host latencies (remote_share.hpp)
       for (const auto& h : remote_hosts) host_offsets[h] = remotes->offset(h).offset_ns;
-      r = run_realtime(sc, *participant, profiles, all, 30.0, fault, console, g_stop, host_offsets);
+      // Readiness (inputs matched) is awaited for half the services' own wait for the start
+      // signal (--timeout), so that they always get it before they give up.
+      r = run_realtime(sc, *participant, profiles, all, 30.0, o.timeout / 2, fault, console, g_stop, host_offsets);
       startup_s = static_cast<double>(r.all_running_ns - command_ns) * 1e-9;
       run_active = false;
       console.clear();

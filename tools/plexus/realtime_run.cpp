@@ -6,9 +6,12 @@
 #include <string>
 #include <thread>
 
+#include <spdlog/spdlog.h>
+
 #include "plexus/base/clock.hpp"
 #include "plexus/distributed/lockstep.hpp"
 #include "plexus/distributed/realtime.hpp"
+#include "plexus/scenario/evaluation.hpp"
 #include "plexus/scenario/step_executor.hpp"
 
 namespace plexus::cli {
@@ -24,8 +27,8 @@ double percentile_us(std::vector<int64_t> v, double q) {
 }  // namespace
 
 RealtimeResult run_realtime(scenario::Scenario& sc, rt::Participant& participant, const rt::QosProfiles& profiles,
-                            const std::vector<Process>& procs, double start_timeout_s, FaultClock& fault,
-                            StatusConsole& console, const std::atomic<bool>& stop,
+                            const std::vector<Process>& procs, double start_timeout_s, double ready_wait_s,
+                            FaultClock& fault, StatusConsole& console, const std::atomic<bool>& stop,
                             const std::map<std::string, int64_t>& host_clock_offset_ns) {
   RealtimeResult res;
   scenario::StepExecutor wiring(sc, std::vector<bool>(sc.components.size(), false));
@@ -75,15 +78,32 @@ RealtimeResult run_realtime(scenario::Scenario& sc, rt::Participant& participant
       pid_of[i] = last[i].pid();
     }
   };
+  // Every process reports first (start_timeout_s). Then the run starts when every process
+  // is ready: a service waiting for the start reports CONFIGURING until each of its inputs
+  // from other processes has matched a writer (distributed/realtime.cpp), which on a lossy
+  // link takes seconds; a loop started before would hold its safe output until then. Past
+  // ready_wait_s the run starts anyway, and says which processes were still matching.
+  const auto ready = [&](std::size_t i) { return seen[i] && last[i].state() != msg::SERVICE_CONFIGURING; };
   const int64_t give_up = monotonic_ns() + static_cast<int64_t>(start_timeout_s * 1e9);
-  while (std::find(seen.begin(), seen.end(), false) != seen.end()) {
+  int64_t ready_by = 0;  // set once every process has reported
+  for (;;) {
     drain_beats();
-    if (stop || monotonic_ns() > give_up) {
-      std::string missing;
-      for (std::size_t i = 0; i < seen.size(); ++i)
-        if (!seen[i]) missing += (missing.empty() ? "" : ", ") + procs[i].service();
-      throw distributed::LockstepError("realtime: no heartbeat from " + missing);
+    std::string silent, matching;
+    for (std::size_t i = 0; i < procs.size(); ++i) {
+      if (!seen[i]) silent += (silent.empty() ? "" : ", ") + procs[i].service();
+      else if (!ready(i)) matching += (matching.empty() ? "" : ", ") + procs[i].service();
     }
+    const int64_t now = monotonic_ns();
+    if (silent.empty() && ready_by == 0) ready_by = now + static_cast<int64_t>(ready_wait_s * 1e9);
+    if (silent.empty() && matching.empty()) break;
+    if (silent.empty() && now > ready_by) {
+      spdlog::warn("realtime: starting with inputs not yet matched to their writers after {} s: {} (they hold "
+                   "their safe output until the inputs arrive)",
+                   scenario::format_number(ready_wait_s), matching);
+      break;
+    }
+    if (stop || (!silent.empty() && now > give_up))
+      throw distributed::LockstepError("realtime: no heartbeat from " + silent);
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
   res.all_running_ns = monotonic_ns();

@@ -36,15 +36,18 @@ struct FaultClock {
   std::atomic<int64_t> respawned_ns{0};  ///< monotonic time the killed process was started again (0: not yet)
 };
 
-/// Waits (up to start_timeout_s) for a heartbeat from every process in `procs`, publishes the
-/// start signal, then records until the duration has passed, every host is draining, or
-/// `stop`. Throws distributed::LockstepError when a process never reports.
+/// Waits (up to start_timeout_s) for a heartbeat from every process in `procs`, then (up to
+/// ready_wait_s more) until none reports CONFIGURING, i.e. every input of every process has
+/// matched a writer of its producer; past that wait it starts anyway, with a warning naming
+/// the processes still matching (their loops hold until their inputs arrive). Then it
+/// publishes the start signal and records until the duration has passed, every host is
+/// draining, or `stop`. Throws distributed::LockstepError when a process never reports.
 /// `host_clock_offset_ns`: each other host's clock minus this one's (plexus launch over ssh);
 /// the sensor-to-command latency of a robot on such a host is corrected by it (the sample's
 /// origin time is that host's clock, the arrival this one's), and says so in its record.
 RealtimeResult run_realtime(scenario::Scenario& sc, rt::Participant& participant, const rt::QosProfiles& profiles,
-                            const std::vector<Process>& procs, double start_timeout_s, FaultClock& fault,
-                            StatusConsole& console, const std::atomic<bool>& stop,
+                            const std::vector<Process>& procs, double start_timeout_s, double ready_wait_s,
+                            FaultClock& fault, StatusConsole& console, const std::atomic<bool>& stop,
                             const std::map<std::string, int64_t>& host_clock_offset_ns = {});
 
 }  // namespace plexus::cli

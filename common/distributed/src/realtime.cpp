@@ -177,6 +177,13 @@ struct RealtimeHost::Impl {
     hb = heartbeat_of(opt.service);
   }
 
+  /// True when every input read from another process has at least one matched writer.
+  bool inputs_matched() const {
+    for (const auto& r : remote)
+      if (r && r->sub.matched_count() == 0) return false;
+    return true;
+  }
+
   void drain(std::size_t signal) {
     RemoteLatest& r = *remote[signal];
     while (const void* m = r.sub.take()) {
@@ -219,6 +226,7 @@ RealtimeReport RealtimeHost::run(const std::atomic<bool>& stop) {
   msg::ClockStep go;
   go.sim_time_ns(0);  // alone: the grid starts now
   int64_t next_hb = 0;
+  bool was_ready = false;
   if (m.opt.wait_for_start)
     spdlog::info("{}: waiting up to {} s for the start signal of plexus launch", m.opt.service,
                  scenario::format_number(m.opt.start_timeout_s));
@@ -229,9 +237,15 @@ RealtimeReport RealtimeHost::run(const std::atomic<bool>& stop) {
       throw InputError(m.opt.service + ": no start signal from plexus launch within " +
                        scenario::format_number(m.opt.start_timeout_s) +
                        " s (--start-signal waits for a launcher; without it the service starts at once)");
-    if (now >= next_hb) {
-      m.publish_heartbeat(msg::SERVICE_WAITING, {});
+    // Ready (WAITING) only once every input from another process has a matched writer: the
+    // launcher starts the run when every process is ready, so that no loop starts on inputs
+    // whose discovery is still under way (on a lossy link, seconds) and holds its safe output
+    // meanwhile. Until then CONFIGURING; the change is announced at once.
+    const bool ready = m.inputs_matched();
+    if (now >= next_hb || ready != was_ready) {
+      m.publish_heartbeat(ready ? msg::SERVICE_WAITING : msg::SERVICE_CONFIGURING, {});
       next_hb = now + 200'000'000;
+      was_ready = ready;
     }
     m.start.wait(50'000'000);
   }
