@@ -30,6 +30,13 @@ foreach(source simulator serial udp replay)
     # as on an idle machine, rates 99-100 Hz (15 s each; replay 29 s: it records 12 s of
     # the simulator first).
     set_tests_properties(bridges.contract_${source}_${vendor} PROPERTIES LABELS "bridges;realtime" TIMEOUT 120)
+    # Except over a pty: there a stall of the bridge's reads fills the pty's buffer (about
+    # half a second of frames), the emulator's write blocks and its loop drops the ticks it
+    # missed, so samples are removed, not moved. Seen three times beside the heaviest tests
+    # (the main job, the soak, report.html's browser): gaps of 0.5-1.4 s, 87 Hz. RUN_SERIAL.
+    if(source STREQUAL "serial")
+      set_tests_properties(bridges.contract_${source}_${vendor} PROPERTIES RUN_SERIAL TRUE)
+    endif()
     math(EXPR BRIDGES_DOMAIN "${BRIDGES_DOMAIN} + 1")
   endforeach()
 endforeach()
@@ -49,4 +56,7 @@ foreach(variant "simulator;cyclone;138" "serial;fast;139")
            COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/balancing_contract.sh ${source} ${vendor} ${domain}
                    ${CMAKE_BINARY_DIR}/test-runs/bridges/balancing_contract_${source}_${vendor} $<TARGET_FILE_DIR:contract_probe>)
   set_tests_properties(bridges.balancing_contract_${source}_${vendor} PROPERTIES LABELS "bridges;realtime" TIMEOUT 60)
+  if(source STREQUAL "serial")  # a pty: as bridges.contract_serial_*
+    set_tests_properties(bridges.balancing_contract_${source}_${vendor} PROPERTIES RUN_SERIAL TRUE)
+  endif()
 endforeach()
