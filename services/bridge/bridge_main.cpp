@@ -17,6 +17,7 @@
 #include <cstdio>
 
 #include "bridge.hpp"
+#include "plexus/base/teardown_deadline.hpp"
 #include "plexus/link/serial_port.hpp"
 #include "plexus/link/udp_socket.hpp"
 #include "plexus/base/input_error.hpp"
@@ -143,7 +144,8 @@ int main(int argc, char** argv) {
     nlohmann::ordered_json j{{"service", po.name}, {"run_s", r.run_s}, {"commands_forwarded", r.commands_forwarded},
                              {"commands_refused", r.commands_refused}, {"link", link_json(r.link)}};
     std::printf("%s\n", j.dump().c_str());
-    return 0;
+    std::fflush(stdout);
+    return exit_within(0, kTeardownDeadlineS, name);  // armed before the bridge and participant go
   } catch (const InputError& e) {
     std::fprintf(stderr, "%s: error: %s\n", name.c_str(), e.what());
     return kExitBadInput;

@@ -15,6 +15,7 @@
 #include <thread>
 #include <vector>
 
+#include "plexus/base/teardown_deadline.hpp"
 #include "plexus/base/clock.hpp"
 #include "plexus/base/input_error.hpp"
 #include "plexus/base/logging.hpp"
@@ -171,7 +172,8 @@ int main(int argc, char** argv) {
     const auto profiles = rt::QosProfiles::load(qos_file.empty() ? rt::default_qos_file() : qos_file);
     const auto& qos = profiles.get(profile);
     auto participant = rt::Participant::create(po);
-    return role == "echo" ? run_echo(*participant, qos, duration) : run_source(*participant, qos, rate, count, timeout);
+    const int rc = role == "echo" ? run_echo(*participant, qos, duration) : run_source(*participant, qos, rate, count, timeout);
+    return exit_within(rc, kTeardownDeadlineS, "demo_node");
   } catch (const InputError& e) {
     std::fprintf(stderr, "demo_node: error: %s\n", e.what());
     return kExitBadInput;

@@ -23,6 +23,7 @@
 #include <csignal>
 #include <cstdio>
 
+#include "plexus/base/teardown_deadline.hpp"
 #include "plexus/base/input_error.hpp"
 #include "plexus/base/logging.hpp"
 #include "plexus/base/yaml_reader.hpp"
@@ -151,12 +152,12 @@ int main(int argc, char** argv) {
                    "{} overruns, {} blind estimator steps",
                    r.ticks, r.holds, r.stale_inputs, r.late_inputs, r.rejected_inputs, r.loop.jitter_p99_us, r.loop.overruns,
                    r.blind_steps);
-      return 0;
+      return exit_within(0, kTeardownDeadlineS, kName);  // armed before the participant is deleted
     }
     distributed::LockstepHost host(sc, hosted, *participant, profiles.get(profile), {.timeout_s = timeout});
     const int64_t steps = host.run(g_stop);
     spdlog::info("ran {} steps", steps);
-    return 0;
+    return exit_within(0, kTeardownDeadlineS, kName);
   } catch (const InputError& e) {
     std::fprintf(stderr, "%s: error: %s\n", kName, e.what());
     return kExitBadInput;

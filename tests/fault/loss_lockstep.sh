@@ -42,7 +42,7 @@ for vendors in "${vendor_list[@]}"; do
     targs=()
     [ "$loss" -ge 30 ] && targs=(--timeout 30)
     split_start "$run" "$domain" "${HOSTS[@]}" "${PLACE[@]}" "${RFID_STEADY[@]}" "${vargs[@]}" "${targs[@]}"
-    split_wait
+    split_wait 120
     dropped=$(pair_counters)
     digest=$(json_of "$run/h1.json" .digest)
     rate=$(json_of "$run/h1.json" '.steps_per_s | floor')

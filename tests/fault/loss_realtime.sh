@@ -42,7 +42,7 @@ run_case() {
   pair_up "${$}l$loss" || { echo "FAIL: cannot create the namespaces for $loss %"; exit 1; }
   pair_loss "$loss" || { echo "FAIL: cannot set the $loss % loss rules"; exit 1; }
   split_start "$out/loss_$loss" "$domain" "${HOSTS[@]}" "${PLACE[@]}" "${RFID_STEADY[@]}" --dds "$vendor"
-  split_wait
+  split_wait 150
   pair_counters > "$out/loss_$loss.dropped"
   echo "$SPLIT_RC $SPLIT_H2_RC" > "$out/loss_$loss.rc"
 }

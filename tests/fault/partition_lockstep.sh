@@ -62,7 +62,7 @@ for c in short long; do
     part=$(awk -v a="$t_cut" -v b="$t_heal" 'BEGIN { printf "%.2f s", b - a }')
     [ "$dropped" -gt 0 ] || problems+=("the partition dropped nothing")
   fi
-  split_wait
+  split_wait 120
   kill "$listener" 2>/dev/null
   wait "$listener" 2>/dev/null
   digest=$(json_of "$run/h1.json" .digest)

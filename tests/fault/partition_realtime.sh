@@ -52,7 +52,7 @@ if pair_wait_busy 100 60; then
 else
   problems+=("the run never exchanged samples over the pair (no partition made)")
 fi
-split_wait
+split_wait 120
 j=$run/launch/launch.json
 sig=$run/launch/signals
 [ -s "$j" ] || { echo "FAIL: no launch.json (h1 exit $SPLIT_RC, h2 exit $SPLIT_H2_RC)"; tail -5 "$run/h1.log"; tail -3 "$run/h2.log"; exit 1; }

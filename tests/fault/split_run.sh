@@ -5,7 +5,11 @@
 #   split_start OUT DOMAIN ARGS...   start both launchers; h1's stdout (--json) goes to
 #                                    OUT/h1.json, its stderr to OUT/h1.log, the run folder
 #                                    is OUT/launch; h2's output goes to OUT/h2.log
-#   split_wait                       wait for both; sets SPLIT_RC and SPLIT_H2_RC
+#   split_wait [SECONDS]             wait for both (up to SECONDS, default 300); sets SPLIT_RC
+#                                    and SPLIT_H2_RC. A launcher still running then has hung:
+#                                    what runs in the namespaces is described (threads and
+#                                    where they wait; their stacks if gdb is installed), killed,
+#                                    and its code is 124, as timeout(1) says
 #   json_of FILE FILTER              a value from a JSON file (jq), "null" if absent
 #   rfid_on_reference DURATION FROM [ARGS...]
 #                                    RFID_STEADY (tests/scripts/rfid_on_reference.sh)
@@ -27,11 +31,37 @@ split_start() {
 }
 
 split_wait() {
+  local limit=${1:-300} waited=0 hung=0 pid
+  while [ "$waited" -lt "$limit" ]; do
+    kill -0 "$SPLIT_H1" 2>/dev/null || kill -0 "$SPLIT_H2" 2>/dev/null || break
+    sleep 1
+    waited=$((waited + 1))
+  done
+  if kill -0 "$SPLIT_H1" 2>/dev/null || kill -0 "$SPLIT_H2" 2>/dev/null; then
+    hung=1
+    echo "HUNG: a launcher still runs $limit s after the start; what runs in the namespaces:"
+    split_describe
+    for pid in $(ip netns pids "$NS1" 2>/dev/null) $(ip netns pids "$NS2" 2>/dev/null); do kill -9 "$pid" 2>/dev/null; done
+  fi
   wait "$SPLIT_H1"
   SPLIT_RC=$?
   wait "$SPLIT_H2"
   SPLIT_H2_RC=$?
+  [ "$hung" = 1 ] && { SPLIT_RC=124 SPLIT_H2_RC=124; }
   SPLIT_H1= SPLIT_H2=
+}
+
+# Each process in the namespaces: its command, its threads by name and what they wait in
+# (wchan), and with gdb, each thread's innermost frames.
+split_describe() {
+  local pid t
+  for pid in $(ip netns pids "$NS1" 2>/dev/null) $(ip netns pids "$NS2" 2>/dev/null); do
+    echo "  $(ps -o pid=,stat=,etimes=,args= -p "$pid" | cut -c1-160)"
+    for t in /proc/"$pid"/task/*; do echo "$(cat "$t/comm" 2>/dev/null)@$(cat "$t/wchan" 2>/dev/null)"; done |
+      sort | uniq -c | awk '{ printf "    %s x%s\n", $2, $1 }'
+    command -v gdb > /dev/null &&
+      timeout 20 gdb -p "$pid" -batch -ex "thread apply all bt 6" 2>/dev/null | grep -E "^(Thread|#)" | head -60 | sed 's/^/    /'
+  done
 }
 
 json_of() {  # an empty or missing file (a failed run prints no JSON) gives "null" too

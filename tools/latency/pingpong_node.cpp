@@ -12,6 +12,7 @@
 #include <thread>
 
 #include "pingpong_common.hpp"
+#include "plexus/base/teardown_deadline.hpp"
 #include "plexus/base/input_error.hpp"
 #include "plexus/base/logging.hpp"
 #include "plexus/runtime/participant.hpp"
@@ -97,7 +98,8 @@ int main(int argc, char** argv) {
     const auto profiles = rt::QosProfiles::load(qos_file.empty() ? rt::default_qos_file() : qos_file);
     const auto& qos = profiles.get(profile);
     auto participant = rt::Participant::create(po);
-    return o.role == "pong" ? run_pong(*participant, qos, o) : run_ping(*participant, qos, o);
+    const int rc = o.role == "pong" ? run_pong(*participant, qos, o) : run_ping(*participant, qos, o);
+    return exit_within(rc, kTeardownDeadlineS, "pingpong_node");
   } catch (const InputError& e) {
     std::fprintf(stderr, "pingpong_node: error: %s\n", e.what());
     return kExitBadInput;

@@ -34,6 +34,7 @@
 #include "plexus/base/clock.hpp"
 #include "plexus/base/input_error.hpp"
 #include "plexus/base/logging.hpp"
+#include "plexus/base/teardown_deadline.hpp"
 #include "plexus/distributed/lockstep.hpp"
 #include "plexus/scenario/evaluation.hpp"
 #include "plexus/scenario/progress_bar.hpp"
@@ -206,6 +207,10 @@ int run_launch(LaunchOptions o) {
   po.network = net;
   po.security = security.launcher;
   auto participant = rt::Participant::create(po);
+  // Every return from here on arms the teardown bound (plexus/base/teardown_deadline.hpp)
+  // before the participant is deleted: a vendor's shutdown that hangs cannot keep the
+  // launcher, and what waits for it, from ending.
+  const auto done = [](int rc) { return exit_within(rc, kTeardownDeadlineS, "plexus launch"); };
 
   const bool realtime = sc.clock == scenario::ClockMode::realtime;
   // Fault injection: --kill PROCESS@SECONDS sends SIGKILL to a process that long after the start.
@@ -350,12 +355,12 @@ int run_launch(LaunchOptions o) {
     const std::string why = !lost.empty() ? lost : died.empty() ? what : died;
     scenario::mark_run_folder(run_dir, "failed: " + why);
     std::fprintf(stderr, "plexus launch: %s\n", why.c_str());
-    return 1;
+    return done(1);
   };
   const int64_t launched_ns = monotonic_ns();
   auto interrupted = [&] {
     stop_all();
-    return interrupted_run("plexus launch", g_signal, run_dir, static_cast<double>(monotonic_ns() - launched_ns) * 1e-9);
+    return done(interrupted_run("plexus launch", g_signal, run_dir, static_cast<double>(monotonic_ns() - launched_ns) * 1e-9));
   };
   auto host_lost = [&] { return remotes && !remotes->failure().empty(); };
   // launch.json and the summary: how long the start and the stop took, and each host's clock.
@@ -393,10 +398,10 @@ int run_launch(LaunchOptions o) {
     scenario::mark_run_folder(run_dir, "complete");
     if (session && !session->ended().empty()) {
       std::fprintf(stderr, "plexus launch --host %s: stopped: %s\n", o.host.c_str(), session->ended().c_str());
-      return 0;
+      return done(0);
     }
     if (!o.quiet) std::fprintf(stderr, "plexus launch --host %s: %zu processes done\n", o.host.c_str(), procs.size());
-    return 0;
+    return done(0);
   }
   if (realtime) {
     RealtimeResult r;
@@ -453,9 +458,9 @@ int run_launch(LaunchOptions o) {
     if (!died.empty()) {
       scenario::mark_run_folder(run_dir, "failed: " + died);  // recorded, but not a complete run
       std::fprintf(stderr, "plexus launch: %s\n", died.c_str());
-      return 1;
+      return done(1);
     }
-    return rc;
+    return done(rc);
   }
   std::map<std::string, double> producer_offset_us;  // lockstep responses: per producer on another host
   try {
@@ -530,7 +535,7 @@ int run_launch(LaunchOptions o) {
   add_hosts(summary);
   const int rc = finish_run(sc, log, wall, run_dir, o.json, o.quiet, summary);
   if (o.report) print_report(run_dir, o.json);
-  return rc;
+  return done(rc);
 }
 
 }  // namespace
