@@ -17,11 +17,11 @@
 #include <cstdio>
 
 #include "bridge.hpp"
-#include "plexus/base/teardown_deadline.hpp"
 #include "plexus/link/serial_port.hpp"
 #include "plexus/link/udp_socket.hpp"
 #include "plexus/base/input_error.hpp"
 #include "plexus/base/logging.hpp"
+#include "plexus/base/teardown_deadline.hpp"
 #include "plexus/scenario/overrides.hpp"
 #include "services/service_main/service_dds_options.hpp"
 #include "services/common/standalone_scenario.hpp"

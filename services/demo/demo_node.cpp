@@ -15,10 +15,10 @@
 #include <thread>
 #include <vector>
 
-#include "plexus/base/teardown_deadline.hpp"
 #include "plexus/base/clock.hpp"
 #include "plexus/base/input_error.hpp"
 #include "plexus/base/logging.hpp"
+#include "plexus/base/teardown_deadline.hpp"
 #include "plexus/runtime/participant.hpp"
 #include "plexus/runtime/periodic_loop.hpp"
 

@@ -1,6 +1,6 @@
-// The one main() of every plexus service executable (plant_simulator, localisation_observer,
+// The body of every plexus service executable (plant_simulator, localisation_observer,
 // motion_controller, terrain_classifier, icr_estimator, attitude_filter, joint_controller,
-// component_host): it builds the components this process hosts, and only those, from its
+// component_host; each one's main() is service_entry.cpp, which names it): it builds the components this process hosts, and only those, from its
 // own parameters, then runs them on DDS in realtime (the default) or lockstep.
 //
 // On its own, from its parameters (a service is a program a stranger can deploy):
@@ -23,9 +23,9 @@
 #include <csignal>
 #include <cstdio>
 
-#include "plexus/base/teardown_deadline.hpp"
 #include "plexus/base/input_error.hpp"
 #include "plexus/base/logging.hpp"
+#include "plexus/base/teardown_deadline.hpp"
 #include "plexus/base/yaml_reader.hpp"
 #include "plexus/distributed/lockstep.hpp"
 #include "plexus/distributed/realtime.hpp"
@@ -33,6 +33,7 @@
 #include "plexus/scenario/overrides.hpp"
 #include "services/service_main/service_dds_options.hpp"
 #include "services/service_main/service_help.hpp"
+#include "services/service_main/service_main.hpp"
 #include "services/common/standalone_scenario.hpp"
 
 namespace {
@@ -40,26 +41,24 @@ namespace {
 std::atomic<bool> g_stop{false};
 void on_signal(int) { g_stop = true; }
 
-constexpr const char* kName = PLEXUS_SERVICE_NAME;
-constexpr bool kPlant = std::string_view(kName) == "plant_simulator";
-
 }  // namespace
 
-int main(int argc, char** argv) {
+int plexus::service::run_service(int argc, char** argv, const std::string& self) {
   using namespace plexus;
-  const std::string about = std::string(kName) +
+  const bool hosts_plant = self == "plant_simulator";
+  const std::string about = self +
                             ": a plexus service over DDS, on its own (--robot, --params, --set) or as part of `plexus "
                             "launch` (--part)";
   CLI::App app{about};
   const auto& catalog = distributed::service_catalog();
   std::vector<std::string_view> hosted_types;
   for (const auto& entry : catalog)
-    if (entry.name == std::string_view(kName)) hosted_types = entry.types;
+    if (entry.name == self) hosted_types = entry.types;
   // What it runs and its topics, built only when help is asked for.
   for (int i = 1; i < argc; ++i)
     if (std::string_view(argv[i]) == "--help" || std::string_view(argv[i]) == "-h")
-      app.footer(scenario::hosted_help(kName, hosted_types, kPlant));
-  app.set_version_flag("--version", std::string(PLEXUS_SERVICE_NAME) + " " + PLEXUS_VERSION);
+      app.footer(scenario::hosted_help(self, hosted_types, hosts_plant));
+  app.set_version_flag("--version", self + " " + PLEXUS_VERSION);
   std::string part_file, profile = "lockstep", log_level = "warn", mode = "realtime";
   scenario::ServiceDdsOptions net;
   int priority = 0, cpu = -1;
@@ -67,17 +66,17 @@ int main(int argc, char** argv) {
   double timeout = 10.0;
   bool start_signal = false;
   scenario::StandaloneSpec alone;
-  alone.program = kName;
-  alone.robot_section = kPlant;
-  alone.name = kName;
+  alone.program = self;
+  alone.robot_section = hosts_plant;
+  alone.name = self;
   if (!hosted_types.empty()) alone.type = std::string(hosted_types.front());
   app.add_option("--part", part_file, "This process's part of a scenario (written by plexus launch)");
   app.add_option("--robot", alone.robot, "Robot whose topics it uses (<robot>/<topic>; default r1)");
   app.add_option("--name", alone.name, "Service name (default: the executable's)");
   app.add_option("--params", alone.params_file,
-                 kPlant ? "YAML robot section: plant and sensors (docs/scenarios.md)"
+                 hosts_plant ? "YAML robot section: plant and sensors (docs/scenarios.md)"
                         : "YAML parameters of the service (the keys of its scenario section, docs/scenarios.md)");
-  if (!kPlant) app.add_option("--type", alone.type, "Component type (default: " + alone.type + ")");
+  if (!hosts_plant) app.add_option("--type", alone.type, "Component type (default: " + alone.type + ")");
   app.add_option("--step", alone.step, "Base step in s (default: 1 / its rate; plant_simulator 0.001)");
   app.add_option("--input-rate", alone.input_rates,
                  "PORT=HZ: the rate an input is produced at, when not its own (staleness: 3 of its periods)");
@@ -101,7 +100,6 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
-    const std::string self = app.get_name().substr(app.get_name().rfind('/') + 1);
     std::fprintf(stderr, "%s: %s (--help lists the options)\n", self.c_str(), e.what());  // one line
     return kExitBadInput;
   }
@@ -109,7 +107,7 @@ int main(int argc, char** argv) {
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
   try {
-    init_logging(kName, "", log_level);
+    init_logging(self, "", log_level);
     const bool realtime = mode == "realtime";
     scenario::Scenario sc;
     if (!part_file.empty()) {
@@ -126,17 +124,17 @@ int main(int argc, char** argv) {
     for (const auto& c : sc.components) {
       hosted_names += (hosted_names.empty() ? "" : ",") + c.component->name();
       const bool physical = c.kind == scenario::ComponentKind::plant || c.kind == scenario::ComponentKind::sensor;
-      if (kPlant != physical && std::string_view(kName) != "component_host")
-        throw InputError(c.where + ": '" + c.component->name() + "' is a " + c.type + ", which " + kName +
+      if (hosts_plant != physical && self != "component_host")
+        throw InputError(c.where + ": '" + c.component->name() + "' is a " + c.type + ", which " + self +
                          " does not host (it runs in " + (physical ? "plant_simulator" : distributed::executable_for(c.type)) + ")");
-      if (!kPlant && std::string_view(kName) != "component_host" && distributed::executable_for(c.type) != kName)
-        throw InputError(c.where + ": '" + c.component->name() + "' is a " + c.type + ", which " + kName +
+      if (!hosts_plant && self != "component_host" && distributed::executable_for(c.type) != self)
+        throw InputError(c.where + ": '" + c.component->name() + "' is a " + c.type + ", which " + self +
                          " does not host (it runs in " + distributed::executable_for(c.type) + ")");
     }
     if (sc.components.empty()) throw InputError(sc.file + ": no component to run");
     const std::vector<bool> hosted(sc.components.size(), true);
 
-    const rt::ParticipantOptions po = net.participant(std::string(kName) + " " + hosted_names, kName);
+    const rt::ParticipantOptions po = net.participant(self + " " + hosted_names, self);
     const auto profiles = net.profiles();
     auto participant = rt::Participant::create(po);
     if (realtime) {
@@ -152,20 +150,20 @@ int main(int argc, char** argv) {
                    "{} overruns, {} blind estimator steps",
                    r.ticks, r.holds, r.stale_inputs, r.late_inputs, r.rejected_inputs, r.loop.jitter_p99_us, r.loop.overruns,
                    r.blind_steps);
-      return exit_within(0, kTeardownDeadlineS, kName);  // armed before the participant is deleted
+      return exit_within(0, kTeardownDeadlineS, self);  // armed before the participant is deleted
     }
     distributed::LockstepHost host(sc, hosted, *participant, profiles.get(profile), {.timeout_s = timeout});
     const int64_t steps = host.run(g_stop);
     spdlog::info("ran {} steps", steps);
-    return exit_within(0, kTeardownDeadlineS, kName);
+    return exit_within(0, kTeardownDeadlineS, self);
   } catch (const InputError& e) {
-    std::fprintf(stderr, "%s: error: %s\n", kName, e.what());
+    std::fprintf(stderr, "%s: error: %s\n", self.c_str(), e.what());
     return kExitBadInput;
   } catch (const distributed::LockstepError& e) {
-    std::fprintf(stderr, "%s: %s\n", kName, e.what());
+    std::fprintf(stderr, "%s: %s\n", self.c_str(), e.what());
     return 1;
   } catch (const std::exception& e) {  // a DDS entity that cannot be created, for one
-    std::fprintf(stderr, "%s: failed: %s\n", kName, e.what());
+    std::fprintf(stderr, "%s: failed: %s\n", self.c_str(), e.what());
     return 1;
   }
 }

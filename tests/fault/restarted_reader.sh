@@ -2,9 +2,10 @@
 # A reader killed with SIGKILL and started again, as `plexus launch` restarts a service, gets
 # the samples of a writer that never stopped (100 Hz, the `state` profile: reliable, volatile,
 # keep_last 1). Five kill/restart rounds; each new reader must take at least 100 samples in
-# 4 s, so it may spend up to 3 s on discovery. On Fast DDS, a reader whose max_samples was
-# its depth could refuse every sample for the rest of its life after such a restart (each
-# reported lost); a restarted observer then never saw its inputs again.
+# 4 s (it ends once it has them), so it may spend up to 3 s on discovery. On Fast DDS, a
+# reader whose max_samples was its depth could refuse every sample for the rest of its life
+# after such a restart (each reported lost); a restarted observer then never saw its inputs
+# again.
 # Usage: restarted_reader.sh BIN VENDOR DOMAIN
 set -u
 bin=$1 vendor=$2 domain=$3

@@ -3,7 +3,7 @@
 //
 //   topic_peer pub --dds fast --domain 180 --topic tools/pose --profile sensor --rate 50 --duration 20
 //   topic_peer sub --dds cyclone --domain 180 --topic tools/pose --profile sensor_reliable --duration 20
-//   topic_peer sub ... --expect 100     (exit 1 unless 100 samples arrived)
+//   topic_peer sub ... --expect 100     (exit 1 unless 100 samples arrived; ends once they have)
 //
 // pub publishes x = k, y = 2k, theta = 0.5 (k = 1, 2, ...) until --count or --duration.
 #include <CLI/CLI.hpp>
@@ -39,7 +39,7 @@ int main(int argc, char** argv) {
   app.add_option("--rate", rate);
   app.add_option("--count", count);
   app.add_option("--duration", duration);
-  app.add_option("--expect", expect, "sub: exit 1 unless at least this many samples arrived");
+  app.add_option("--expect", expect, "sub: exit 1 unless at least this many samples arrived (it ends once they have)");
   app.add_flag("--wait-reader", wait_reader, "pub: start publishing once a reader matched");
   CLI11_PARSE(app, argc, argv);
   std::signal(SIGINT, on_signal);
@@ -57,7 +57,7 @@ int main(int argc, char** argv) {
       auto sub = p->subscriber<msg::Pose2D>(topic, qos);
       msg::Pose2D m;
       int received = 0;
-      while (!g_stop && monotonic_ns() < end) {
+      while (!g_stop && monotonic_ns() < end && (expect == 0 || received < expect)) {
         if (sub.wait(50'000'000))
           while (sub.take(m)) ++received;
       }

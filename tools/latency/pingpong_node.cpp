@@ -12,9 +12,9 @@
 #include <thread>
 
 #include "pingpong_common.hpp"
-#include "plexus/base/teardown_deadline.hpp"
 #include "plexus/base/input_error.hpp"
 #include "plexus/base/logging.hpp"
+#include "plexus/base/teardown_deadline.hpp"
 #include "plexus/runtime/participant.hpp"
 
 namespace {
