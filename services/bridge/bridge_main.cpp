@@ -61,6 +61,7 @@ int main(int argc, char** argv) {
   scenario::StandaloneSpec alone;
   alone.program = name;
   alone.robot_section = true;
+  alone.command_rate_hz = 100.0;  // --input-rate cmd=HZ overrides
   app.add_option("--part", part_file, "The robot's part of a scenario, with its source (written by plexus launch)");
   app.add_option("--robot", alone.robot, "Robot whose topics it serves (default r1)");
   app.add_option("--params", alone.params_file, "YAML robot section: the plant and sensors it stands in for");
@@ -123,7 +124,6 @@ int main(int argc, char** argv) {
       if (link_timeout > 0) src["link_timeout"] = link_timeout;
       alone.extra = YAML::Node(YAML::NodeType::Map);
       alone.extra["source"] = src;
-      if (alone.input_rates.empty()) alone.input_rates.push_back("cmd=100");
       sc = scenario::load_standalone(alone, sets, true);
     }
     // A launched process keeps quiet about the scenario's warnings: `plexus launch` said them once.

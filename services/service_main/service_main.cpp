@@ -1,7 +1,8 @@
 // The body of every plexus service executable (plant_simulator, localisation_observer,
 // motion_controller, terrain_classifier, icr_estimator, attitude_filter, joint_controller,
-// component_host; each one's main() is service_entry.cpp, which names it): it builds the components this process hosts, and only those, from its
-// own parameters, then runs them on DDS in realtime (the default) or lockstep.
+// component_host; each one's main() is service_entry.cpp, which names it): it builds the
+// components this process hosts, and only those, from its own parameters, then runs them
+// on DDS in realtime (the default) or lockstep.
 //
 // On its own, from its parameters (a service is a program a stranger can deploy):
 //   localisation_observer --robot r1 --params observer.yaml --set L=0.6
@@ -68,6 +69,7 @@ int plexus::service::run_service(int argc, char** argv, const std::string& self)
   scenario::StandaloneSpec alone;
   alone.program = self;
   alone.robot_section = hosts_plant;
+  if (hosts_plant) alone.command_rate_hz = 100.0;  // --input-rate cmd=HZ overrides (a 1 kHz arm controller)
   alone.name = self;
   if (!hosted_types.empty()) alone.type = std::string(hosted_types.front());
   app.add_option("--part", part_file, "This process's part of a scenario (written by plexus launch)");
@@ -75,11 +77,12 @@ int plexus::service::run_service(int argc, char** argv, const std::string& self)
   app.add_option("--name", alone.name, "Service name (default: the executable's)");
   app.add_option("--params", alone.params_file,
                  hosts_plant ? "YAML robot section: plant and sensors (docs/scenarios.md)"
-                        : "YAML parameters of the service (the keys of its scenario section, docs/scenarios.md)");
+                             : "YAML parameters of the service (the keys of its scenario section, docs/scenarios.md)");
   if (!hosts_plant) app.add_option("--type", alone.type, "Component type (default: " + alone.type + ")");
   app.add_option("--step", alone.step, "Base step in s (default: 1 / its rate; plant_simulator 0.001)");
   app.add_option("--input-rate", alone.input_rates,
-                 "PORT=HZ: the rate an input is produced at, when not its own (staleness: 3 of its periods)");
+                 hosts_plant ? "cmd=HZ: the command's rate (default 100); stale after 3 periods"
+                             : "PORT=HZ: the rate an input is produced at, when not its own (staleness: 3 of its periods)");
   app.add_option("--set", sets, "Parameter override key=value (with --part: dotted.key=value of the part)");
   net.add_to(app);
   app.add_option("--profile", profile, "QoS profile of the lockstep topics");

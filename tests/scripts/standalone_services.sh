@@ -87,7 +87,7 @@ run_family balancing 4 \
   "attitude_filter --robot r3 --name attitude --params $params/attitude_filter.yaml" \
   "attitude_filter --robot r3 --name balance --params $params/balancing_controller.yaml"
 run_family arm 4 \
-  "plant_simulator --robot r4 --params $params/arm_robot.yaml --step 0.001" \
+  "plant_simulator --robot r4 --params $params/arm_robot.yaml --step 0.001 --input-rate cmd=1000" \
   "component_host --robot r4 --name reference --params $params/arm_sine_reference.yaml" \
   "joint_controller --robot r4 --name observer --params $params/arm_ekf.yaml" \
   "joint_controller --robot r4 --name controller --params $params/arm_vdc.yaml"

@@ -83,7 +83,6 @@ RealtimeResult run_realtime(scenario::Scenario& sc, rt::Participant& participant
   // from other processes has matched a writer (distributed/realtime.cpp), which on a lossy
   // link takes seconds; a loop started before would hold its safe output until then. Past
   // ready_wait_s the run starts anyway, and says which processes were still matching.
-  const auto ready = [&](std::size_t i) { return seen[i] && last[i].state() != msg::SERVICE_CONFIGURING; };
   const int64_t give_up = monotonic_ns() + static_cast<int64_t>(start_timeout_s * 1e9);
   int64_t ready_by = 0;  // set once every process has reported
   for (;;) {
@@ -91,7 +90,7 @@ RealtimeResult run_realtime(scenario::Scenario& sc, rt::Participant& participant
     std::string silent, matching;
     for (std::size_t i = 0; i < procs.size(); ++i) {
       if (!seen[i]) silent += (silent.empty() ? "" : ", ") + procs[i].service();
-      else if (!ready(i)) matching += (matching.empty() ? "" : ", ") + procs[i].service();
+      else if (last[i].state() == msg::SERVICE_CONFIGURING) matching += (matching.empty() ? "" : ", ") + procs[i].service();
     }
     const int64_t now = monotonic_ns();
     if (silent.empty() && ready_by == 0) ready_by = now + static_cast<int64_t>(ready_wait_s * 1e9);
@@ -102,8 +101,8 @@ RealtimeResult run_realtime(scenario::Scenario& sc, rt::Participant& participant
                    scenario::format_number(ready_wait_s), matching);
       break;
     }
-    if (stop || (!silent.empty() && now > give_up))
-      throw distributed::LockstepError("realtime: no heartbeat from " + silent);
+    if (stop) throw distributed::LockstepError("realtime: stopped before the start");
+    if (!silent.empty() && now > give_up) throw distributed::LockstepError("realtime: no heartbeat from " + silent);
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
   res.all_running_ns = monotonic_ns();
