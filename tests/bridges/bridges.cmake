@@ -29,7 +29,14 @@ foreach(source simulator serial udp replay)
     # Measured under `ctest -j2` on 2 cores with two CPU hogs beside them: the same verdicts
     # as on an idle machine, rates 99-100 Hz (15 s each; replay 29 s: it records 12 s of
     # the simulator first).
-    set_tests_properties(bridges.contract_${source}_${vendor} PROPERTIES LABELS "bridges;realtime" TIMEOUT 120)
+    # One at a time among themselves (RESOURCE_LOCK), beside other tests: in a CI run the two
+    # simulator tests (domains 130 and 131, both publishing r1/*, started together) saw each
+    # other's participants, 2 writers per topic and every sample twice, though their domains
+    # differ. Cause not established (a suspicion: a socket on an ephemeral port inside the
+    # other domain's port range, since Linux's ephemeral range 32768-60999 covers the DDS
+    # ports of domains 102-214). docs/testing.md, Known flakiness.
+    set_tests_properties(bridges.contract_${source}_${vendor} PROPERTIES LABELS "bridges;realtime" TIMEOUT 120
+                         RESOURCE_LOCK bridges_contract)
     # Except over a pty: there a stall of the bridge's reads fills the pty's buffer (about
     # half a second of frames), the emulator's write blocks and its loop drops the ticks it
     # missed, so samples are removed, not moved. Seen three times beside the heaviest tests

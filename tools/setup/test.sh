@@ -5,7 +5,9 @@
 #
 # The fuzz build and smoke run beside the suite under SCHED_IDLE (chrt --idle): they get only
 # the CPU time the suite leaves idle, which is most of a core while its RUN_SERIAL realtime
-# tests run one at a time, and they never take CPU from a test's loops.
+# tests run one at a time, and they never take CPU from a test's loops. One job at a time
+# (-j1): a second SCHED_IDLE job would fill the core a serial realtime test's processes wake
+# on (a CI run beside -j2 saw pty stalls and a 1 kHz arm loop outside Table 4's band).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 tools/setup/install_deps.sh
