@@ -61,7 +61,7 @@ int main(int argc, char** argv) {
   scenario::StandaloneSpec alone;
   alone.program = name;
   alone.robot_section = true;
-  alone.command_rate_hz = 100.0;  // --input-rate cmd=HZ overrides
+  alone.command_rate_hz = scenario::kDefaultCommandRateHz;  // --input-rate cmd=HZ overrides
   app.add_option("--part", part_file, "The robot's part of a scenario, with its source (written by plexus launch)");
   app.add_option("--robot", alone.robot, "Robot whose topics it serves (default r1)");
   app.add_option("--params", alone.params_file, "YAML robot section: the plant and sensors it stands in for");

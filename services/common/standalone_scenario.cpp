@@ -1,11 +1,10 @@
 #include "services/common/standalone_scenario.hpp"
 
-#include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "plexus/base/input_error.hpp"
 #include "plexus/base/yaml_reader.hpp"
-#include "plexus/scenario/evaluation.hpp"
 #include "plexus/scenario/overrides.hpp"
 
 namespace plexus::scenario {
@@ -43,18 +42,17 @@ Scenario load_standalone(const StandaloneSpec& s, const std::vector<std::string>
     step = hz > 0.0 && std::isfinite(hz) ? 1.0 / hz : 0.01;
   }
   root["step"] = step;
-  std::vector<std::string> rates = s.input_rates;
-  const bool command_rate_given = std::any_of(rates.begin(), rates.end(), [](const std::string& r) {
-    return r.rfind("cmd=", 0) == 0 || r.find("/cmd=") != std::string::npos;
-  });
-  if (s.robot_section && s.command_rate_hz > 0.0 && !command_rate_given)
-    rates.push_back("cmd=" + format_number(s.command_rate_hz));
-  for (const auto& in : rates) {
+  YAML::Node inputs(YAML::NodeType::Map);
+  for (const auto& in : s.input_rates) {
     const auto eq = in.find('=');
     if (eq == std::string::npos || eq == 0) throw InputError("--input-rate " + in + ": expected PORT=HZ");
     const std::string port = in.substr(0, eq);
-    root["inputs"][port.find('/') == std::string::npos ? s.robot + "/" + port : port]["rate"] = in.substr(eq + 1);
+    inputs[port.find('/') == std::string::npos ? s.robot + "/" + port : port]["rate"] = in.substr(eq + 1);
   }
+  // The robot's command at its default rate, unless --input-rate gave it (as cmd or r1/cmd).
+  const std::string command = s.robot + "/cmd";
+  if (s.robot_section && s.command_rate_hz > 0.0 && !std::as_const(inputs)[command]) inputs[command]["rate"] = s.command_rate_hz;
+  if (inputs.size() > 0) root["inputs"] = inputs;
   return load_scenario_tree(root, origin, overrides, {.partial = true});
 }
 

@@ -13,6 +13,10 @@
 
 namespace plexus::scenario {
 
+/// The command rate the plant simulator and the bridges assume on their own (the example
+/// controllers' rate); `--input-rate cmd=HZ` overrides it.
+inline constexpr double kDefaultCommandRateHz = 100.0;
+
 struct StandaloneSpec {
   std::string program;      ///< the executable, for errors ("plant_simulator")
   bool robot_section = false;  ///< params are a robot section (plant, sensors), not a service's
@@ -23,8 +27,8 @@ struct StandaloneSpec {
   double step = 0.0;        ///< base step (s); 0: 1 / the service's rate (robots: 0.001)
   std::vector<std::string> input_rates;  ///< PORT=HZ: an input's producer rate
   /// Robot sections: the rate of the robot's command (<robot>/cmd) when input_rates does not
-  /// give it; 0: the base step's. The plant simulator and the bridges use 100 Hz, the rate
-  /// of the example controllers, so that a 1 kHz plant does not take a 100 Hz command for a
+  /// give it; 0: the base step's. The plant simulator and the bridges use
+  /// kDefaultCommandRateHz, so that a 1 kHz plant does not take a 100 Hz command for a
   /// stale one 7 ticks in 10 (and apply the zero command meanwhile).
   double command_rate_hz = 0.0;
   /// Robot sections: keys added to the section before loading (a bridge's `source`).

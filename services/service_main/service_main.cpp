@@ -69,7 +69,7 @@ int plexus::service::run_service(int argc, char** argv, const std::string& self)
   scenario::StandaloneSpec alone;
   alone.program = self;
   alone.robot_section = hosts_plant;
-  if (hosts_plant) alone.command_rate_hz = 100.0;  // --input-rate cmd=HZ overrides (a 1 kHz arm controller)
+  if (hosts_plant) alone.command_rate_hz = scenario::kDefaultCommandRateHz;  // --input-rate cmd=1000: a 1 kHz arm controller
   alone.name = self;
   if (!hosted_types.empty()) alone.type = std::string(hosted_types.front());
   app.add_option("--part", part_file, "This process's part of a scenario (written by plexus launch)");

@@ -32,17 +32,17 @@ split_start() {
 
 split_wait() {
   local limit=${1:-300} waited=0 hung=0 pid
-  while [ "$waited" -lt "$limit" ]; do
-    kill -0 "$SPLIT_H1" 2>/dev/null || kill -0 "$SPLIT_H2" 2>/dev/null || break
+  while kill -0 "$SPLIT_H1" 2>/dev/null || kill -0 "$SPLIT_H2" 2>/dev/null; do
+    if [ "$waited" -ge "$limit" ]; then
+      hung=1
+      echo "HUNG: a launcher still runs $limit s after the start; what runs in the namespaces:"
+      split_describe
+      for pid in $(split_pids); do kill -9 "$pid" 2>/dev/null; done
+      break
+    fi
     sleep 1
     waited=$((waited + 1))
   done
-  if kill -0 "$SPLIT_H1" 2>/dev/null || kill -0 "$SPLIT_H2" 2>/dev/null; then
-    hung=1
-    echo "HUNG: a launcher still runs $limit s after the start; what runs in the namespaces:"
-    split_describe
-    for pid in $(ip netns pids "$NS1" 2>/dev/null) $(ip netns pids "$NS2" 2>/dev/null); do kill -9 "$pid" 2>/dev/null; done
-  fi
   wait "$SPLIT_H1"
   SPLIT_RC=$?
   wait "$SPLIT_H2"
@@ -51,11 +51,14 @@ split_wait() {
   SPLIT_H1= SPLIT_H2=
 }
 
+# The processes running in the two namespaces.
+split_pids() { ip netns pids "$NS1" 2>/dev/null; ip netns pids "$NS2" 2>/dev/null; }
+
 # Each process in the namespaces: its command, its threads by name and what they wait in
 # (wchan), and with gdb, each thread's innermost frames.
 split_describe() {
   local pid t
-  for pid in $(ip netns pids "$NS1" 2>/dev/null) $(ip netns pids "$NS2" 2>/dev/null); do
+  for pid in $(split_pids); do
     echo "  $(ps -o pid=,stat=,etimes=,args= -p "$pid" | cut -c1-160)"
     for t in /proc/"$pid"/task/*; do echo "$(cat "$t/comm" 2>/dev/null)@$(cat "$t/wchan" 2>/dev/null)"; done |
       sort | uniq -c | awk '{ printf "    %s x%s\n", $2, $1 }'
