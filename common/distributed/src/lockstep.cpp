@@ -259,6 +259,7 @@ scenario::RunLog LockstepClock::run(const std::atomic<bool>& stop, const scenari
   }
   const int64_t timeout = to_ns(m.opt.timeout_s);
   const int64_t step_ns = to_ns(m.sc.step);
+  const int64_t stride = clock_stride(m.opt);
   msg::ClockStep tick;
   SignalSample sample;
   rt::SampleMeta meta;
@@ -269,7 +270,7 @@ scenario::RunLog LockstepClock::run(const std::atomic<bool>& stop, const scenari
     tick.step_ns(step_ns);
     tick.header().origin_time_ns(0);
     tick.header().data_time_ns(k * step_ns);
-    m.clock.publish(tick);
+    if (k % stride == 0 || k == m.sc.steps) m.clock.publish(tick);
     const int64_t published = wall_time_ns();  // producers stamp their samples' publish time on the wall clock
     // Every signal due at step k, from every host: then step k is complete everywhere.
     for (std::size_t s = 0; s < signals.size(); ++s) {

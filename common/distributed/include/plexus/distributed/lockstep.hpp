@@ -13,12 +13,14 @@
 //    speed, never the result;
 //  - every output sample is published on its topic;
 //  - the clock records every signal; when all samples due at step k have arrived, it
-//    publishes ClockStep k+1. After the last step it publishes the end-of-run step.
+//    publishes ClockStep k+1 (every clock_stride-th step: a host may run ahead anyway).
+//    After the last step it publishes the end-of-run step.
 // The same scenario and seed therefore give the same log and digest as `plexus sim`,
 // whatever the vendors and the split. Waiting is bounded: a missing sample fails the run
 // after the timeout with a message naming the signal, its producer and the step.
 #pragma once
 
+#include <algorithm>
 #include <atomic>
 #include <cstdint>
 #include <functional>
@@ -54,6 +56,14 @@ struct LockstepOptions {
   /// path. Clamped to [0, kMaxLeadSteps].
   int64_t lead_steps = 8;
 };
+
+/// Clock: publishes ClockStep k only for k a multiple of this (and the last step). A host
+/// may run lead_steps past the latest tick, so a tick every lead/2 steps still leaves it
+/// lead/2 steps of slack while sparing (stride - 1) / stride of the clock's messages and
+/// their acknowledgements: at lead 8 a tick every 4 steps (docs/performance.md, lockstep).
+inline int64_t clock_stride(const LockstepOptions& o) {
+  return std::max<int64_t>(1, std::clamp<int64_t>(o.lead_steps, 0, kMaxLeadSteps) / 2);
+}
 
 /// A run that cannot go on: a producer stopped answering, or data arrived out of order.
 class LockstepError : public std::runtime_error {
