@@ -162,12 +162,43 @@ void FlexibleJointEkf::jacobian(const Vector& x, const Vector& /*u*/, Matrix& f)
   }
 }
 
+namespace {
+
+/// The Riccati right-hand side of riccati() below at compile-time sizes: N joints, M states
+/// (the measured phi, phi' last). The same operations in the same order on fixed-size Eigen
+/// maps of the same storage, so Eigen unrolls the small products instead of looping over
+/// runtime sizes.
+template <int N, int M>
+void riccati_fixed(const Eigen::MatrixXd& p_in, const Eigen::MatrixXd& f_in, const Eigen::VectorXd& qdiag, double r,
+                   Eigen::MatrixXd& tmp_out, Eigen::MatrixXd& dp_out) {
+  using Mat = Eigen::Matrix<double, M, M>;
+  constexpr int kPhi = M - 2 * N, kPhiRate = M - N;
+  const Eigen::Map<const Mat> p(p_in.data());
+  const Eigen::Map<const Mat> f(f_in.data());
+  Eigen::Map<Mat> tmp(tmp_out.data());
+  Eigen::Map<Mat> dp(dp_out.data());
+  tmp.setZero();
+  tmp.template topRows<N>() = p.template middleRows<N>(N);
+  tmp.template middleRows<N>(N).noalias() = f.template middleRows<N>(N).lazyProduct(p);
+  tmp.template middleRows<N>(kPhi) = p.template middleRows<N>(kPhiRate);
+  for (int i = 0; i < N; ++i)
+    tmp.row(kPhiRate + i) = f(kPhiRate + i, i) * p.row(i) + f(kPhiRate + i, kPhiRate + i) * p.row(kPhiRate + i);
+  dp = tmp + tmp.transpose();
+  dp.diagonal() += qdiag;
+  dp.noalias() -= (1.0 / r) * p.template rightCols<2 * N>().lazyProduct(p.template bottomRows<2 * N>());
+}
+
+}  // namespace
+
 void FlexibleJointEkf::riccati(const Matrix& p, Matrix& dp) {
   // P' = F P + P F^T + Q - P H^T R^{-1} H P   (eq. (32)-(33)), H = [0 I] selects phi, phi'.
   // F P by rows, from the structure of F (jacobian()): the tau and phi rows of F select the
   // tau' and phi' rows of P, the d and m_p rows are zero, only the tau' rows are dense and
   // the phi' rows have two diagonal blocks. Small products are coefficient-based (Eigen's
-  // blocked product costs more than it saves below ~16 x 16).
+  // blocked product costs more than it saves below ~16 x 16). The 2-DoF arm's sizes (the
+  // paper's 8 states, the robust tuning's 11) run at compile-time sizes (issue 15 section 6).
+  if (n_ == 2 && m_ == 8) return riccati_fixed<2, 8>(p, fjac_, qdiag_, params_.r, tmp_, dp);
+  if (n_ == 2 && m_ == 11) return riccati_fixed<2, 11>(p, fjac_, qdiag_, params_.r, tmp_, dp);
   const int n = n_, m2 = 2 * n_, ip = iphi_, iv = iphi_ + n_;
   const bool small = m_ <= 24;
   tmp_.setZero();
