@@ -64,7 +64,7 @@ for vendor in $VENDORS; do
       rc=$?
       lj=$run/launch.json
       if [ ! -s "$lj" ]; then
-        echo "fleet_scale.sh: $mode $vendor $grouping N=$n: no launch.json (rc $rc): $(head -c 300 "$work/err.txt")" >&2
+        echo "fleet_scale.sh: $mode $vendor $grouping N=$n: no launch.json (rc $rc): $(grep -v "gain condition" "$work/err.txt" | tail -c 400)" >&2
         echo "$mode,$vendor,$grouping,$n,,$DURATION,$rc,,,,,,,,,,,$l1,$l5,$l15,$utc" >> "$out"
         continue
       fi
