@@ -25,16 +25,17 @@ void on_signal(int) { g_stop = true; }
 using namespace plexus;
 using latency::mono_ns;
 
+// pong answers on the DDS receive thread (Subscriber::on_sample), as ddsperf's pong does from
+// its listener: no second thread is woken per ping. The main thread only waits for the end.
 int run_pong(rt::Participant& p, const rt::QosProfile& qos, const latency::PingPongOptions& o) {
-  auto sub = p.subscriber<msg::LatencyProbe>("latency/ping", qos);
   auto pub = p.publisher<msg::LatencyProbe>("latency/pong", qos);
-  msg::LatencyProbe m;
-  m.payload().reserve(65536);
+  auto sub = p.subscriber<msg::LatencyProbe>("latency/ping", qos);
+  msg::LatencyProbe buffer;
+  buffer.payload().reserve(65536);
+  // data_time (the ping index) and origin time travel back. Only this callback touches pub.
+  sub.on_sample([&pub](msg::LatencyProbe& m, const rt::SampleMeta&) { pub.publish(m); }, std::move(buffer));
   const int64_t end = o.duration > 0 ? mono_ns() + static_cast<int64_t>(o.duration * 1e9) : INT64_MAX;
-  while (!g_stop && mono_ns() < end) {
-    if (!sub.wait(50'000'000)) continue;
-    while (sub.take(m)) pub.publish(m);  // data_time (the ping index) and origin time travel back
-  }
+  while (!g_stop && mono_ns() < end) std::this_thread::sleep_for(std::chrono::milliseconds(50));
   return 0;
 }
 

@@ -8,6 +8,7 @@
 #include <fastdds/dds/publisher/DataWriter.hpp>
 #include <fastdds/dds/publisher/Publisher.hpp>
 #include <fastdds/dds/subscriber/DataReader.hpp>
+#include <fastdds/dds/subscriber/DataReaderListener.hpp>
 #include <fastdds/dds/subscriber/SampleInfo.hpp>
 #include <fastdds/dds/subscriber/Subscriber.hpp>
 #include <fastdds/dds/topic/Topic.hpp>
@@ -50,6 +51,16 @@ bool take_one(DataReader* r, plexus::msg::LatencyProbe& m) {
     if (info.valid_data) return true;
   return false;
 }
+
+// pong answers on Fast DDS's receive thread, from the reader listener, as plexus's pong
+// does (Subscriber::on_sample): both measure the same delivery path.
+struct Echo final : DataReaderListener {
+  DataWriter* writer = nullptr;
+  plexus::msg::LatencyProbe in;
+  void on_data_available(DataReader* r) override {
+    while (take_one(r, in)) writer->write(&in);
+  }
+};
 
 }  // namespace
 
@@ -104,7 +115,11 @@ int main(int argc, char** argv) {
   set_qos(rq, !best_effort, depth);
   rq.type_consistency().representation.m_value = {XCDR_DATA_REPRESENTATION};
   DataWriter* w = pub->create_datawriter(ping ? tping : tpong, wq);
-  DataReader* r = sub->create_datareader(ping ? tpong : tping, rq);
+  Echo echo;
+  echo.writer = w;
+  echo.in.payload().reserve(65536);
+  DataReader* r = ping ? sub->create_datareader(tpong, rq)
+                       : sub->create_datareader(tping, rq, &echo, StatusMask::data_available());
   if (!w || !r) {
     std::fprintf(stderr, "raw_fast_pingpong: cannot create endpoints\n");
     return 1;
@@ -114,10 +129,8 @@ int main(int argc, char** argv) {
   in.payload().reserve(65536);
   if (!ping) {
     const int64_t end = o.duration > 0 ? mono_ns() + static_cast<int64_t>(o.duration * 1e9) : INT64_MAX;
-    while (!g_stop && mono_ns() < end) {
-      if (!r->wait_for_unread_message(eprosima::fastrtps::Duration_t(0, 50'000'000))) continue;
-      while (take_one(r, in)) w->write(&in);
-    }
+    while (!g_stop && mono_ns() < end) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    r->set_listener(nullptr);  // before echo goes
   } else {
     PublicationMatchedStatus ps;
     SubscriptionMatchedStatus ss;

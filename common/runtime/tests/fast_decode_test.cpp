@@ -82,6 +82,7 @@ TEST(Subscriber, TakeLatestKeepsTheNewestValidSample) {
     bool wait(int64_t) override { return !queue.empty(); }
     int matched_count() const override { return 1; }
     uint64_t malformed_count() const override { return 0; }
+    void set_data_callback(std::function<void()>) override {}
   };
   auto reader = std::make_unique<Reader>();
   reader->queue = {{1.0, true}, {2.0, true}, {99.0, false}};

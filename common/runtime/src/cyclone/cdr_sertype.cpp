@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <new>
+#include <vector>
 
 namespace plexus::rt::detail {
 namespace {
@@ -81,16 +82,33 @@ struct ddsi_serdata* sd_from_keyhash(const struct ddsi_sertype* type, const stru
 
 struct ddsi_serdata* sd_from_sample(const struct ddsi_sertype* type, enum ddsi_serdata_kind kind, const void* sample) {
   const msg::TypeSupport& ts = *sertype_of(type)->type;
-  CdrSerdata* d = alloc_serdata(type, kind, kind == SDK_DATA ? ts.max_cdr_size : 0);
-  if (!d) return nullptr;
-  if (kind == SDK_DATA) {
+  if (kind != SDK_DATA) {
+    CdrSerdata* d = alloc_serdata(type, kind, 0);
+    return d ? &d->c : nullptr;
+  }
+  if (!ts.variable_size) {  // fixed size: the maximum is the size
+    CdrSerdata* d = alloc_serdata(type, kind, ts.max_cdr_size);
+    if (!d) return nullptr;
     const std::size_t n = ts.serialize(sample, d->data, ts.max_cdr_size);
     if (n == 0) {
       std::free(d);
       return nullptr;
     }
     d->size = static_cast<uint32_t>(n);
+    return &d->c;
   }
+  // Variable size (a sequence): a serdata of the type's maximum took a 64 KiB allocation per
+  // LatencyProbe write, however small, held in the writer history until acknowledged. The
+  // CDR goes first into this thread's scratch buffer of the maximum size (allocated on the
+  // thread's first write), then into a serdata of exactly its size.
+  thread_local std::vector<unsigned char> scratch;
+  if (scratch.size() < ts.max_cdr_size) scratch.resize(ts.max_cdr_size);
+  const std::size_t n = ts.serialize(sample, scratch.data(), ts.max_cdr_size);
+  if (n == 0) return nullptr;
+  CdrSerdata* d = alloc_serdata(type, kind, n);
+  if (!d) return nullptr;
+  std::memcpy(d->data, scratch.data(), n);
+  d->size = static_cast<uint32_t>(n);
   return &d->c;
 }
 

@@ -8,6 +8,7 @@
 #include <atomic>
 #include <cmath>
 #include <cstring>
+#include <functional>
 #include <stdexcept>
 
 #include "../policy_names.hpp"
@@ -184,6 +185,36 @@ class CycloneReader final : public ReaderBackend {
   }
   int matched_count() const override { return matched_; }
   uint64_t malformed_count() const override { return malformed_; }
+  void set_data_callback(std::function<void()> fn) override {
+    if (data_cb_) throw std::logic_error("reader on '" + topic_ + "': data callback set twice");
+    data_cb_ = std::move(fn);  // before the listener can call it
+    // dds_set_listener replaces the whole listener: the status callbacks again, plus data.
+    dds_listener_t* l = listener(this, true);
+    const dds_return_t rc = dds_set_listener(reader_, l);
+    dds_delete_listener(l);
+    if (rc < 0) throw std::runtime_error(cyc_error(("cannot set the data listener on '" + topic_ + "'").c_str(), rc));
+    on_data_available(reader_, this);  // samples that arrived before the listener
+  }
+
+  /// The reader's listener: every status plexus reports as an event, and with `data` the
+  /// receive-thread delivery (set_data_callback).
+  static dds_listener_t* listener(CycloneReader* self, bool data) {
+    dds_listener_t* l = dds_create_listener(self);
+    dds_lset_subscription_matched(l, &CycloneReader::on_matched);
+    dds_lset_requested_deadline_missed(l, &CycloneReader::on_deadline);
+    dds_lset_requested_incompatible_qos(l, &CycloneReader::on_incompatible);
+    dds_lset_liveliness_changed(l, &CycloneReader::on_liveliness);
+    dds_lset_sample_lost(l, &CycloneReader::on_sample_lost);
+    if (data) dds_lset_data_available(l, &CycloneReader::on_data_available);
+    return l;
+  }
+  // Cyclone calls it on the thread that delivered the data: with the default
+  // Internal/SynchronousDeliveryLatencyBound, the receive thread itself, as ddsperf's pong.
+  static void on_data_available(dds_entity_t, void* arg) {
+    auto* self = static_cast<CycloneReader*>(arg);
+    std::lock_guard lk(self->data_mu_);  // never two calls at once (the interface's promise)
+    self->data_cb_();
+  }
 
   static void on_matched(dds_entity_t r, const dds_subscription_matched_status_t s, void* arg) {
     auto* self = static_cast<CycloneReader*>(arg);
@@ -244,6 +275,8 @@ class CycloneReader final : public ReaderBackend {
   dds_entity_t readcond_ = 0;
   std::atomic<int> matched_{0};
   std::atomic<uint64_t> malformed_{0};
+  std::mutex data_mu_;
+  std::function<void()> data_cb_;  // set once; outlives the reader entity (deleted in ~CycloneReader)
 };
 
 // The domains this process created (dds_create_domain), with the participants on each: one
@@ -369,12 +402,7 @@ std::unique_ptr<ReaderBackend> CycloneParticipant::make_reader(const msg::TypeSu
                                                                const QosProfile& qos) {
   const Topic t = topic(type, topic_name);
   auto r = std::make_unique<CycloneReader>(*this, topic_name, options().name + " reader (" + describe(qos) + ")");
-  dds_listener_t* l = dds_create_listener(r.get());
-  dds_lset_subscription_matched(l, &CycloneReader::on_matched);
-  dds_lset_requested_deadline_missed(l, &CycloneReader::on_deadline);
-  dds_lset_requested_incompatible_qos(l, &CycloneReader::on_incompatible);
-  dds_lset_liveliness_changed(l, &CycloneReader::on_liveliness);
-  dds_lset_sample_lost(l, &CycloneReader::on_sample_lost);
+  dds_listener_t* l = CycloneReader::listener(r.get(), false);
   dds_qos_t* q = make_qos(qos);
   const dds_entity_t dr = dds_create_reader(participant_, t.entity, q, l);
   dds_delete_qos(q);

@@ -19,6 +19,7 @@
 #include <fastrtps/utils/IPLocator.h>
 
 #include <atomic>
+#include <functional>
 #include <map>
 #include <mutex>
 #include <sstream>
@@ -191,6 +192,18 @@ class FastReader final : public ReaderBackend, public fdds::DataReaderListener {
   }
   int matched_count() const override { return matched_; }
   uint64_t malformed_count() const override { return malformed_; }
+  void set_data_callback(std::function<void()> fn) override {
+    if (data_cb_) throw std::logic_error("reader on '" + topic_ + "': data callback set twice");
+    data_cb_ = std::move(fn);  // before the listener can call it
+    if (!reader_->set_listener(this, fdds::StatusMask::all()))
+      throw std::runtime_error("Fast DDS: cannot set the data listener on '" + topic_ + "'");
+    on_data_available(reader_);  // samples that arrived before the listener
+  }
+  // Fast DDS calls it on the thread that received the data (the transport's receive thread).
+  void on_data_available(fdds::DataReader*) override {
+    std::lock_guard lk(data_mu_);  // never two calls at once (the interface's promise)
+    if (data_cb_) data_cb_();
+  }
 
   void on_subscription_matched(fdds::DataReader*, const fdds::SubscriptionMatchedStatus& s) override {
     matched_ = s.current_count;
@@ -243,6 +256,8 @@ class FastReader final : public ReaderBackend, public fdds::DataReaderListener {
   fdds::DataReader* reader_ = nullptr;
   std::atomic<int> matched_{0};
   std::atomic<uint64_t> malformed_{0};
+  std::mutex data_mu_;
+  std::function<void()> data_cb_;  // set once; outlives the reader (deleted in ~FastReader)
 };
 
 }  // namespace
@@ -486,7 +501,8 @@ std::unique_ptr<ReaderBackend> FastParticipant::make_reader(const msg::TypeSuppo
     qos_by_endpoint_["r:" + topic_name] = describe(qos);
   }
   auto r = std::make_unique<FastReader>(*this, topic_name);
-  // data_available is not needed: readers are polled or waited on.
+  // data_available only with a data callback (set_data_callback): otherwise readers are
+  // polled or waited on.
   fdds::StatusMask mask = fdds::StatusMask::all();
   mask >> fdds::StatusMask::data_available();
   fdds::DataReader* dr = subscriber_->create_datareader(t, rq, r.get(), mask);

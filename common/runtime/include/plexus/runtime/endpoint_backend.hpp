@@ -40,6 +40,17 @@ class ReaderBackend {
   virtual bool take(void* sample, SampleMeta* meta) = 0;
   /// Blocks until data is available or `timeout_ns` passes. True if data is available.
   virtual bool wait(int64_t timeout_ns) = 0;
+  /// Receive-thread delivery (opt-in): `fn` is called on the vendor's own thread as data
+  /// arrives (Cyclone DDS: the reader listener's on_data_available, on the receive thread;
+  /// Fast DDS: DataReaderListener::on_data_available), and takes the samples itself, so no
+  /// loop thread is woken per sample. A writer of the same vendor in the same process
+  /// delivers locally: `fn` then runs on the writing thread, inside its write(), so it must
+  /// not take a lock that thread holds while publishing. Calls for one reader never overlap.
+  /// Set it at most once, right after creating the reader (samples already queued are
+  /// delivered at once, on the caller's thread); it stays until the reader is destroyed,
+  /// whose destructor waits for a call in progress. `fn` must not block: it holds up the
+  /// receive thread and every reader behind it. wait() and take() stay valid.
+  virtual void set_data_callback(std::function<void()> fn) = 0;
   /// Number of matched remote writers.
   virtual int matched_count() const = 0;
   /// Samples dropped because they could not be decoded.

@@ -133,7 +133,8 @@ class Publisher {
   uint64_t seq_ = 0;
 };
 
-/// Typed subscriber with take-based reading, suited to a loop thread.
+/// Typed subscriber with take-based reading, suited to a loop thread, or receive-thread
+/// delivery (on_sample) for event-driven readers.
 template <class T>
 class Subscriber {
  public:
@@ -155,6 +156,28 @@ class Subscriber {
   }
   /// Blocks until data is available or the timeout passes.
   bool wait(int64_t timeout_ns) { return r_->wait(timeout_ns); }
+  /// Event-driven delivery on the DDS receive thread (ReaderBackend::set_data_callback):
+  /// fn(T& sample, const SampleMeta& meta) is called once per valid sample, oldest first,
+  /// from a vendor thread (a local writer's own thread for a same-vendor writer in this
+  /// process), never two at once; no loop thread is woken. `buffer` is the one
+  /// sample it decodes into, reused for every sample (reserve its sequences to keep the
+  /// steady state free of allocation); fn may change it (e.g. publish it onwards). For
+  /// readers whose reaction is short (a reply, a forward); a periodic loop that reads the
+  /// newest value keeps take_latest. Once per subscriber; do not take() from it besides.
+  template <class Fn>
+  void on_sample(Fn fn, T buffer = T{}) {
+    struct Delivery {
+      ReaderBackend* reader;
+      Fn fn;
+      T sample;
+      SampleMeta meta;
+    };
+    // One allocation at set-up; the callback owns it for the reader's life.
+    auto d = std::make_shared<Delivery>(Delivery{r_.get(), std::move(fn), std::move(buffer), {}});
+    r_->set_data_callback([d] {
+      while (d->reader->take(&d->sample, &d->meta)) d->fn(d->sample, static_cast<const SampleMeta&>(d->meta));
+    });
+  }
   int matched_count() const { return r_->matched_count(); }
   uint64_t malformed_count() const { return r_->malformed_count(); }
   explicit operator bool() const { return static_cast<bool>(r_); }
