@@ -18,7 +18,7 @@ namespace {
 
 struct Pair {
   Vendor pub, sub;
-  int domain;  // each pair its own (108-111: next to qos_behaviour_test's 100-107), so ctest -j is safe
+  int domain;  // each pair its own (151-154: no other test uses them), so ctest -j is safe
 };
 
 class ReceiveDelivery : public ::testing::TestWithParam<Pair> {
@@ -121,8 +121,8 @@ TEST_P(ReceiveDelivery, SamplesQueuedBeforeTheCallbackAreDelivered) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Vendors, ReceiveDelivery,
-                         ::testing::Values(Pair{Vendor::fast, Vendor::fast, 108}, Pair{Vendor::cyclone, Vendor::cyclone, 109},
-                                           Pair{Vendor::fast, Vendor::cyclone, 110}, Pair{Vendor::cyclone, Vendor::fast, 111}),
+                         ::testing::Values(Pair{Vendor::fast, Vendor::fast, 151}, Pair{Vendor::cyclone, Vendor::cyclone, 152},
+                                           Pair{Vendor::fast, Vendor::cyclone, 153}, Pair{Vendor::cyclone, Vendor::fast, 154}),
                          [](const ::testing::TestParamInfo<Pair>& p) {
                            return std::string(to_string(p.param.pub)) + "_to_" + to_string(p.param.sub);
                          });
