@@ -27,7 +27,7 @@ void sleep_until(int64_t deadline_ns) {
 
 // Percentiles from log-linear histograms kept up to date as samples enter and leave the
 // window, so stats() costs a scan of kBuckets counters instead of copying and partially
-// sorting the window (nth_element over 2 x 16384 samples: 120-210 us on this machine, inside
+// sorting the window (nth_element over 2 x 16384 samples: 120-230 us on this machine, inside
 // the loop body of every service, once a second for its heartbeat). Below 128 ns a bucket is
 // 1 ns; above, each power of two has 64 buckets: a bucket spans at most 1/64 (1.6 %) of its
 // values, and a percentile is reported as its bucket's middle, never above the maximum.
