@@ -108,7 +108,7 @@ set_tests_properties(tools.replay_rate_fast tools.replay_fast_cyclone PROPERTIES
 add_test(NAME tools.latency_loop
          COMMAND ${CMAKE_COMMAND}
                  "-DCOMMAND=${PLEXUS_CLI}|latency|loop|--rate|1000|--duration|1|--json|--out|${CMAKE_BINARY_DIR}/test-runs/tools/loop"
-                 "-DCHECKS=plexus.p50_us > 0;plexus.p99_us > 0;plexus.max_us > 0;cyclictest.count > 0;cyclictest.p50_us > 0;ratio.p50 > 0"
+                 "-DCHECKS=plexus.p50_us > 0;plexus.p99_us > 0;plexus.max_us > 0;plexus.count == 1000;cyclictest.count == 1000;cyclictest.p50_us > 0;ratio.p50 > 0;cpu >= 0;rounds == 4"
                  -P ${PROJECT_SOURCE_DIR}/tests/scripts/json_checks.cmake)
 set_tests_properties(tools.latency_loop PROPERTIES LABELS "tools" TIMEOUT 60)
 
@@ -125,6 +125,8 @@ add_test(NAME tools.record_bad_file COMMAND ${EXPECT} 2 "/nonexistent/dir/x.sqli
          ${PLEXUS_CLI} record -o /nonexistent/dir/x.sqlite --domain 214)
 add_test(NAME tools.bad_loop_rate COMMAND ${EXPECT} 2 "--rate: must be in \\(0, 100000\\] Hz"
          ${PLEXUS_CLI} latency loop --rate 0)
+add_test(NAME tools.bad_loop_rounds COMMAND ${EXPECT} 2 "--rounds: must be in 1..100 and at most rate x duration \\(10\\)"
+         ${PLEXUS_CLI} latency loop --rate 100 --duration 0.1 --rounds 20)
 add_test(NAME tools.bad_pingpong_size COMMAND ${EXPECT} 2 "--size: must be in 0..65536 bytes"
          ${PLEXUS_CLI} latency pingpong --size 70000)
 add_test(NAME tools.unknown_profile COMMAND ${EXPECT} 2 "unknown QoS profile 'fastest'"
@@ -137,7 +139,7 @@ add_test(NAME tools.launch_unknown_external COMMAND ${EXPECT} 2 "--external plan
 add_test(NAME tools.launch_record_bad_file COMMAND ${EXPECT} 2 "/nonexistent/dir/x.sqlite: cannot create recording"
          ${PLEXUS_CLI} launch ${CIRCLE} --record /nonexistent/dir/x.sqlite --domain 225)
 set_tests_properties(tools.bad_topic_type tools.bad_vendor tools.missing_run_file tools.replay_missing_file
-                     tools.record_bad_file tools.bad_loop_rate tools.bad_pingpong_size tools.unknown_profile
+                     tools.record_bad_file tools.bad_loop_rate tools.bad_loop_rounds tools.bad_pingpong_size tools.unknown_profile
                      tools.bad_peer_vendor tools.launch_unknown_external tools.launch_record_bad_file
                      PROPERTIES LABELS "cli;tools")
 

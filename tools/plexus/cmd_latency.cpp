@@ -14,15 +14,13 @@
 #include <regex>
 #include <set>
 #include <sstream>
-#include <exception>
-#include <thread>
 
 #include "child_process.hpp"
 #include "command.hpp"
 #include "external_program.hpp"
+#include "latency_loop.hpp"
 #include "latency_stats.hpp"
 #include "plexus/base/input_error.hpp"
-#include "plexus/runtime/periodic_loop.hpp"
 #include "plexus/runtime/qos.hpp"
 #include "plexus/runtime/vendor.hpp"
 #include "recording.hpp"
@@ -34,9 +32,6 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-Json pct_json(const Percentiles& p) {
-  return {{"count", p.count}, {"mean_us", p.mean}, {"p50_us", p.p50}, {"p90_us", p.p90}, {"p99_us", p.p99}, {"max_us", p.max}};
-}
 
 std::string temp_path(const std::string& stem) {
   return (fs::temp_directory_path() / ("plexus_" + stem + "_" + std::to_string(getpid()))).string();
@@ -49,25 +44,7 @@ std::vector<double> read_numbers(const std::string& path) {
   return v;
 }
 
-void make_out_dir(const std::string& dir) {
-  if (dir.empty()) return;
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec || !fs::is_directory(dir)) throw InputError("--out: cannot create directory " + dir);
-}
 
-void print_compare(const char* what, const Percentiles& a, const Percentiles& b, const std::string& b_name, bool b_has_p90) {
-  std::printf("\n%s (us)      %12s %12s %8s\n", what, "plexus", b_name.c_str(), "ratio");
-  const std::pair<const char*, std::pair<double, double>> rows[] = {
-      {"mean", {a.mean, b.mean}}, {"p50", {a.p50, b.p50}}, {"p90", {a.p90, b_has_p90 ? b.p90 : -1}},
-      {"p99", {a.p99, b.p99}},    {"max", {a.max, b.max}}};
-  for (const auto& [name, v] : rows) {
-    if (v.second < 0)
-      std::printf("  %-16s %12.1f %12s %8s\n", name, v.first, "n/a", "n/a");
-    else
-      std::printf("  %-16s %12.1f %12.1f %8s\n", name, v.first, v.second, ratio_text(v.first, v.second).c_str());
-  }
-}
 
 // ---------------------------------------------------------------------------------------
 // pingpong
@@ -241,135 +218,6 @@ int run_pingpong(const PingOpts& o) {
     if (result.contains("png")) std::printf("histogram: %s\n", result["png"].get<std::string>().c_str());
   }
   return plexus_r.value("received", 0) == o.count ? 0 : 1;
-}
-
-// ---------------------------------------------------------------------------------------
-// loop
-
-struct LoopOpts {
-  double rate = 1000, duration = 10;
-  int priority = 80, cpu = -1;
-  int cpu_dma_latency = 0;     // us, as cyclictest's default; -1: no request (cyclictest --laptop)
-  int64_t timer_slack = 1;     // ns; 0 keeps the thread's (Linux default 50 us)
-  std::string out;
-  bool json = false, no_cyclictest = false, no_mlock = false;
-};
-
-int run_loop(const LoopOpts& o) {
-  if (!(o.rate > 0 && o.rate <= 100000)) throw InputError("--rate: must be in (0, 100000] Hz");
-  if (!(o.duration > 0 && o.duration <= 3600)) throw InputError("--duration: must be in (0, 3600] seconds");
-  if (o.priority < 0 || o.priority > 99) throw InputError("--priority: must be in 0..99 (0: no real-time priority)");
-  if (o.cpu_dma_latency < -1 || o.cpu_dma_latency > 10'000'000)
-    throw InputError("--cpu-dma-latency: must be -1 (no request) or in 0..10000000 us");
-  if (o.timer_slack < 0) throw InputError("--timer-slack: must be >= 0 ns (0: keep the default)");
-  make_out_dir(o.out);
-  const auto n = static_cast<std::size_t>(o.rate * o.duration);
-  std::vector<double> lateness(n);  // preallocated: the loop only stores
-  std::string refused;
-  // The loop runs in its own thread so the real-time settings do not stick to this one.
-  std::exception_ptr failed;  // a bad option the loop refuses (a CPU that does not exist): exit 2 here
-  std::thread th([&] {
-    try {
-      rt::PeriodicLoop loop({.rate_hz = o.rate, .priority = o.priority, .cpu = o.cpu, .lock_memory = !o.no_mlock,
-                              .timer_slack_ns = o.timer_slack, .cpu_dma_latency_us = o.cpu_dma_latency});
-      refused = loop.refused();
-      loop.start();
-      for (std::size_t i = 0; i < n; ++i) {
-        const auto t = loop.wait_next();
-        lateness[i] = static_cast<double>(t.wake_ns - t.deadline_ns) * 1e-3;
-        loop.end_compute();
-      }
-    } catch (...) {
-      failed = std::current_exception();
-    }
-  });
-  th.join();
-  if (failed) std::rethrow_exception(failed);
-  Percentiles a = percentiles(lateness);
-  const bool prio_refused = refused.find("priority") != std::string::npos || refused.find("SCHED_FIFO") != std::string::npos;
-
-  Json result = {{"rate_hz", o.rate}, {"duration_s", o.duration}, {"priority", prio_refused ? 0 : o.priority},
-                 {"cpu_dma_latency_us", o.cpu_dma_latency}, {"timer_slack_ns", o.timer_slack},
-                 {"mlockall", !o.no_mlock}, {"plexus", pct_json(a)}};
-  if (!refused.empty()) result["refused"] = refused;
-  Percentiles b;
-  std::vector<double> hist;
-  bool have_cyclictest = false;
-  if (!o.no_cyclictest) {
-    const std::string ct = find_program("cyclictest");
-    if (ct.empty()) {
-      std::fprintf(stderr, "plexus latency loop: warning: cyclictest not found (install rt-tests); plexus only\n");
-    } else {
-      const int prio = prio_refused ? 0 : o.priority;
-      const int interval_us = static_cast<int>(std::lround(1e6 / o.rate));
-      std::vector<std::string> args = {"-q", "-t1", "-p" + std::to_string(prio), "-i" + std::to_string(interval_us),
-                                       "-D" + std::to_string(static_cast<int>(std::ceil(o.duration))), "-h2000"};
-      // The same settings as the plexus loop: memory locking and the CPU wake-up latency request.
-      if (!o.no_mlock) args.push_back("-m");
-      args.push_back(o.cpu_dma_latency < 0 ? std::string("--laptop") : "--latency=" + std::to_string(o.cpu_dma_latency));
-      if (o.cpu >= 0) args.push_back("-a" + std::to_string(o.cpu));
-      std::string out;
-      int rc = run_program(ct, args, out, {}, true);
-      if (rc != 0 && prio > 0) {
-        std::fprintf(stderr, "plexus latency loop: warning: cyclictest refused priority %d; running it without\n", prio);
-        out.clear();
-        args[2] = "-p0";
-        rc = run_program(ct, args, out, {}, true);
-      }
-      hist.assign(2001, 0.0);
-      std::istringstream in(out);
-      static const std::regex bucket(R"(^(\d+)\s+(\d+)\s*$)"), overflow(R"(# Histogram Overflows:\s*(\d+))"),
-          maxl(R"(# Max Latencies:\s*(\d+))");
-      double ct_max = 0, overflows = 0;
-      for (std::string line; std::getline(in, line);) {
-        std::smatch m;
-        if (std::regex_match(line, m, bucket)) {
-          const auto k = static_cast<std::size_t>(std::stoul(m[1]));
-          if (k < hist.size()) hist[k] += std::stod(m[2]);
-        } else if (std::regex_search(line, m, overflow)) {
-          overflows = std::stod(m[1]);
-        } else if (std::regex_search(line, m, maxl)) {
-          ct_max = std::stod(m[1]);
-        }
-      }
-      hist.back() += overflows;
-      b = histogram_percentiles(hist);
-      if (ct_max > 0) b.max = ct_max;
-      have_cyclictest = rc == 0 && b.count > 0;
-      if (!have_cyclictest)
-        std::fprintf(stderr, "plexus latency loop: warning: cyclictest gave no histogram (exit %d)\n", rc);
-      else
-        result["cyclictest"] = pct_json(b);
-    }
-  }
-  if (have_cyclictest)
-    result["ratio"] = {{"mean", a.mean / b.mean}, {"p50", a.p50 / std::max(b.p50, 1.0)}, {"p99", a.p99 / std::max(b.p99, 1.0)},
-                       {"max", a.max / b.max}};
-  if (!o.out.empty()) {
-    std::vector<Series> series = {{"plexus PeriodicLoop", lateness, false}};
-    if (have_cyclictest) series.push_back({"cyclictest", hist, true});
-    const std::string png = o.out + "/loop_" + std::to_string(static_cast<int>(o.rate)) + "hz.png";
-    write_histogram_png(png, "wake-up lateness at " + std::to_string(static_cast<int>(o.rate)) + " Hz", series);
-    result["png"] = png;
-  }
-  if (o.json) {
-    std::printf("%s\n", result.dump().c_str());
-    return 0;
-  }
-  std::printf("plexus latency loop: %g Hz for %g s, SCHED_FIFO priority %d, %s, CPU wake-up latency request %s, "
-              "timer slack %s%s\n",
-              o.rate, o.duration, prio_refused ? 0 : o.priority, o.no_mlock ? "no mlockall" : "mlockall",
-              o.cpu_dma_latency < 0 ? "none" : (std::to_string(o.cpu_dma_latency) + " us").c_str(),
-              o.timer_slack > 0 ? (std::to_string(o.timer_slack) + " ns").c_str() : "default",
-              refused.empty() ? "" : (" (refused: " + refused + ")").c_str());
-  if (have_cyclictest) {
-    print_compare("wake-up lateness", a, b, "cyclictest", true);
-    std::printf("(cyclictest percentiles from its 1 us histogram)\n");
-  } else {
-    print_compare("wake-up lateness", a, Percentiles{}, "-", false);
-  }
-  if (result.contains("png")) std::printf("histogram: %s\n", result["png"].get<std::string>().c_str());
-  return 0;
 }
 
 // ---------------------------------------------------------------------------------------
@@ -556,7 +404,10 @@ Command add_latency_command(CLI::App& root) {
   loop->add_option("--rate", lo->rate, "loop rate, Hz")->capture_default_str();
   loop->add_option("--duration", lo->duration, "seconds")->capture_default_str();
   loop->add_option("--priority", lo->priority, "SCHED_FIFO priority (0: none)")->capture_default_str();
-  loop->add_option("--cpu", lo->cpu, "pin to this CPU (-1: no affinity)")->capture_default_str();
+  loop->add_option("--cpu", lo->cpu, "pin both to this CPU (-1: the first allowed CPU, where cyclictest pins itself)")
+      ->capture_default_str();
+  loop->add_option("--rounds", lo->rounds, "alternate plexus and cyclictest in this many segments (ABBA order)")
+      ->capture_default_str();
   loop->add_option("--cpu-dma-latency", lo->cpu_dma_latency,
                    "CPU wake-up latency request, us, held on /dev/cpu_dma_latency by both (-1: none; cyclictest --laptop)")
       ->capture_default_str();

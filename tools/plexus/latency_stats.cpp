@@ -4,10 +4,13 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <stdexcept>
+#include <system_error>
 
 #include "external_program.hpp"
+#include "plexus/base/input_error.hpp"
 
 namespace plexus::cli {
 
@@ -105,6 +108,30 @@ void write_histogram_png(const std::string& png, const std::string& title, const
   std::string out;
   if (run_program(find_program("gnuplot"), {gp}, out, {}, true) != 0)
     throw std::runtime_error("gnuplot failed on " + gp + ": " + out);
+}
+
+nlohmann::ordered_json pct_json(const Percentiles& p) {
+  return {{"count", p.count}, {"mean_us", p.mean}, {"p50_us", p.p50}, {"p90_us", p.p90}, {"p99_us", p.p99}, {"max_us", p.max}};
+}
+
+void print_compare(const char* what, const Percentiles& a, const Percentiles& b, const std::string& b_name, bool b_has_p90) {
+  std::printf("\n%s (us)      %12s %12s %8s\n", what, "plexus", b_name.c_str(), "ratio");
+  const std::pair<const char*, std::pair<double, double>> rows[] = {
+      {"mean", {a.mean, b.mean}}, {"p50", {a.p50, b.p50}}, {"p90", {a.p90, b_has_p90 ? b.p90 : -1}},
+      {"p99", {a.p99, b.p99}},    {"max", {a.max, b.max}}};
+  for (const auto& [name, v] : rows) {
+    if (v.second < 0)
+      std::printf("  %-16s %12.1f %12s %8s\n", name, v.first, "n/a", "n/a");
+    else
+      std::printf("  %-16s %12.1f %12.1f %8s\n", name, v.first, v.second, ratio_text(v.first, v.second).c_str());
+  }
+}
+
+void make_out_dir(const std::string& dir) {
+  if (dir.empty()) return;
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec || !std::filesystem::is_directory(dir)) throw InputError("--out: cannot create directory " + dir);
 }
 
 }  // namespace plexus::cli

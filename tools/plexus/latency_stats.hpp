@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 namespace plexus::cli {
 
 struct Percentiles {
@@ -29,5 +31,14 @@ void write_histogram_png(const std::string& png, const std::string& title, const
 
 /// "1.23" or "n/a" for ratio a/b.
 std::string ratio_text(double a, double b);
+
+/// {"count", "mean_us", "p50_us", "p90_us", "p99_us", "max_us"}.
+nlohmann::ordered_json pct_json(const Percentiles& p);
+
+/// Prints the table mean/p50/p90/p99/max of `a` (plexus) and `b` (`b_name`) and their ratio.
+void print_compare(const char* what, const Percentiles& a, const Percentiles& b, const std::string& b_name, bool b_has_p90);
+
+/// Creates `dir` (and its parents) for --out; "" does nothing. InputError if it cannot.
+void make_out_dir(const std::string& dir);
 
 }  // namespace plexus::cli

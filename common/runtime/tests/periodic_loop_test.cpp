@@ -5,6 +5,7 @@
 #include <sys/prctl.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -65,6 +66,29 @@ TEST(PeriodicLoop, RejectsBadOptions) {
   EXPECT_THROW(PeriodicLoop({.rate_hz = 100, .priority = 120}), InputError);
   EXPECT_THROW(PeriodicLoop({.rate_hz = 100, .timer_slack_ns = -1}), InputError);
   EXPECT_THROW(PeriodicLoop({.rate_hz = 100, .cpu_dma_latency_us = -2}), InputError);
+  EXPECT_THROW(PeriodicLoop({.rate_hz = 100, .stats_window = 8}), InputError);
+}
+
+// The percentiles cover the last stats_window iterations (older ones leave the histogram)
+// and match the exact nearest-rank percentiles of the ticks' lateness within a bucket (1.6 %).
+TEST(PeriodicLoop, PercentilesOfTheLastWindowMatchTheTicks) {
+  constexpr std::size_t kWindow = 16;
+  PeriodicLoop loop({.rate_hz = 2000, .stats_window = kWindow});
+  std::vector<int64_t> late;
+  loop.run([&](const PeriodicLoop::Tick& t) {
+    late.push_back(t.wake_ns - t.deadline_ns);
+    return late.size() < 5 * kWindow + 3;
+  });
+  std::vector<int64_t> last(late.end() - kWindow, late.end());
+  std::sort(last.begin(), last.end());
+  const auto exact_us = [&](double q) {
+    return static_cast<double>(last[static_cast<std::size_t>(q * (kWindow - 1) + 0.5)]) * 1e-3;
+  };
+  const auto s = loop.stats();
+  EXPECT_EQ(s.iterations, late.size());
+  EXPECT_NEAR(s.jitter_p50_us, exact_us(0.50), exact_us(0.50) / 64 + 1e-3);
+  EXPECT_NEAR(s.jitter_p99_us, exact_us(0.99), exact_us(0.99) / 64 + 1e-3);
+  EXPECT_DOUBLE_EQ(s.jitter_max_us, static_cast<double>(*std::max_element(late.begin(), late.end())) * 1e-3);
 }
 
 // The loop thread's timer slack is 1 ns by default (Linux's 50 us default delays every
