@@ -16,6 +16,7 @@
 #include <fastdds/dds/topic/Topic.hpp>
 #include <fastdds/dds/topic/TypeSupport.hpp>
 #include <fastdds/rtps/transport/UDPv4TransportDescriptor.h>
+#include <fastdds/rtps/transport/shared_mem/SharedMemTransportDescriptor.h>
 #include <fastrtps/utils/IPLocator.h>
 
 #include <atomic>
@@ -48,9 +49,10 @@ std::string policy_name(fdds::QosPolicyId_t id) {
   return detail::standard_policy_name(static_cast<int>(id));
 }
 
-// The QoS of a profile, applied to a writer or a reader the same way.
+// The QoS of a profile, applied to a writer or a reader the same way. `data_sharing`: the
+// endpoint may hand samples over through shared memory to peers of this host that do too.
 template <class Q>
-void apply_common(Q& q, const QosProfile& p) {
+void apply_common(Q& q, const QosProfile& p, bool data_sharing) {
   q.reliability().kind = p.reliability == QosProfile::Reliability::reliable ? fdds::RELIABLE_RELIABILITY_QOS
                                                                             : fdds::BEST_EFFORT_RELIABILITY_QOS;
   q.reliability().max_blocking_time = to_duration(p.max_blocking_time_s);
@@ -72,8 +74,15 @@ void apply_common(Q& q, const QosProfile& p) {
   // Latency budget 0 means "no budget" (zero), not infinite as for the other durations.
   q.latency_budget().duration =
       p.latency_budget_s > 0 ? to_duration(p.latency_budget_s) : eprosima::fastrtps::Duration_t(0, 0);
-  // Identical behaviour on both vendors: no data-sharing shortcut, XCDR1 on the wire.
-  q.data_sharing().off();
+  // Data sharing (the writer's history in shared memory, read in place by a reader of the
+  // same host) only where NetworkOptions::transport allows it and for plain types: Fast DDS
+  // then chooses per peer (AUTO): a Cyclone DDS reader, one on another host, or any endpoint
+  // with DDS Security (Fast DDS turns AUTO off for a protected topic) gets RTPS messages.
+  // XCDR1 on the wire either way.
+  if (data_sharing)
+    q.data_sharing().automatic();
+  else
+    q.data_sharing().off();
   auto& repr = [&q]() -> fdds::DataRepresentationQosPolicy& {
     if constexpr (requires { q.representation(); })
       return q.representation();  // DataWriterQos
@@ -380,9 +389,15 @@ FastParticipant::FastParticipant(const ParticipantOptions& o) : Participant(o), 
   });
   fdds::DomainParticipantQos pq;
   pq.name(o.name);
-  // Transport: UDPv4 on the configured interface only (loopback by default); no shared
-  // memory, so the same packets flow whichever vendor is on the other side.
+  // Transport: UDPv4 on the configured interface only (loopback by default), and unless
+  // NetworkOptions::transport says udp, Fast DDS's shared-memory transport beside it. A peer
+  // announces both; Fast DDS uses shared memory with a Fast DDS peer of the same host (same
+  // host id in the SHM locator) and UDP with any other: a Cyclone DDS peer ignores the SHM
+  // locators, another host cannot reach them. RTPS messages are encrypted before either
+  // transport carries them, so DDS Security works over both (docs/runtime.md, Transports).
   pq.transport().use_builtin_transports = false;
+  if (o.network.transport != Transport::udp)
+    pq.transport().user_transports.push_back(std::make_shared<eprosima::fastdds::rtps::SharedMemTransportDescriptor>());
   auto udp = std::make_shared<eprosima::fastdds::rtps::UDPv4TransportDescriptor>();
   udp->interfaceWhiteList.push_back(o.network.interface_address);
   pq.transport().user_transports.push_back(udp);
@@ -448,6 +463,14 @@ fdds::Topic* FastParticipant::topic(const msg::TypeSupport& type, const std::str
   return t;
 }
 
+bool FastParticipant::data_sharing(const msg::TypeSupport& type) const {
+  // Plain types only (fixed size, no sequence or string): the writer's pool then holds
+  // samples of one known size. LatencyProbe (a bounded sequence) goes over SHM instead.
+  if (options().network.transport == Transport::udp) return false;
+  const fdds::TypeSupport ts = participant_->find_type(type.type_name);
+  return !ts.empty() && ts.is_plain();
+}
+
 std::string FastParticipant::local_qos(const std::string& topic, bool writer) const {
   std::lock_guard lk(mu_);
   auto it = qos_by_endpoint_.find((writer ? "w:" : "r:") + topic);
@@ -458,7 +481,7 @@ std::unique_ptr<WriterBackend> FastParticipant::make_writer(const msg::TypeSuppo
                                                             const QosProfile& qos) {
   fdds::Topic* t = topic(type, topic_name);
   fdds::DataWriterQos wq = publisher_->get_default_datawriter_qos();
-  apply_common(wq, qos);
+  apply_common(wq, qos, data_sharing(type));
   // A lost sample is asked for when the next heartbeat arrives, and repaired 1 ms after the
   // request (NetworkOptions::reliable_heartbeat_s; Fast DDS's defaults: 3 s and 5 ms).
   wq.reliable_writer_qos().times.heartbeatPeriod = to_duration(options().network.reliable_heartbeat_s);
@@ -478,7 +501,7 @@ std::unique_ptr<ReaderBackend> FastParticipant::make_reader(const msg::TypeSuppo
                                                             const QosProfile& qos) {
   fdds::Topic* t = topic(type, topic_name);
   fdds::DataReaderQos rq = subscriber_->get_default_datareader_qos();
-  apply_common(rq, qos);
+  apply_common(rq, qos, data_sharing(type));
   // Asks for what a heartbeat says it missed 1 ms after it (default 5 ms): NetworkOptions.
   rq.reliable_reader_qos().times.heartbeatResponseDelay = eprosima::fastrtps::Duration_t(0, 1'000'000);
   {
