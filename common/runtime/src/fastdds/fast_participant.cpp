@@ -75,7 +75,7 @@ void apply_common(Q& q, const QosProfile& p, bool data_sharing) {
   q.latency_budget().duration =
       p.latency_budget_s > 0 ? to_duration(p.latency_budget_s) : eprosima::fastrtps::Duration_t(0, 0);
   // Data sharing (the writer's history in shared memory, read in place by a reader of the
-  // same host) only where NetworkOptions::transport allows it and for plain types: Fast DDS
+  // same host) only with transport shm and for plain types (data_sharing()): Fast DDS
   // then chooses per peer (AUTO): a Cyclone DDS reader, one on another host, or any endpoint
   // with DDS Security (Fast DDS turns AUTO off for a protected topic) gets RTPS messages.
   // XCDR1 on the wire either way.
@@ -464,9 +464,13 @@ fdds::Topic* FastParticipant::topic(const msg::TypeSupport& type, const std::str
 }
 
 bool FastParticipant::data_sharing(const msg::TypeSupport& type) const {
-  // Plain types only (fixed size, no sequence or string): the writer's pool then holds
-  // samples of one known size. LatencyProbe (a bounded sequence) goes over SHM instead.
-  if (options().network.transport == Transport::udp) return false;
+  // Only when asked for (transport shm), not by default: a data-sharing reader reads the
+  // sample in the writer's pool, so what it has received but not yet taken is gone when
+  // the writer is deleted. Measured: a reader taking 6 s after start got the writer's last
+  // sample over UDP and over the SHM transport, and nothing with data sharing once the
+  // writer's process had ended (docs/runtime.md, Transports). Plain types only (fixed size):
+  // the pool holds samples of one known size; LatencyProbe (a bounded sequence) uses SHM.
+  if (options().network.transport != Transport::shm) return false;
   const fdds::TypeSupport ts = participant_->find_type(type.type_name);
   return !ts.empty() && ts.is_plain();
 }

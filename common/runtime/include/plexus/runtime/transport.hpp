@@ -1,13 +1,14 @@
 // How DDS samples travel between processes of one host (docs/runtime.md, Transports).
 //
-//   auto  Fast DDS: shared memory (its SHM transport, and data sharing for plain types)
-//         between Fast DDS participants of one host, UDPv4 to everything else (other hosts,
-//         Cyclone DDS peers). Cyclone DDS: UDPv4. The default.
+//   auto  Fast DDS: its shared-memory transport between Fast DDS participants of one host,
+//         UDPv4 to everything else (other hosts, Cyclone DDS peers). Cyclone DDS: UDPv4.
+//         The default.
 //   udp   UDPv4 only, on both vendors: every sample crosses the loopback interface, as
-//         before shared memory existed (to compare, or for tests that cut the network).
-//   shm   As auto, asked for explicitly: Cyclone DDS cannot carry plexus's samples over
-//         iceoryx (docs/runtime.md says why), so a Cyclone participant says so on stderr
-//         once and stays on UDP.
+//         before shared memory existed (to compare, or for tests that capture the network).
+//   shm   As auto, and Fast DDS data sharing for plain (fixed-size) types: a reader of the
+//         same host reads the sample in the writer's pool. Cyclone DDS cannot carry plexus's
+//         samples over iceoryx (docs/runtime.md says why), so a Cyclone participant says so
+//         on stderr once and stays on UDP.
 #pragma once
 
 #include <string_view>
