@@ -15,7 +15,7 @@ void ServiceDdsOptions::add_to(CLI::App& app) {
   app.add_option("--interface", interface_address, "Address of the one interface DDS uses (default 127.0.0.1)");
   app.add_option("--peers", peers, "Comma-separated unicast discovery peers (default 127.0.0.1)");
   app.add_option("--transport", transport,
-                 "auto (Fast DDS: shared memory with same-host Fast DDS peers, else UDP), udp, or shm (auto + Fast DDS data sharing) (default auto)");
+                 "auto (today UDP), udp, or shm (Fast DDS: shared memory with same-host Fast DDS peers, else UDP) (default auto)");
   rt::add_security_options(app, security, identity, governance);
 }
 

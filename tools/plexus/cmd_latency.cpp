@@ -130,7 +130,7 @@ int run_pingpong(const PingOpts& o) {
   const rt::Transport transport = rt::parse_transport(o.transport, "--transport");
   // What carries the samples: shared memory only between two Fast DDS participants of this
   // host (Cyclone DDS stays on UDP, docs/runtime.md, Transports); the baseline uses the same.
-  const bool shm = transport != rt::Transport::udp && vendor == rt::Vendor::fast && peer_vendor == rt::Vendor::fast;
+  const bool shm = transport == rt::Transport::shm && vendor == rt::Vendor::fast && peer_vendor == rt::Vendor::fast;
   const std::string qos_file = o.qos_file.empty() ? rt::default_qos_file() : o.qos_file;
   const auto qos = rt::QosProfiles::load(qos_file).get(o.profile);
   if (o.size < 0 || o.size > 65536) throw InputError("--size: must be in 0..65536 bytes, got " + std::to_string(o.size));
@@ -558,7 +558,7 @@ Command add_latency_command(CLI::App& root) {
   ping->add_option("--count", po->count, "measured round trips")->capture_default_str();
   ping->add_option("--domain", po->domain, "DDS domain (the baseline uses domain + 1)")->capture_default_str();
   ping->add_option("--transport", po->transport,
-                   "auto, udp or shm: shared memory between Fast DDS peers unless udp (docs/runtime.md)")
+                   "auto, udp or shm: shm carries Fast DDS round trips over shared memory (docs/runtime.md)")
       ->capture_default_str();
   ping->add_option("-o,--out", po->out, "directory for the PNG histogram and JSON");
   ping->add_flag("--no-baseline", po->no_baseline, "skip the vendor baseline");
