@@ -14,6 +14,8 @@ void ServiceDdsOptions::add_to(CLI::App& app) {
   app.add_option("--service", service, "Name in heartbeats and logs (default: the executable and what it hosts)");
   app.add_option("--interface", interface_address, "Address of the one interface DDS uses (default 127.0.0.1)");
   app.add_option("--peers", peers, "Comma-separated unicast discovery peers (default 127.0.0.1)");
+  app.add_option("--transport", transport,
+                 "auto (today UDP), udp, or shm (Fast DDS: shared memory with same-host Fast DDS peers, else UDP) (default auto)");
   rt::add_security_options(app, security, identity, governance);
 }
 
@@ -24,6 +26,7 @@ rt::ParticipantOptions ServiceDdsOptions::participant(const std::string& default
   po.domain_id = domain;
   po.name = service.empty() ? default_name : service;
   po.network.interface_address = interface_address;
+  po.network.transport = rt::parse_transport(transport);
   std::set<std::string> unique;
   std::stringstream ss(peers);
   for (std::string item; std::getline(ss, item, ',');)

@@ -82,7 +82,7 @@ void add(std::vector<Endpoints>& eps, const std::string& only, const std::string
 
 int main(int argc, char** argv) {
   CLI::App app{"plexus test peer"};
-  std::string role, dds = "fast", types = "all", prefix = "peer", values = "pattern";
+  std::string role, dds = "fast", types = "all", prefix = "peer", values = "pattern", transport = "auto";
   int domain = 0, count = 5;
   double timeout_s = 20.0;
   app.add_option("role", role, "pub or sub")->required()->check(CLI::IsMember({"pub", "sub"}));
@@ -92,6 +92,7 @@ int main(int argc, char** argv) {
   app.add_option("--types", types, "all, or one type name (Pose2D)");
   app.add_option("--prefix", prefix, "topic prefix");
   app.add_option("--timeout", timeout_s, "seconds");
+  app.add_option("--transport", transport, "auto, udp or shm");
   app.add_option("--values", values, "pattern (every type) or simple (Pose2D, JointState: native peers' values)")
       ->check(CLI::IsMember({"pattern", "simple"}));
   CLI11_PARSE(app, argc, argv);
@@ -102,6 +103,7 @@ int main(int argc, char** argv) {
     po.vendor = rt::parse_vendor(dds);
     po.domain_id = domain;
     po.name = "plexus_test_peer " + role;
+    po.network.transport = rt::parse_transport(transport);
     auto participant = rt::Participant::create(po);
     rt::QosProfile qos;
     qos.name = "test";

@@ -7,7 +7,9 @@
 #   governance_sign.p7s (signed): the subscriber gets them, the capture still holds both
 #                                 (signed, not encrypted);
 #   governance.p7s (encrypted)  : the subscriber gets them, the capture holds neither.
-# The first two show that the capture and the search work; the third is the claim.
+# The first two show that the capture and the search work; the third is the claim. The
+# probes use --transport udp: between Fast DDS peers, shared memory carries nothing a
+# capture could see (docs/runtime.md, Transports).
 set -u
 probe=$1 pki=$2 vendor=$3 domain=$4
 marker=plexus-plaintext-marker-7f3a
@@ -26,10 +28,10 @@ run() {  # run NAME EXPECT(clear|hidden) [security args...]
   ip netns exec "$ns" tcpdump -i lo -U -n -w "$work/$name.pcap" udp portrange $lo-$hi 2> "$work/$name.tcpdump" &
   local dump=$!
   for _ in $(seq 100); do grep -q "listening on" "$work/$name.tcpdump" && break; sleep 0.1; done
-  ip netns exec "$ns" "$probe" sub --dds "$vendor" --domain "$domain" --label "$marker" --expect 10 --duration 40 \
+  ip netns exec "$ns" "$probe" sub --dds "$vendor" --domain "$domain" --label "$marker" --expect 10 --duration 40 --transport udp \
     ${1:+"$@" --identity probe_sub} > "$work/$name.sub" 2>&1 &
   local sub=$!
-  ip netns exec "$ns" "$probe" pub --dds "$vendor" --domain "$domain" --label "$marker" --duration 40 \
+  ip netns exec "$ns" "$probe" pub --dds "$vendor" --domain "$domain" --label "$marker" --duration 40 --transport udp \
     ${1:+"$@" --identity probe_pub} > "$work/$name.pub" 2>&1 &
   local pub=$!
   wait $sub

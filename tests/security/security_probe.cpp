@@ -28,7 +28,7 @@ int main(int argc, char** argv) {
   using namespace plexus;
   CLI::App app{"security_probe: one topic, with or without DDS Security"};
   app.require_subcommand(1);
-  std::string dds = "fast", topic = "secure/probe", label = "plexus-probe", pki, identity, governance;
+  std::string dds = "fast", topic = "secure/probe", label = "plexus-probe", pki, identity, governance, transport = "auto";
   int domain = 100, expect = 1;
   double duration = 10, min_duration = 0;
   for (auto* sub : {app.add_subcommand("pub", "publish"), app.add_subcommand("sub", "subscribe")}) {
@@ -40,6 +40,7 @@ int main(int argc, char** argv) {
     sub->add_option("--security", pki, "PKI folder: DDS Security on");
     sub->add_option("--identity", identity, "identity in the PKI folder");
     sub->add_option("--governance", governance, "governance document (default PKI/governance.p7s)");
+    sub->add_option("--transport", transport, "auto, udp or shm (a capture sees only udp)");
   }
   app.get_subcommand("sub")->add_option("--expect", expect, "samples with the label to wait for (0: none may arrive)");
   app.get_subcommand("sub")->add_option("--min-duration", min_duration, "seconds to read at least (intruders publish too)");
@@ -58,6 +59,7 @@ int main(int argc, char** argv) {
     po.vendor = rt::parse_vendor(dds);
     po.domain_id = domain;
     po.name = std::string("security_probe ") + (publishing ? "pub" : "sub");
+    po.network.transport = rt::parse_transport(transport);
     if (!pki.empty()) {
       if (identity.empty()) throw InputError("--security needs --identity");
       po.security = rt::security_from_pki(pki, identity, governance);

@@ -27,7 +27,7 @@ void on_signal(int) { g_stop = true; }
 int main(int argc, char** argv) {
   using namespace plexus;
   CLI::App app{"topic_peer: one Pose2D writer or reader"};
-  std::string role, dds = "fast", topic = "tools/pose", profile = "sensor";
+  std::string role, dds = "fast", topic = "tools/pose", profile = "sensor", transport = "auto";
   int domain = 180, count = 0, expect = 0;
   double rate = 50, duration = 20;
   bool wait_reader = false;
@@ -41,6 +41,7 @@ int main(int argc, char** argv) {
   app.add_option("--duration", duration);
   app.add_option("--expect", expect, "sub: exit 1 unless at least this many samples arrived (it ends once they have)");
   app.add_flag("--wait-reader", wait_reader, "pub: start publishing once a reader matched");
+  app.add_option("--transport", transport, "auto, udp or shm");
   CLI11_PARSE(app, argc, argv);
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
@@ -51,6 +52,7 @@ int main(int argc, char** argv) {
     po.vendor = rt::parse_vendor(dds);
     po.domain_id = domain;
     po.name = "topic_peer_" + role;
+    po.network.transport = rt::parse_transport(transport);
     auto p = rt::Participant::create(po);
     const int64_t end = monotonic_ns() + static_cast<int64_t>(duration * 1e9);
     if (role == "sub") {

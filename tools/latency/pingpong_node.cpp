@@ -77,12 +77,13 @@ int main(int argc, char** argv) {
   CLI::App app{"pingpong_node: plexus side of plexus latency pingpong"};
   app.set_version_flag("--version", std::string("pingpong_node") + " " + PLEXUS_VERSION);
   latency::PingPongOptions o;
-  std::string dds = "fast", qos_file, profile = "latency", log_level = "error";
+  std::string dds = "fast", qos_file, profile = "latency", log_level = "error", transport = "auto";
   latency::add_pingpong_options(app, o);
   app.add_option("--dds", dds, "DDS vendor: fast or cyclone");
   app.add_option("--qos-file", qos_file, "QoS profiles (default: deploy/qos.yaml)");
   app.add_option("--profile", profile, "QoS profile name");
   app.add_option("--log-level", log_level, "trace, debug, info, warn, error");
+  app.add_option("--transport", transport, "auto, udp or shm (docs/runtime.md, Transports)");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -96,6 +97,7 @@ int main(int argc, char** argv) {
     po.vendor = rt::parse_vendor(dds);
     po.domain_id = o.domain;
     po.name = "pingpong_" + o.role;
+    po.network.transport = rt::parse_transport(transport);
     const auto profiles = rt::QosProfiles::load(qos_file.empty() ? rt::default_qos_file() : qos_file);
     const auto& qos = profiles.get(profile);
     auto participant = rt::Participant::create(po);

@@ -1,8 +1,10 @@
 // raw_fast_pingpong: the Fast DDS baseline of `plexus latency pingpong`, written against the
 // plain Fast DDS 2.9 API (no plexus code) with the fastddsgen type of the same IDL
 // (LatencyProbe) and the transport plexus uses: UDPv4 on 127.0.0.1 only, unicast discovery
-// on the well-known ports, no shared memory, no data sharing, XCDR1. Same options, same
-// measurement and the same JSON line as pingpong_node.
+// on the well-known ports, no data sharing, XCDR1; with --shm, Fast DDS's shared-memory
+// transport beside UDPv4, as plexus's transport auto/shm (LatencyProbe is not a plain type,
+// so plexus does not data-share it either). Same options, same measurement and the same
+// JSON line as pingpong_node.
 #include <fastdds/dds/domain/DomainParticipant.hpp>
 #include <fastdds/dds/domain/DomainParticipantFactory.hpp>
 #include <fastdds/dds/publisher/DataWriter.hpp>
@@ -13,6 +15,7 @@
 #include <fastdds/dds/subscriber/Subscriber.hpp>
 #include <fastdds/dds/topic/Topic.hpp>
 #include <fastdds/rtps/transport/UDPv4TransportDescriptor.h>
+#include <fastdds/rtps/transport/shared_mem/SharedMemTransportDescriptor.h>
 #include <fastrtps/utils/IPLocator.h>
 
 #include <atomic>
@@ -68,11 +71,12 @@ int main(int argc, char** argv) {
   CLI::App app{"raw_fast_pingpong: plain Fast DDS ping-pong baseline"};
   app.set_version_flag("--version", std::string("raw_fast_pingpong") + " " + PLEXUS_VERSION);
   plexus::latency::PingPongOptions o;
-  bool best_effort = false;
+  bool best_effort = false, shm = false;
   int depth = 16;
   plexus::latency::add_pingpong_options(app, o);
   app.add_flag("--best-effort", best_effort, "best-effort instead of reliable");
   app.add_option("--depth", depth, "keep_last depth")->check(CLI::Range(1, 100000));
+  app.add_flag("--shm", shm, "shared-memory transport beside UDPv4 (same-host peers use it)");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -85,6 +89,7 @@ int main(int argc, char** argv) {
   DomainParticipantQos pq;
   pq.name(ping ? "raw_fast_ping" : "raw_fast_pong");
   pq.transport().use_builtin_transports = false;
+  if (shm) pq.transport().user_transports.push_back(std::make_shared<eprosima::fastdds::rtps::SharedMemTransportDescriptor>());
   auto udp = std::make_shared<eprosima::fastdds::rtps::UDPv4TransportDescriptor>();
   udp->interfaceWhiteList.push_back("127.0.0.1");
   pq.transport().user_transports.push_back(udp);

@@ -22,6 +22,7 @@
 #include "latency_stats.hpp"
 #include "plexus/base/input_error.hpp"
 #include "plexus/runtime/qos.hpp"
+#include "plexus/runtime/transport.hpp"
 #include "plexus/runtime/vendor.hpp"
 #include "recording.hpp"
 #include "topic_discovery.hpp"
@@ -50,7 +51,7 @@ std::vector<double> read_numbers(const std::string& path) {
 // pingpong
 
 struct PingOpts {
-  std::string dds = "fast", peer_dds, profile = "latency", qos_file, out;
+  std::string dds = "fast", peer_dds, profile = "latency", qos_file, out, transport = "auto";
   int size = 0, count = 2000, domain = 180;
   double rate = 1000;
   bool json = false, no_baseline = false;
@@ -102,7 +103,11 @@ Json parse_ddsperf(const std::string& out) {
 int run_pingpong(const PingOpts& o) {
   const rt::Vendor vendor = rt::parse_vendor(o.dds, "--dds");
   const std::string peer = o.peer_dds.empty() ? o.dds : o.peer_dds;
-  rt::parse_vendor(peer, "--peer-dds");
+  const rt::Vendor peer_vendor = rt::parse_vendor(peer, "--peer-dds");
+  const rt::Transport transport = rt::parse_transport(o.transport, "--transport");
+  // What carries the samples: shared memory only between two Fast DDS participants of this
+  // host (Cyclone DDS stays on UDP, docs/runtime.md, Transports); the baseline uses the same.
+  const bool shm = transport == rt::Transport::shm && vendor == rt::Vendor::fast && peer_vendor == rt::Vendor::fast;
   const std::string qos_file = o.qos_file.empty() ? rt::default_qos_file() : o.qos_file;
   const auto qos = rt::QosProfiles::load(qos_file).get(o.profile);
   if (o.size < 0 || o.size > 65536) throw InputError("--size: must be in 0..65536 bytes, got " + std::to_string(o.size));
@@ -119,7 +124,8 @@ int run_pingpong(const PingOpts& o) {
   // plexus: pingpong_node ping (--dds) against pingpong_node pong (--peer-dds).
   const std::string samples = temp_path("pingpong_samples");
   auto args = [&](const char* role, const std::string& vendor_name, const std::string& domain) {
-    std::vector<std::string> a = {role, "--dds", vendor_name, "--domain", domain, "--qos-file", qos_file, "--profile", o.profile};
+    std::vector<std::string> a = {role,      "--dds",      vendor_name, "--domain",    domain,
+                                  "--qos-file", qos_file, "--profile", o.profile, "--transport", o.transport};
     a.insert(a.end(), common.begin(), common.end());
     return a;
   };
@@ -145,6 +151,7 @@ int run_pingpong(const PingOpts& o) {
       std::vector<std::string> base = {"--domain", d2, "--depth", std::to_string(qos.depth)};
       base.insert(base.end(), common.begin(), common.end());
       if (qos.reliability == rt::QosProfile::Reliability::best_effort) base.push_back("--best-effort");
+      if (shm) base.push_back("--shm");
       std::vector<std::string> pa = {"pong", "--duration", pong_duration};
       pa.insert(pa.end(), base.begin(), base.end());
       const pid_t rpong = spawn("raw_fast_pingpong", pa);
@@ -188,6 +195,7 @@ int run_pingpong(const PingOpts& o) {
   Percentiles a = pct_of_result(plexus_r), b = vendor_r.is_null() ? Percentiles{} : pct_of_result(vendor_r);
   Json result = {{"dds", o.dds},     {"peer_dds", peer},  {"profile", o.profile},
                  {"size", o.size},   {"rate_hz", o.rate}, {"count", o.count},
+                 {"transport", o.transport}, {"carried_by", shm ? "shm" : "udp"},
                  {"plexus", plexus_r}};
   if (!vendor_r.is_null()) {
     result["vendor"] = vendor_r;
@@ -197,16 +205,18 @@ int run_pingpong(const PingOpts& o) {
   if (!o.out.empty()) {
     std::vector<Series> series = {{"plexus " + o.dds + "->" + peer, plexus_samples, false}};
     if (!vendor_samples.empty()) series.push_back({vendor_name, vendor_samples, false});
-    const std::string png = o.out + "/pingpong_" + o.dds + "_" + std::to_string(o.size) + ".png";
-    write_histogram_png(png, "round trip, " + std::to_string(o.size) + " B payload, " + o.dds, series);
-    result["png"] = png;
-    std::ofstream(o.out + "/pingpong_" + o.dds + "_" + std::to_string(o.size) + ".json") << result.dump(2) << '\n';
+    const std::string stem = o.out + "/pingpong_" + o.dds + "_" + std::to_string(o.size) + (shm ? "_shm" : "");
+    write_histogram_png(stem + ".png", "round trip, " + std::to_string(o.size) + " B payload, " + o.dds + (shm ? ", shm" : ""),
+                        series);
+    result["png"] = stem + ".png";
+    std::ofstream(stem + ".json") << result.dump(2) << '\n';
   }
   if (o.json) {
     std::printf("%s\n", result.dump().c_str());
   } else {
-    std::printf("plexus latency pingpong: %s -> %s, profile '%s', payload %d B, %g Hz, %d round trips, loopback\n",
-                o.dds.c_str(), peer.c_str(), o.profile.c_str(), o.size, o.rate, o.count);
+    std::printf("plexus latency pingpong: %s -> %s, profile '%s', payload %d B, %g Hz, %d round trips, %s\n",
+                o.dds.c_str(), peer.c_str(), o.profile.c_str(), o.size, o.rate, o.count,
+                shm ? "shared memory" : "UDP on loopback");
     std::printf("plexus: received %d/%d, %.0f round trips/s\n", plexus_r.value("received", 0), o.count,
                 plexus_r.value("round_trips_per_s", 0.0));
     if (!vendor_r.is_null()) {
@@ -395,6 +405,9 @@ Command add_latency_command(CLI::App& root) {
   ping->add_option("--rate", po->rate, "pings per second (0: back to back)")->capture_default_str();
   ping->add_option("--count", po->count, "measured round trips")->capture_default_str();
   ping->add_option("--domain", po->domain, "DDS domain (the baseline uses domain + 1)")->capture_default_str();
+  ping->add_option("--transport", po->transport,
+                   "auto, udp or shm: shm carries Fast DDS round trips over shared memory (docs/runtime.md)")
+      ->capture_default_str();
   ping->add_option("-o,--out", po->out, "directory for the PNG histogram and JSON");
   ping->add_flag("--no-baseline", po->no_baseline, "skip the vendor baseline");
   ping->add_flag("--json", po->json, "one JSON object");

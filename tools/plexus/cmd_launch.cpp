@@ -62,6 +62,7 @@ struct LaunchOptions {
   std::vector<std::string> kills;    // PROCESS@SECONDS (fault injection, realtime)
   std::vector<std::string> externals;  // processes provided from outside (replay, hardware bridge)
   std::string dds, out, qos_file, host, record;
+  std::string transport;  // --transport: dds.transport of the scenario, overridden (travels as a --set)
   int domain = -1;
   double timeout = 10.0;
   bool json = false, quiet = false, report = false;
@@ -84,6 +85,12 @@ int run_launch(LaunchOptions o) {
     o.host = request.host, o.scenario = request.scenario_origin, o.sets = request.sets, o.vendors = request.vendors;
     o.externals = request.externals, o.dds = request.dds, o.qos_file = request.qos_file, o.out = request.out;
     o.domain = request.domain, o.timeout = request.timeout;
+  }
+  // --transport is dds.transport overridden: as a --set it reaches the hosts over ssh too.
+  if (!o.remote && !o.transport.empty()) {
+    rt::parse_transport(o.transport, "--transport");
+    o.sets.push_back("dds.transport=" + o.transport);
+    o.transport.clear();
   }
   std::vector<scenario::Override> overrides;
   for (const auto& s : o.sets) overrides.push_back(scenario::parse_override(s));
@@ -110,6 +117,7 @@ int run_launch(LaunchOptions o) {
   std::vector<Process> procs = plan(sc, o.host);
   // Network: loopback, or this host's address with every host of the scenario as a peer.
   rt::NetworkOptions net;
+  net.transport = rt::parse_transport(sc.dds_transport, o.scenario + ": dds.transport");
   if (!o.host.empty() && !sc.host_address.at(o.host).empty()) {
     net.interface_address = sc.host_address.at(o.host);
     net.peers.clear();
@@ -198,7 +206,7 @@ int run_launch(LaunchOptions o) {
   std::signal(SIGTERM, on_signal);
   std::vector<std::string> common{"--domain", std::to_string(domain), "--qos-file", qos_file,
                                   "--timeout", std::to_string(o.timeout), "--interface", net.interface_address,
-                                  "--peers", peers};
+                                  "--peers", peers, "--transport", sc.dds_transport};
 
   rt::ParticipantOptions po;
   po.vendor = rt::parse_vendor(vendor);
@@ -275,7 +283,7 @@ int run_launch(LaunchOptions o) {
     if (p.program == "replay") {  // plexus replay of the robot's topics, not a service
       args = replay_args(sc, p);
       args.insert(args.end(), {"--dds", p.vendor, "--domain", std::to_string(domain), "--qos-file", qos_file,
-                               "--interface", net.interface_address, "--peers", peers});
+                               "--interface", net.interface_address, "--peers", peers, "--transport", sc.dds_transport});
     }
     const auto security_args = security.args(p.name);
     args.insert(args.end(), security_args.begin(), security_args.end());
@@ -547,6 +555,8 @@ Command add_launch_command(CLI::App& root) {
   c.app->add_option("scenario", o->scenario, "Scenario file (YAML; required but with the internal --remote)");
   c.app->add_option("--host", o->host, "Start only the processes assigned to this host of the scenario");
   c.app->add_option("--dds", o->dds, "DDS vendor of the clock and of every process without a `dds` key in the scenario (default: dds.vendor, else fast)");
+  c.app->add_option("--transport", o->transport,
+                    "auto, udp or shm: between processes of one host (docs/runtime.md, Transports; default: dds.transport, else auto)");
   c.app->add_option("--kill", o->kills, "Fault injection (realtime): SIGKILL PROCESS at SECONDS, as PROCESS@SECONDS");
   c.app->add_option("--external", o->externals,
                      "Do not start PROCESS: plexus replay or a hardware bridge provides its topics (repeatable)");

@@ -20,6 +20,7 @@ struct DdsOptions {
   int domain = 0;
   std::string interface_address = "127.0.0.1";  ///< the one interface DDS uses
   std::string peers = "127.0.0.1";              ///< comma-separated unicast discovery peers
+  std::string transport = "auto";               ///< auto | udp | shm (plexus/runtime/transport.hpp)
   std::string security, identity, governance;   ///< DDS Security (plexus/runtime/security_cli.hpp)
 };
 void add_dds_options(CLI::App* app, DdsOptions& o);

@@ -221,6 +221,9 @@ struct Loader {
         dds.fail("vendor", "expected fast or cyclone, got '" + sc.dds_vendor + "'");
       sc.dds_domain = dds.optional<int>("domain", 0);
       if (sc.dds_domain < 0 || sc.dds_domain > 232) dds.fail("domain", "must be in 0..232");
+      sc.dds_transport = dds.optional<std::string>("transport", "auto");
+      if (sc.dds_transport != "auto" && sc.dds_transport != "udp" && sc.dds_transport != "shm")
+        dds.fail("transport", "expected auto, udp or shm, got '" + sc.dds_transport + "'");
       dds.reject_unknown();
     }
     if (top.has("security")) sc.security = load_security_section(top, sc.base_dir);

@@ -7,8 +7,10 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <functional>
+#include <mutex>
 #include <stdexcept>
 
 #include "../policy_names.hpp"
@@ -334,7 +336,25 @@ std::string CycloneParticipant::config_xml(const NetworkOptions& net) {
          "</Domain></CycloneDDS>";
 }
 
+// Shared memory (iceoryx) stays off: Cyclone DDS 0.10 gives a writer an iceoryx publisher
+// when its type can be serialised into a chunk (plexus's sertype can) and its QoS allows it,
+// but only dds_write / dds_write_loan put a sample into a chunk. plexus writes serdata with
+// dds_writecdr, which has no chunk: the sample then goes to the network path, which leaves
+// out every reader reached over iceoryx (its SHM locator), and to no iceoryx subscriber, so
+// a Cyclone DDS reader of the same host would silently get nothing (dds_write.c,
+// dds_writecdr_impl_common / deliver_data_any; ddsi_wraddrset.c). docs/runtime.md, Transports.
+static void warn_no_cyclone_shm(Transport t) {
+  if (t != Transport::shm) return;
+  static std::once_flag once;
+  std::call_once(once, [] {
+    std::fprintf(stderr,
+                 "plexus: transport shm: Cyclone DDS stays on UDP (iceoryx cannot carry samples written with "
+                 "dds_writecdr in Cyclone DDS 0.10; docs/runtime.md, Transports)\n");
+  });
+}
+
 CycloneParticipant::CycloneParticipant(const ParticipantOptions& o) : Participant(o) {
+  warn_no_cyclone_shm(o.network.transport);
   const auto domain = static_cast<dds_domainid_t>(o.domain_id);
   acquire_domain(domain, config_xml(o.network));
   struct Release {  // the domain goes again if the participant cannot be created

@@ -16,6 +16,7 @@
 #include <fastdds/dds/topic/Topic.hpp>
 #include <fastdds/dds/topic/TypeSupport.hpp>
 #include <fastdds/rtps/transport/UDPv4TransportDescriptor.h>
+#include <fastdds/rtps/transport/shared_mem/SharedMemTransportDescriptor.h>
 #include <fastrtps/utils/IPLocator.h>
 
 #include <atomic>
@@ -49,9 +50,10 @@ std::string policy_name(fdds::QosPolicyId_t id) {
   return detail::standard_policy_name(static_cast<int>(id));
 }
 
-// The QoS of a profile, applied to a writer or a reader the same way.
+// The QoS of a profile, applied to a writer or a reader the same way. `data_sharing`: the
+// endpoint may hand samples over through shared memory to peers of this host that do too.
 template <class Q>
-void apply_common(Q& q, const QosProfile& p) {
+void apply_common(Q& q, const QosProfile& p, bool data_sharing) {
   q.reliability().kind = p.reliability == QosProfile::Reliability::reliable ? fdds::RELIABLE_RELIABILITY_QOS
                                                                             : fdds::BEST_EFFORT_RELIABILITY_QOS;
   q.reliability().max_blocking_time = to_duration(p.max_blocking_time_s);
@@ -73,8 +75,15 @@ void apply_common(Q& q, const QosProfile& p) {
   // Latency budget 0 means "no budget" (zero), not infinite as for the other durations.
   q.latency_budget().duration =
       p.latency_budget_s > 0 ? to_duration(p.latency_budget_s) : eprosima::fastrtps::Duration_t(0, 0);
-  // Identical behaviour on both vendors: no data-sharing shortcut, XCDR1 on the wire.
-  q.data_sharing().off();
+  // Data sharing (the writer's history in shared memory, read in place by a reader of the
+  // same host) only with transport shm and for plain types (data_sharing()): Fast DDS
+  // then chooses per peer (AUTO): a Cyclone DDS reader, one on another host, or any endpoint
+  // with DDS Security (Fast DDS turns AUTO off for a protected topic) gets RTPS messages.
+  // XCDR1 on the wire either way.
+  if (data_sharing)
+    q.data_sharing().automatic();
+  else
+    q.data_sharing().off();
   auto& repr = [&q]() -> fdds::DataRepresentationQosPolicy& {
     if constexpr (requires { q.representation(); })
       return q.representation();  // DataWriterQos
@@ -395,9 +404,18 @@ FastParticipant::FastParticipant(const ParticipantOptions& o) : Participant(o), 
   });
   fdds::DomainParticipantQos pq;
   pq.name(o.name);
-  // Transport: UDPv4 on the configured interface only (loopback by default); no shared
-  // memory, so the same packets flow whichever vendor is on the other side.
+  // Transport: UDPv4 on the configured interface only (loopback by default), and with
+  // NetworkOptions::transport shm, Fast DDS's shared-memory transport beside it. A peer
+  // announces both; Fast DDS uses shared memory with a Fast DDS peer of the same host (same
+  // host id in the SHM locator) and UDP with any other: a Cyclone DDS peer ignores the SHM
+  // locators, another host cannot reach them. RTPS messages are encrypted before either
+  // transport carries them, so DDS Security works over both (docs/runtime.md, Transports).
+  // Only with transport shm, not by default (auto is UDP for now): a reader killed with
+  // SIGKILL and started again beside a running writer got nothing for 4 s in 2 of 5 rounds
+  // over the SHM transport (tests/fault/restarted_reader.sh; 0 of 5 over UDP).
   pq.transport().use_builtin_transports = false;
+  if (o.network.transport == Transport::shm)
+    pq.transport().user_transports.push_back(std::make_shared<eprosima::fastdds::rtps::SharedMemTransportDescriptor>());
   auto udp = std::make_shared<eprosima::fastdds::rtps::UDPv4TransportDescriptor>();
   udp->interfaceWhiteList.push_back(o.network.interface_address);
   pq.transport().user_transports.push_back(udp);
@@ -463,6 +481,18 @@ fdds::Topic* FastParticipant::topic(const msg::TypeSupport& type, const std::str
   return t;
 }
 
+bool FastParticipant::data_sharing(const msg::TypeSupport& type) const {
+  // Only when asked for (transport shm), not by default: a data-sharing reader reads the
+  // sample in the writer's pool, so what it has received but not yet taken is gone when
+  // the writer is deleted. Measured: a reader taking 6 s after start got the writer's last
+  // sample over UDP and over the SHM transport, and nothing with data sharing once the
+  // writer's process had ended (docs/runtime.md, Transports). Plain types only (fixed size):
+  // the pool holds samples of one known size; LatencyProbe (a bounded sequence) uses SHM.
+  if (options().network.transport != Transport::shm) return false;
+  const fdds::TypeSupport ts = participant_->find_type(type.type_name);
+  return !ts.empty() && ts.is_plain();
+}
+
 std::string FastParticipant::local_qos(const std::string& topic, bool writer) const {
   std::lock_guard lk(mu_);
   auto it = qos_by_endpoint_.find((writer ? "w:" : "r:") + topic);
@@ -473,7 +503,7 @@ std::unique_ptr<WriterBackend> FastParticipant::make_writer(const msg::TypeSuppo
                                                             const QosProfile& qos) {
   fdds::Topic* t = topic(type, topic_name);
   fdds::DataWriterQos wq = publisher_->get_default_datawriter_qos();
-  apply_common(wq, qos);
+  apply_common(wq, qos, data_sharing(type));
   // A lost sample is asked for when the next heartbeat arrives, and repaired 1 ms after the
   // request (NetworkOptions::reliable_heartbeat_s; Fast DDS's defaults: 3 s and 5 ms).
   wq.reliable_writer_qos().times.heartbeatPeriod = to_duration(options().network.reliable_heartbeat_s);
@@ -493,7 +523,7 @@ std::unique_ptr<ReaderBackend> FastParticipant::make_reader(const msg::TypeSuppo
                                                             const QosProfile& qos) {
   fdds::Topic* t = topic(type, topic_name);
   fdds::DataReaderQos rq = subscriber_->get_default_datareader_qos();
-  apply_common(rq, qos);
+  apply_common(rq, qos, data_sharing(type));
   // Asks for what a heartbeat says it missed 1 ms after it (default 5 ms): NetworkOptions.
   rq.reliable_reader_qos().times.heartbeatResponseDelay = eprosima::fastrtps::Duration_t(0, 1'000'000);
   {

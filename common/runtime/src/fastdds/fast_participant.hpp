@@ -44,6 +44,8 @@ class FastParticipant final : public Participant {
  private:
   class Discovery;
   eprosima::fastdds::dds::Topic* topic(const msg::TypeSupport& type, const std::string& name);
+  /// Whether endpoints of this (registered) type may use data sharing (NetworkOptions::transport).
+  bool data_sharing(const msg::TypeSupport& type) const;
 
   std::unique_ptr<Discovery> discovery_;
   eprosima::fastdds::dds::DomainParticipant* participant_ = nullptr;

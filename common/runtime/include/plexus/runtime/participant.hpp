@@ -21,6 +21,7 @@
 #include "plexus/runtime/events.hpp"
 #include "plexus/runtime/qos.hpp"
 #include "plexus/runtime/security.hpp"
+#include "plexus/runtime/transport.hpp"
 #include "plexus/runtime/vendor.hpp"
 
 namespace plexus::rt {
@@ -43,6 +44,8 @@ struct NetworkOptions {
   /// NackDelay: 100 ms). The cost is a heartbeat and its answer per reader every period, only
   /// while samples are unacknowledged. docs/runtime.md, docs/distributed.md (Faults).
   double reliable_heartbeat_s = 0.005;
+  /// Shared memory between the participants of one host, or UDP only (transport.hpp).
+  Transport transport = Transport::automatic;
 };
 
 struct ParticipantOptions {

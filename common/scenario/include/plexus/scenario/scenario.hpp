@@ -118,6 +118,8 @@ struct Scenario {
   double blind_after_s = 0.3;
   std::string dds_vendor;  ///< "fast" | "cyclone" | "" (launch default)
   int dds_domain = 0;
+  /// dds.transport: "auto" | "udp" | "shm" (plexus/runtime/transport.hpp, docs/runtime.md).
+  std::string dds_transport = "auto";
   std::vector<std::string> hosts;                   ///< in document order; the first runs the clock
   std::map<std::string, std::string> host_address;  ///< host -> address ("" if not given)
   /// How `plexus launch` reaches a host over ssh (hosts.<h>.ssh, workdir, plexus): empty
