@@ -168,8 +168,14 @@ int run_replay(const ReplayOpts& o) {
       ++ticks;
       const auto& t = *static_cast<const msg::ClockStep*>(tick);
       if (t.step_index() == distributed::kEndOfRun) break;
+      // ClockStep k lets a host run up to k + lead_steps (the clock ticks only every
+      // clock_stride-th step, lockstep.hpp): the replay, standing in for a host, publishes
+      // as far. Consumers wait for exactly the sample due, so an early one changes nothing.
+      const int64_t horizon =
+          t.sim_time_ns() + std::clamp<int64_t>(distributed::LockstepOptions{}.lead_steps, 0, distributed::kMaxLeadSteps) *
+                                t.step_ns();
       group_end = i;
-      while (group_end < msgs.size() && msgs[group_end].data_time_ns <= t.sim_time_ns()) ++group_end;
+      while (group_end < msgs.size() && msgs[group_end].data_time_ns <= horizon) ++group_end;
     } else if (o.rate > 0) {
       sleep_until(start_mono + static_cast<int64_t>(static_cast<double>(i) * 1e9 / o.rate));
     } else if (!o.fast) {
@@ -228,7 +234,7 @@ Command add_replay_command(CLI::App& root) {
   c.app->add_flag("--fast", o->fast, "as fast as possible");
   c.app->add_flag("--lockstep", o->lockstep,
                   "follow the lockstep clock on --clock-topic: at each ClockStep, the samples whose header data time "
-                  "is due (<= the step's time); stops at the end of the run");
+                  "is due up to the steps it allows (the step's time + the hosts' lead); stops at the end of the run");
   c.app->add_option("--clock-topic", o->clock_topic, "clock topic for --lockstep")->capture_default_str();
   c.app->add_option("--timeout", o->timeout, "--lockstep: seconds without a clock tick before giving up")
       ->capture_default_str()
