@@ -7,7 +7,7 @@
 # Writes OUT/table.md (the rows of docs/performance.md's "now" column), and the raw JSON /
 # logs beside it. --quick: fewer round trips and shorter loops (a check of the script, not a
 # measurement).
-# DDS stays on loopback, domains 175-179. Needs jq; the loop row needs cyclictest (rt-tests)
+# DDS stays on loopback, domains 175-178. Needs jq; the loop row needs cyclictest (rt-tests)
 # and the privileges for SCHED_FIFO (root), else that row says why it is missing.
 set -euo pipefail
 
@@ -31,7 +31,7 @@ out=${out:-perf-$(date -u +%Y%m%dT%H%M%SZ)}
 mkdir -p "$out"
 table="$out/table.md"
 
-count=5000; loop_s=10; bench_min=0.5
+count=5000; loop_s=30; bench_min=0.5
 if [ "$quick" = 1 ]; then count=300; loop_s=2; bench_min=0.05; fi
 
 load() { cut -d' ' -f1-3 /proc/loadavg; }
@@ -93,9 +93,20 @@ for vendor in cyclone fast; do
       "$(ratio 120 "${wall:-0}")"
 done
 
+# --- 5. a fleet of 50 unicycles (tools/scenarios/fleet_unicycles.sh), Cyclone, by service type --
+f="$out/fleet.csv"
+for mode in lockstep realtime; do
+  NS=50 GROUPINGS=type VENDORS=cyclone DURATION=20 DOMAIN=178 BIN="$build/bin" \
+    tools/bench/fleet_scale.sh "$mode" "$f" 2>> "$out/fleet.err" || true
+done
+row "fleet of 50 unicycles, Cyclone, by type: lockstep steps/s" \
+    "$(awk -F, '$1 == "lockstep" { print $8 }' "$f" | tail -1)" "" ""
+row "fleet of 50 unicycles, Cyclone, by type: realtime 100 Hz, 20 s, deadline misses / stale input reads" \
+    "$(awk -F, '$1 == "realtime" { print $11 " / " $12 }' "$f" | tail -1)" "0 / 0 (aim)" ""
+
 # --- 3. loop wake-up lateness against cyclictest --------------------------------------------
 f="$out/loop.json"
-if "$plexus" latency loop --rate 1000 --duration "$loop_s" --json > "$f" 2> "$f.err"; then
+if "$plexus" latency loop --rate 1000 --duration "$loop_s" --rounds 6 --json > "$f" 2> "$f.err"; then
   row "loop 1 kHz wake-up lateness p50 / p99 (us), against cyclictest" \
       "$(jq -r '"\(.plexus.p50_us * 10 | round / 10) / \(.plexus.p99_us * 10 | round / 10)"' "$f")" \
       "cyclictest $(jq -r '"\(.cyclictest.p50_us // 0) / \(.cyclictest.p99_us // 0)"' "$f")" \
