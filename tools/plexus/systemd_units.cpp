@@ -99,6 +99,8 @@ UnitSet make_units(const scenario::Scenario& sc, const UnitOptions& o) {
     }
     args.insert(args.end(), {"--dds", v, "--domain", std::to_string(domain), "--qos-file", qos});
     if (!interface_address.empty()) args.insert(args.end(), {"--interface", interface_address, "--peers", peers});
+    // The scenario's transport (plexus launch passes it the same way); auto is every program's default.
+    if (sc.dds_transport != "auto") args.insert(args.end(), {"--transport", sc.dds_transport});
     std::string exec;
     for (const auto& a : args) exec += (exec.empty() ? "" : " ") + exec_argument(a);
     std::ostringstream u;
