@@ -100,7 +100,7 @@ for mode in lockstep realtime; do
     tools/bench/fleet_scale.sh "$mode" "$f" 2>> "$out/fleet.err" || true
 done
 row "fleet of 50 unicycles, Cyclone, by type: lockstep steps/s" \
-    "$(awk -F, '$1 == "lockstep" { print $8 }' "$f" | tail -1)" "" ""
+    "$(awk -F, '$1 == "lockstep" { printf "%.0f\n", $8 }' "$f" | tail -1)" "" ""
 row "fleet of 50 unicycles, Cyclone, by type: realtime 100 Hz, 20 s, deadline misses / stale input reads" \
     "$(awk -F, '$1 == "realtime" { print $11 " / " $12 }' "$f" | tail -1)" "0 / 0 (aim)" ""
 

@@ -16,7 +16,7 @@
 #   service  no `process` key: every service its own process: 3 N + 1 processes.
 #
 # deploy/scenarios/fleet_unicycles.yaml is `fleet_unicycles.sh 50 type` (checked by the
-# test fleet.generator); the other sizes and groupings are generated where they are used.
+# test repro.fleet_generator); the other sizes and groupings are generated where they are used.
 #
 # Distinct trajectories: robot I (0-based J = I - 1) follows the paper's figure-eight
 # (h1 = 5 m, h2 = 0.02 rad/s) at the phase 3 pi / 2 + 2 pi J / N, i.e. t0 = phase / h2: the
