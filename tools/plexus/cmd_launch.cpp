@@ -36,9 +36,9 @@
 #include "plexus/base/logging.hpp"
 #include "plexus/base/teardown_deadline.hpp"
 #include "plexus/distributed/lockstep.hpp"
-#include "plexus/scenario/evaluation.hpp"
-#include "plexus/scenario/progress_bar.hpp"
-#include "plexus/scenario/run_folder.hpp"
+#include "plexus/evaluation/evaluation.hpp"
+#include "plexus/evaluation/progress_bar.hpp"
+#include "plexus/evaluation/run_folder.hpp"
 
 namespace plexus::cli {
 namespace {

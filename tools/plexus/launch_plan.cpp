@@ -7,21 +7,42 @@
 #include <sstream>
 
 #include "plexus/base/input_error.hpp"
-#include "plexus/distributed/service_catalog.hpp"
+#include "plexus/scenario/registry.hpp"
 #include "plexus/scenario/step_executor.hpp"
 
 namespace plexus::cli {
 namespace {
 
+/// The robot a plant or sensor belongs to.
+std::string robot_of(const scenario::ScenarioComponent& c) {
+  return c.component->name().substr(0, c.component->name().find('/'));
+}
+
+/// The plant-side program of each robot: the plant service that hosts its plant and sensors.
+std::map<std::string, std::string> plant_programs(const scenario::Scenario& sc) {
+  std::map<std::string, std::string> plant_type;
+  std::map<std::string, std::vector<std::string>> sensor_types;
+  for (const auto& c : sc.components) {
+    if (c.kind == scenario::ComponentKind::plant) plant_type[robot_of(c)] = c.type;
+    if (c.kind == scenario::ComponentKind::sensor) sensor_types[robot_of(c)].push_back(c.type);
+  }
+  std::map<std::string, std::string> out;
+  for (const auto& [robot, type] : plant_type) out[robot] = scenario::plant_executable_for(type, sensor_types[robot]);
+  return out;
+}
+
 /// Services that share a `process` key must agree on where and how that process runs, and
-/// the process name must not be taken by another service or the plant simulator.
+/// the process name must not be taken by another service or a plant-side process.
 void check_process_groups(const scenario::Scenario& sc) {
+  std::set<std::string> plant_side;
+  for (const auto& [robot, program] : plant_programs(sc)) plant_side.insert(program);
   std::map<std::string, const scenario::ScenarioComponent*> first_of;
   for (const auto& c : sc.components) {
     if (c.process.empty()) continue;
     const std::string key = c.where + ".process";
-    if (c.process.rfind("plant_simulator", 0) == 0)
-      throw InputError(key + ": '" + c.process + "' is the plant simulator's process name");
+    for (const auto& program : plant_side)
+      if (c.process.rfind(program, 0) == 0)
+        throw InputError(key + ": '" + c.process + "' is the name of a plant-side process (" + program + ")");
     for (const auto& other : sc.components)
       if (other.component->name() == c.process && other.process != c.process && other.kind != scenario::ComponentKind::plant &&
           other.kind != scenario::ComponentKind::sensor)
@@ -51,13 +72,15 @@ std::vector<Process> plan(const scenario::Scenario& sc, const std::string& host)
   const std::string first = sc.hosts.empty() ? "" : sc.hosts.front();
   auto here = [&](const std::string& h) { return host.empty() || (h.empty() ? first : h) == host; };
   std::vector<Process> procs;
-  std::map<std::string, std::string> robots_by_host;  // host -> "r1,r2"
-  std::map<std::string, std::string> dds_by_host;     // host -> the robots' `dds` key
+  const auto plant_program = plant_programs(sc);
+  using HostProgram = std::pair<std::string, std::string>;
+  std::map<HostProgram, std::string> robots_by_host;  // (host, program) -> "r1,r2"
+  std::map<HostProgram, std::string> dds_by_host;     // (host, program) -> the robots' `dds` key
   std::vector<Process> sources;                       // robots fed by a bridge or a replay
   for (const auto& c : sc.components) {
     if (!here(c.host)) continue;
     if (c.kind == scenario::ComponentKind::plant) {
-      const std::string robot = c.component->name().substr(0, c.component->name().find('/'));
+      const std::string robot = robot_of(c);
       if (const auto src = sc.sources.find(robot); src != sc.sources.end()) {
         // A robot fed by a bridge or a replay: that program, for that robot, in place of the
         // plant simulator (docs/bridges.md).
@@ -69,20 +92,21 @@ std::vector<Process> plan(const scenario::Scenario& sc, const std::string& host)
         sources.push_back(p);
         continue;
       }
-      auto& list = robots_by_host[c.host];
+      const HostProgram key{c.host, plant_program.at(robot)};
+      auto& list = robots_by_host[key];
       list += (list.empty() ? "" : ",") + robot;
-      auto [it, first_robot] = dds_by_host.emplace(c.host, c.dds);
+      auto [it, first_robot] = dds_by_host.emplace(key, c.dds);
       if (!first_robot && it->second != c.dds)
-        throw InputError(c.where + ": the robots on one host share one plant_simulator process, so their `dds` keys "
+        throw InputError(c.where + ": the robots on one host share one " + key.second + " process, so their `dds` keys "
                          "must agree ('" + c.dds + "' for " + robot + ", '" + it->second + "' for " +
                          list.substr(0, list.rfind(',')) + ")");
     } else if (c.kind != scenario::ComponentKind::sensor) {
       const std::string name = c.process.empty() ? c.component->name() : c.process;
-      const std::string program = distributed::executable_for(c.type);
+      const std::string program = scenario::executable_for(c.type);
       auto group = std::find_if(procs.begin(), procs.end(), [&](const Process& p) { return p.name == name; });
       if (group != procs.end()) {  // another service of the same `process`
         group->select.back() += "," + c.component->name();
-        if (group->program != program) group->program = "component_host";
+        if (group->program != program) group->program = scenario::host_service()->name;  // any type
         continue;
       }
       Process p;
@@ -97,18 +121,18 @@ std::vector<Process> plan(const scenario::Scenario& sc, const std::string& host)
       procs.push_back(p);
     }
   }
-  std::set<std::string> robot_hosts;  // over the whole scenario, so names agree on every host
+  std::set<HostProgram> robot_hosts;  // over the whole scenario, so names agree on every host
   for (const auto& c : sc.components)
-    if (c.kind == scenario::ComponentKind::plant && !sc.sources.count(c.component->name().substr(0, c.component->name().find('/'))))
-      robot_hosts.insert(c.host);
+    if (c.kind == scenario::ComponentKind::plant && !sc.sources.count(robot_of(c)))
+      robot_hosts.insert({c.host, plant_program.at(robot_of(c))});
   std::vector<Process> sims;
-  for (const auto& [h, robots] : robots_by_host) {
-    const std::string name = robot_hosts.size() == 1 ? "plant_simulator" : "plant_simulator " + robots;
+  for (const auto& [key, robots] : robots_by_host) {
+    const std::string& program = key.second;
     Process p;  // plants hold the physical state: never restarted
-    p.name = name;
-    p.program = "plant_simulator";
+    p.name = robot_hosts.size() == 1 ? program : program + " " + robots;
+    p.program = program;
     p.select = {"--robots", robots};
-    p.vendor = dds_by_host[h];
+    p.vendor = dds_by_host[key];
     sims.push_back(p);
   }
   procs.insert(procs.begin(), sources.begin(), sources.end());
@@ -119,7 +143,7 @@ std::vector<Process> plan(const scenario::Scenario& sc, const std::string& host)
 YAML::Node part_document(const scenario::Scenario& sc, const Process& p) {
   const YAML::Node& r = sc.resolved;
   YAML::Node part(YAML::NodeType::Map);
-  for (const char* key : {"name", "description", "duration", "step", "seed", "clock"})
+  for (const char* key : {"name", "description", "duration", "step", "seed", "clock", "plugins"})
     if (r[key]) part[key] = YAML::Clone(r[key]);
   // Relative file parameters (a training file) stay relative to the original scenario.
   part["base_dir"] = std::filesystem::absolute(sc.base_dir.empty() ? "." : sc.base_dir).lexically_normal().string();

@@ -11,7 +11,7 @@
 #include "plexus/base/clock.hpp"
 #include "plexus/distributed/lockstep.hpp"
 #include "plexus/distributed/realtime.hpp"
-#include "plexus/scenario/evaluation.hpp"
+#include "plexus/evaluation/evaluation.hpp"
 #include "plexus/scenario/step_executor.hpp"
 
 namespace plexus::cli {

@@ -9,10 +9,12 @@ std::string shell_quote(const std::string& s) {
 }
 
 std::string remote_launch_command(const scenario::Scenario::HostAccess& access, const std::string& local_plexus) {
-  const std::string plexus = access.plexus.empty() ? local_plexus : access.plexus;
   std::string cmd;
   if (!access.workdir.empty()) cmd = "cd " + shell_quote(access.workdir) + " && ";
-  return cmd + "exec " + shell_quote(plexus) + " launch --remote";
+  if (access.plexus.empty()) return cmd + "exec " + shell_quote(local_plexus) + " launch --remote";
+  // The host's `plexus:` is its plexus executable, or the prefix it is installed in (bin/plexus
+  // there): the remote shell tells which.
+  return cmd + "P=" + shell_quote(access.plexus) + "; if [ -d \"$P\" ]; then P=\"$P/bin/plexus\"; fi; exec \"$P\" launch --remote";
 }
 
 std::vector<std::string> ssh_arguments(const SshOptions& o, const std::string& destination,
