@@ -20,6 +20,12 @@ Event EndpointEvents::base(EventKind k) const {
   return e;
 }
 
+void EndpointEvents::counted(EventKind k, int32_t total) {
+  Event e = base(k);
+  e.total_count = total;
+  owner_.emit_event(e);
+}
+
 void EndpointEvents::matched(int32_t total, int32_t current, int32_t change, const std::string& remote) {
   matched_ = current;
   Event e = base(change > 0 ? EventKind::matched : EventKind::unmatched);
@@ -29,11 +35,7 @@ void EndpointEvents::matched(int32_t total, int32_t current, int32_t change, con
   owner_.emit_event(e);
 }
 
-void EndpointEvents::deadline_missed(int32_t total) {
-  Event e = base(EventKind::deadline_missed);
-  e.total_count = total;
-  owner_.emit_event(e);
-}
+void EndpointEvents::deadline_missed(int32_t total) { counted(EventKind::deadline_missed, total); }
 
 void EndpointEvents::incompatible_qos(int32_t total, const std::string& policy) {
   Event e = base(EventKind::incompatible_qos);
@@ -43,11 +45,7 @@ void EndpointEvents::incompatible_qos(int32_t total, const std::string& policy) 
   owner_.emit_event(e);
 }
 
-void EndpointEvents::liveliness_lost(int32_t total) {
-  Event e = base(EventKind::liveliness_lost);
-  e.total_count = total;
-  owner_.emit_event(e);
-}
+void EndpointEvents::liveliness_lost(int32_t total) { counted(EventKind::liveliness_lost, total); }
 
 void EndpointEvents::liveliness_changed(int32_t alive, int32_t not_alive, int32_t alive_change,
                                         int32_t not_alive_change, const std::string& remote) {
@@ -62,11 +60,7 @@ void EndpointEvents::liveliness_changed(int32_t alive, int32_t not_alive, int32_
   owner_.emit_event(e);
 }
 
-void EndpointEvents::sample_lost(int32_t total) {
-  Event e = base(EventKind::sample_lost);
-  e.total_count = total;
-  owner_.emit_event(e);
-}
+void EndpointEvents::sample_lost(int32_t total) { counted(EventKind::sample_lost, total); }
 
 void DataCallback::set(std::function<void()> fn, const std::string& topic) {
   if (fn_) throw std::logic_error("reader on '" + topic + "': data callback set twice");

@@ -58,6 +58,7 @@ class EndpointEvents {
 
  private:
   Event base(EventKind k) const;
+  void counted(EventKind k, int32_t total);  // an event that carries only the vendor's count
 
   const EventOwner& owner_;
   std::string topic_;

@@ -12,13 +12,13 @@
 
 namespace plexus::cli {
 
-std::atomic<bool> g_stop{false};
-std::atomic<int> g_signal{0};
+std::atomic<bool> g_launch_stop{false};
+std::atomic<int> g_launch_signal{0};
 
 namespace {
 void on_signal(int s) {
-  g_signal = s;
-  g_stop = true;
+  g_launch_signal = s;
+  g_launch_stop = true;
 }
 }  // namespace
 
@@ -69,7 +69,7 @@ int LaunchRun::failure(const std::string& what) {
 int LaunchRun::interrupted() {
   stop_all();
   const double wall_s = static_cast<double>(monotonic_ns() - launched_ns) * 1e-9;
-  return done(interrupted_run("plexus launch", g_signal, run_dir, wall_s));
+  return done(interrupted_run("plexus launch", g_launch_signal, run_dir, wall_s));
 }
 
 bool LaunchRun::host_lost() const { return remotes && !remotes->failure().empty(); }

@@ -68,7 +68,7 @@ std::vector<Process> plan(const scenario::Scenario& sc, const std::string& host)
   auto here = [&](const std::string& h) { return host.empty() || (h.empty() ? first : h) == host; };
   std::vector<Process> procs;
   std::map<std::string, std::string> robots_by_host;  // host -> "r1,r2"
-  std::map<std::string, std::vector<std::string>> robot_names_by_host;
+  std::map<std::string, std::vector<std::string>> robot_names_by_host;  // host -> {r1, r2}
   std::map<std::string, std::string> dds_by_host;     // host -> the robots' `dds` key
   std::vector<Process> sources;                       // robots fed by a bridge or a replay
   for (const auto& c : sc.components) {

@@ -51,10 +51,10 @@ void open_run_folder(const LaunchOptions& o, const LaunchPlan& plan, LaunchRun& 
   run.relay.emplace(std::filesystem::path(run.run_dir) / "logs", *run.console);
   const int processes = static_cast<int>(plan.procs.size());
   if (run.remotes) {
-    run.remotes->start(*run.relay, processes, g_stop);
+    run.remotes->start(*run.relay, processes, g_launch_stop);
     run.console->set_hosts([&run] { return run.remotes->health(); });
   }
-  if (plan.session) plan.session->watch(g_stop, processes, [] { return running_children(); });
+  if (plan.session) plan.session->watch(g_launch_stop, processes, [] { return running_children(); });
 }
 
 /// Writes `p`'s part of the scenario (launch_plan.hpp part_document) into `dir`; returns the file.
@@ -104,7 +104,7 @@ void start_launch(const LaunchOptions& o, LaunchPlan& plan, LaunchRun& run) {
   run.participant = launcher_participant(o, plan);
   auto kill_at = parse_kills(o.kills, plan.procs, plan.realtime);
   open_run_folder(o, plan, run);
-  run.supervisor.emplace(plan.procs, *run.relay, run.fault, run.run_active, g_stop, plan.realtime, std::move(kill_at));
+  run.supervisor.emplace(plan.procs, *run.relay, run.fault, run.run_active, g_launch_stop, plan.realtime, std::move(kill_at));
   // Each process gets its own part of the scenario and builds only that (launch_plan.hpp).
   const std::filesystem::path parts_dir = std::filesystem::path(run.run_dir) / "parts";
   std::error_code ec;

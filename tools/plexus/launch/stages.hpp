@@ -42,10 +42,10 @@ namespace plexus::cli {
 
 /// Set by SIGINT and SIGTERM (SIGHUP too on a share started over ssh), by a process that
 /// died for good and by a lost host: the run ends.
-extern std::atomic<bool> g_stop;
+extern std::atomic<bool> g_launch_stop;
 /// The SIGINT / SIGTERM that interrupted the run (0: none).
-extern std::atomic<int> g_signal;
-/// Installs the handler that sets g_signal and g_stop.
+extern std::atomic<int> g_launch_signal;
+/// Installs the handler that sets g_launch_signal and g_launch_stop.
 void stop_on_signal(int signal);
 
 /// What the plan stage decided: nothing has started yet.
