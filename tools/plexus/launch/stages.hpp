@@ -10,7 +10,8 @@
 //                                   without the clock) serving until this host's processes end
 //   summarise  stage_summarise.cpp  launch.json, the metrics, the report and the exit code
 //
-// Bad input throws InputError (exit 2) in the plan and preflight stages, before anything starts.
+// Bad input throws InputError (exit 2) before any process starts: in the plan and preflight
+// stages, and (--record, --kill, the run folder) early in the start stage.
 #pragma once
 
 #include <atomic>
