@@ -6,7 +6,7 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include "launch_plan.hpp"
+#include "launch/launch_plan.hpp"
 #include "plexus/base/input_error.hpp"
 #include "plexus/scenario/registry.hpp"
 

@@ -29,8 +29,8 @@ E parse_enum(const YamlMap& m, const std::string& key, E fallback, const std::pa
 }
 
 // Both vendors must hold the value as it is: Fast DDS keeps whole seconds in an int32 (a
-// larger value was an undefined conversion), Cyclone DDS nanoseconds in an int64, and a value
-// below 1 ns became 0, which means something else. 1e9 s is 31 years.
+// larger value would be an undefined conversion), Cyclone DDS nanoseconds in an int64, and a
+// value below 1 ns would become 0, which means something else. 1e9 s is 31 years.
 double duration(const YamlMap& m, const std::string& key, double fallback) {
   const double v = m.optional<double>(key, fallback);
   if (v < 0) m.fail(key, "must be >= 0 seconds (0 means infinite/none), got " + std::to_string(v));

@@ -5,9 +5,9 @@
 
 #include <stdexcept>
 
-#include "clock_offset.hpp"
-#include "remote_protocol.hpp"
-#include "ssh_command.hpp"
+#include "launch/clock_offset.hpp"
+#include "launch/remote_protocol.hpp"
+#include "launch/ssh_command.hpp"
 #include "systemd_units.hpp"
 
 namespace plexus::cli {

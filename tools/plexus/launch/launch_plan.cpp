@@ -4,7 +4,6 @@
 #include <map>
 #include <filesystem>
 #include <set>
-#include <sstream>
 
 #include "plexus/base/input_error.hpp"
 #include "plexus/scenario/registry.hpp"
@@ -65,6 +64,19 @@ void check_process_groups(const scenario::Scenario& sc) {
   }
 }
 
+bool physical(const scenario::ScenarioComponent& c) {
+  return c.kind == scenario::ComponentKind::plant || c.kind == scenario::ComponentKind::sensor;
+}
+
+/// The plants and sensors of `robots`, by index in Scenario::components.
+std::vector<std::size_t> robots_components(const scenario::Scenario& sc, const std::vector<std::string>& robots) {
+  std::vector<std::size_t> out;
+  for (std::size_t i = 0; i < sc.components.size(); ++i)
+    if (physical(sc.components[i]) && std::count(robots.begin(), robots.end(), robot_of(sc.components[i])))
+      out.push_back(i);
+  return out;
+}
+
 }  // namespace
 
 std::vector<Process> plan(const scenario::Scenario& sc, const std::string& host) {
@@ -74,11 +86,13 @@ std::vector<Process> plan(const scenario::Scenario& sc, const std::string& host)
   std::vector<Process> procs;
   const auto plant_program = plant_programs(sc);
   using HostProgram = std::pair<std::string, std::string>;
-  std::map<HostProgram, std::string> robots_by_host;  // (host, program) -> "r1,r2"
-  std::map<HostProgram, std::string> dds_by_host;     // (host, program) -> the robots' `dds` key
+  std::map<HostProgram, std::string> robots_by_host;                    // (host, program) -> "r1,r2"
+  std::map<HostProgram, std::vector<std::string>> robot_names_by_host;  // (host, program) -> {r1, r2}
+  std::map<HostProgram, std::string> dds_by_host;                       // (host, program) -> the robots' `dds` key
   std::vector<Process> sources;                       // robots fed by a bridge or a replay
   for (const auto& c : sc.components) {
     if (!here(c.host)) continue;
+    const std::size_t index = static_cast<std::size_t>(&c - sc.components.data());
     if (c.kind == scenario::ComponentKind::plant) {
       const std::string robot = robot_of(c);
       if (const auto src = sc.sources.find(robot); src != sc.sources.end()) {
@@ -87,6 +101,7 @@ std::vector<Process> plan(const scenario::Scenario& sc, const std::string& host)
         Process p;
         p.program = scenario::to_string(src->second.type);
         p.select = {"--robots", robot};
+        p.components = robots_components(sc, {robot});
         p.name = p.service();
         p.vendor = c.dds;
         sources.push_back(p);
@@ -95,6 +110,7 @@ std::vector<Process> plan(const scenario::Scenario& sc, const std::string& host)
       const HostProgram key{c.host, plant_program.at(robot)};
       auto& list = robots_by_host[key];
       list += (list.empty() ? "" : ",") + robot;
+      robot_names_by_host[key].push_back(robot);
       auto [it, first_robot] = dds_by_host.emplace(key, c.dds);
       if (!first_robot && it->second != c.dds)
         throw InputError(c.where + ": the robots on one host share one " + key.second + " process, so their `dds` keys "
@@ -106,6 +122,7 @@ std::vector<Process> plan(const scenario::Scenario& sc, const std::string& host)
       auto group = std::find_if(procs.begin(), procs.end(), [&](const Process& p) { return p.name == name; });
       if (group != procs.end()) {  // another service of the same `process`
         group->select.back() += "," + c.component->name();
+        group->components.push_back(index);
         if (group->program != program) group->program = scenario::host_service()->name;  // any type
         continue;
       }
@@ -113,6 +130,7 @@ std::vector<Process> plan(const scenario::Scenario& sc, const std::string& host)
       p.name = name;
       p.program = program;
       p.select = {"--components", c.component->name()};
+      p.components = {index};
       p.restart = c.restart;
       p.restart_delay_ns = static_cast<int64_t>(c.restart_delay * 1e9);
       p.priority = c.priority;
@@ -132,6 +150,7 @@ std::vector<Process> plan(const scenario::Scenario& sc, const std::string& host)
     p.name = robot_hosts.size() == 1 ? program : program + " " + robots;
     p.program = program;
     p.select = {"--robots", robots};
+    p.components = robots_components(sc, robot_names_by_host[key]);
     p.vendor = dds_by_host[key];
     sims.push_back(p);
   }
@@ -147,33 +166,24 @@ YAML::Node part_document(const scenario::Scenario& sc, const Process& p) {
     if (r[key]) part[key] = YAML::Clone(r[key]);
   // Relative file parameters (a training file) stay relative to the original scenario.
   part["base_dir"] = std::filesystem::absolute(sc.base_dir.empty() ? "." : sc.base_dir).lexically_normal().string();
-  const std::set<std::string> selected = [&] {
-    std::set<std::string> out;
-    std::stringstream ss(p.select.back());
-    for (std::string item; std::getline(ss, item, ',');) out.insert(item);
-    return out;
-  }();
-  const bool robots = p.select.front() == "--robots";
+  // What the process builds (Process::components): its robots' sections, or its services'.
   std::vector<bool> hosted(sc.components.size(), false);
-  for (std::size_t i = 0; i < sc.components.size(); ++i) {
+  std::set<std::string> robots, services;
+  for (std::size_t i : p.components) {
+    hosted[i] = true;
     const auto& c = sc.components[i];
-    const std::string& name = c.component->name();
-    const bool physical = c.kind == scenario::ComponentKind::plant || c.kind == scenario::ComponentKind::sensor;
-    hosted[i] = robots ? physical && selected.count(name.substr(0, name.find('/'))) : !physical && selected.count(name);
+    if (physical(c))
+      robots.insert(robot_of(c));
+    else
+      services.insert(c.component->name());
   }
-  if (robots) {
-    for (const auto& robot : selected) {
-      YAML::Node section = YAML::Clone(r["robots"][robot]);
-      section.remove("host");
-      part["robots"][robot] = section;
-    }
-  } else {
-    for (const auto& service : selected) {
-      YAML::Node section = YAML::Clone(r["services"][service]);
-      section.remove("host");
-      part["services"][service] = section;
-    }
-  }
+  auto section = [](const YAML::Node& n) {
+    YAML::Node out = YAML::Clone(n);
+    out.remove("host");
+    return out;
+  };
+  for (const auto& robot : robots) part["robots"][robot] = section(r["robots"][robot]);
+  for (const auto& service : services) part["services"][service] = section(r["services"][service]);
   // The inputs other processes produce: their schedule, as the whole scenario has it.
   const scenario::StepExecutor wiring(const_cast<scenario::Scenario&>(sc), hosted);
   for (std::size_t s : wiring.remote_inputs()) {
@@ -196,9 +206,8 @@ std::vector<std::string> replay_args(const scenario::Scenario& sc, const Process
   for (const auto& s : sc.signals) {
     const auto producer = std::find_if(sc.components.begin(), sc.components.end(),
                                        [&](const auto& c) { return c.component->name() == s.producer; });
-    const bool physical = producer != sc.components.end() && (producer->kind == scenario::ComponentKind::plant ||
-                                                              producer->kind == scenario::ComponentKind::sensor);
-    if (physical && s.name.rfind(robot + "/", 0) == 0) topics += (topics.empty() ? "" : ",") + s.name;
+    if (producer != sc.components.end() && physical(*producer) && s.name.rfind(robot + "/", 0) == 0)
+      topics += (topics.empty() ? "" : ",") + s.name;
   }
   return {"replay", sc.sources.at(robot).recording, "--topics", topics, "--restamp", "--service", p.service(),
           "--wait", "10", "--linger", "0"};

@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 #include <yaml-cpp/yaml.h>
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -13,11 +14,14 @@
 
 namespace plexus::cli {
 
-/// One child process: a name, the executable and its selection argument.
+/// One child process: a name, the executable, its selection argument and what it hosts.
 struct Process {
   std::string name;
   std::string program;
-  std::vector<std::string> select;
+  std::vector<std::string> select;  ///< --robots R1,R2 or --components S1,S2: the executable's selection
+  /// Indices in Scenario::components of what it builds: its robots' plants and sensors, or
+  /// its services.
+  std::vector<std::size_t> components;
   std::string vendor;
   pid_t pid = 0;
   std::string restart = "never";  ///< realtime: never | on_failure | always (scenario `restart`)
