@@ -78,10 +78,13 @@ set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 set(CPACK_DEBIAN_PACKAGE_ARCHITECTURE amd64)
 set(CPACK_DEBIAN_PACKAGE_SECTION science)
 set(CPACK_DEBIAN_PACKAGE_HOMEPAGE "https://localhost/plexus")
-# Runtime and SDK dependencies, by Debian package name (Debian 12).
-set(CPACK_DEBIAN_PACKAGE_DEPENDS
-  "libfastrtps2.9, libfastcdr1, libcycloneddsidl0 | cyclonedds-tools, libddsc0, libyaml-cpp0.7, libspdlog1.10, libfmt9, \
-liborocos-kdl1.5, libfftw3-double3, libsqlite3-0, libssl3, gnuplot-nox, \
-libfastrtps-dev, libfastcdr-dev, fastddsgen, cyclonedds-dev, cyclonedds-tools, libeigen3-dev, libspdlog-dev, libyaml-cpp-dev, \
-libcli11-dev, nlohmann-json3-dev, liborocos-kdl-dev, cmake, g++")
+# Runtime dependencies: dpkg-shlibdeps reads them off the installed binaries (the package's own
+# libraries found through their $ORIGIN run path). Besides those: gnuplot for `plexus report`'s plots. The SDK's
+# build dependencies (headers, generators, compiler) are recommended: apt installs them by
+# default, a deployment host may leave them out (--no-install-recommends).
+set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
+set(CPACK_DEBIAN_PACKAGE_DEPENDS "gnuplot-nox")
+set(CPACK_DEBIAN_PACKAGE_RECOMMENDS
+  "libfastrtps-dev, libfastcdr-dev, fastddsgen, cyclonedds-dev, cyclonedds-tools, libeigen3-dev, libspdlog-dev, \
+libyaml-cpp-dev, libcli11-dev, nlohmann-json3-dev, liborocos-kdl-dev, cmake, g++")
 include(CPack)

@@ -145,6 +145,14 @@ int plexus::service::run_service(int argc, char** argv, const std::string& self)
       for (const auto& s : sets) overrides.push_back(scenario::parse_override(s));
       sc = scenario::load_scenario(part_file, overrides, {.partial = true});
     } else {
+      // Before the component is built: a type this executable does not link is not known here at all.
+      const auto& own = service.component_types;
+      if (!hosts_plant && service.role != scenario::ServiceRole::host &&
+          std::find(own.begin(), own.end(), alone.type) == own.end() && !scenario::service_declaring(alone.type)) {
+        std::string list;
+        for (const auto& t : own) list += (list.empty() ? "" : ", ") + t;
+        throw InputError("--type: " + self + " does not host a " + alone.type + " (it hosts " + list + ")");
+      }
       sc = scenario::load_standalone(alone, sets, realtime);
     }
     // A launched process keeps quiet about the scenario's warnings: `plexus launch` said them once.
