@@ -23,8 +23,8 @@
 #include "plexus/base/logging.hpp"
 #include "plexus/base/teardown_deadline.hpp"
 #include "plexus/scenario/overrides.hpp"
-#include "services/service_main/service_dds_options.hpp"
-#include "services/common/standalone_scenario.hpp"
+#include "plexus/service/dds_options.hpp"
+#include "plexus/service/standalone.hpp"
 
 namespace {
 

@@ -29,7 +29,7 @@
 #include "plexus/link/udp_socket.hpp"
 #include "plexus/runtime/periodic_loop.hpp"
 #include "plexus/scenario/overrides.hpp"
-#include "services/common/standalone_scenario.hpp"
+#include "plexus/service/standalone.hpp"
 
 namespace {
 

@@ -25,7 +25,7 @@
 #include "plexus/base/clock.hpp"
 #include "plexus/base/input_error.hpp"
 #include "plexus/distributed/lockstep.hpp"
-#include "plexus/scenario/evaluation.hpp"
+#include "plexus/evaluation/evaluation.hpp"
 #include "plexus/distributed/realtime.hpp"
 #include "plexus/msg/messages.hpp"
 #include "recording.hpp"

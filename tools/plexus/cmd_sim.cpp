@@ -18,11 +18,11 @@
 #include "seed_sweep.hpp"
 #include "plexus/base/clock.hpp"
 #include "plexus/base/input_error.hpp"
-#include "plexus/scenario/evaluation.hpp"
+#include "plexus/evaluation/evaluation.hpp"
 #include "plexus/scenario/executor.hpp"
-#include "plexus/scenario/progress_bar.hpp"
+#include "plexus/evaluation/progress_bar.hpp"
 #include "plexus/scenario/registry.hpp"
-#include "plexus/scenario/run_folder.hpp"
+#include "plexus/evaluation/run_folder.hpp"
 #include "plexus/scenario/scenario.hpp"
 
 namespace plexus::cli {

@@ -10,11 +10,18 @@
 #include "command.hpp"
 #include "plexus/base/input_error.hpp"
 #include "plexus/base/logging.hpp"
+#include "plexus/scenario/plugins.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"plexus: distributed real-time runtime for robot estimation and control"};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("plexus ") + PLEXUS_VERSION);
+  // Accepted before or after the subcommand: `plexus topic echo r1/contact --plugin libmylab_msgs.so`.
+  std::vector<std::string> plugins;
+  app.add_option("--plugin", plugins,
+                 "Load a shared library of a user's component, service or message types first (docs/sdk.md); "
+                 "repeatable");
+  app.fallthrough();
 
   std::vector<plexus::cli::Command> commands;
   commands.push_back(plexus::cli::add_demo_command(app));
@@ -59,6 +66,7 @@ int main(int argc, char** argv) {
   try {
     // Every log line of every command on stderr, in the one format (stdout carries --json).
     plexus::init_logging(prefix, "", "warn");
+    for (const auto& lib : plugins) plexus::scenario::load_plugin(lib, "--plugin");
     for (auto& c : commands)
       if (c.app->parsed()) return c.run();
   } catch (const plexus::InputError& e) {

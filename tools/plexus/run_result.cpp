@@ -7,9 +7,9 @@
 #include <iostream>
 
 #include "plexus/distributed/wire.hpp"
-#include "plexus/scenario/evaluation.hpp"
-#include "plexus/scenario/report.hpp"
-#include "plexus/scenario/run_folder.hpp"
+#include "plexus/evaluation/evaluation.hpp"
+#include "plexus/evaluation/report.hpp"
+#include "plexus/evaluation/run_folder.hpp"
 
 namespace plexus::cli {
 

@@ -8,7 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "plexus/scenario/run_folder.hpp"
+#include "plexus/evaluation/run_folder.hpp"
 #include "plexus/scenario/scenario.hpp"
 #include "plexus/scenario/signal_log.hpp"
 

@@ -9,9 +9,9 @@
 #include <map>
 
 #include "plexus/base/clock.hpp"
-#include "plexus/scenario/evaluation.hpp"
+#include "plexus/evaluation/evaluation.hpp"
 #include "plexus/scenario/executor.hpp"
-#include "plexus/scenario/run_folder.hpp"
+#include "plexus/evaluation/run_folder.hpp"
 #include "plexus/scenario/scenario.hpp"
 
 namespace plexus::cli {

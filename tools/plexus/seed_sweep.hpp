@@ -10,7 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "plexus/scenario/overrides.hpp"
-#include "plexus/scenario/run_folder.hpp"
+#include "plexus/evaluation/run_folder.hpp"
 
 namespace plexus::cli {
 

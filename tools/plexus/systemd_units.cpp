@@ -6,8 +6,9 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include "launch_plan.hpp"
+#include "launch/launch_plan.hpp"
 #include "plexus/base/input_error.hpp"
+#include "plexus/scenario/registry.hpp"
 
 namespace plexus::cli {
 
@@ -33,8 +34,10 @@ std::string exec_argument(const std::string& s) {
 namespace {
 
 const char* restart_of(const Process& p) {
-  if (p.program == "plant_simulator") return "no";  // the simulator holds the physical state: as under plexus launch
-  if (p.program != "component_host" && p.select.front() == "--robots") return "on-failure";  // a bridge or replay
+  const scenario::ServiceDeclaration* service = scenario::find_service(p.program);
+  // A plant-side service holds the physical state: never restarted, as under plexus launch.
+  if (service && service->role == scenario::ServiceRole::plant) return "no";
+  if (!service && p.select.front() == "--robots") return "on-failure";  // a bridge or replay
   if (p.restart == "always") return "always";
   if (p.restart == "never") return "no";
   return "on-failure";

@@ -24,6 +24,8 @@ PACKAGES=(
   openssl libssl-dev tcpdump
   # fault tests (tests/fault): packet loss and partitions inside network namespaces
   nftables
+  # the Debian package's check (tests/sdk/deb_package.sh); clang-format for the style check
+  lintian clang-format
 )
 
 SUDO=""

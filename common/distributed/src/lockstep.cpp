@@ -9,7 +9,7 @@
 
 #include "plexus/base/clock.hpp"
 #include "input_guard.hpp"
-#include "plexus/scenario/evaluation.hpp"
+#include "plexus/scenario/format.hpp"
 
 namespace plexus::distributed {
 namespace {

@@ -11,7 +11,7 @@
 #include "plexus/base/clock.hpp"
 #include "plexus/base/input_error.hpp"
 #include "plexus/distributed/lockstep.hpp"
-#include "plexus/scenario/evaluation.hpp"
+#include "plexus/scenario/format.hpp"
 #include "plexus/scenario/step_executor.hpp"
 #include "input_guard.hpp"
 

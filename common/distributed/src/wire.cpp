@@ -9,25 +9,18 @@
 namespace plexus::distributed {
 namespace {
 
-double read(const WireSlot& slot, void* message) {
-  void* m = slot.member(message);
-  switch (slot.kind) {
-    case WireSlot::Kind::f64: return static_cast<double*>(m)[slot.index];
-    case WireSlot::Kind::i32: return static_cast<double>(static_cast<int32_t*>(m)[slot.index]);
-    case WireSlot::Kind::u32: return static_cast<double>(static_cast<uint32_t*>(m)[slot.index]);
-    case WireSlot::Kind::u16: return static_cast<double>(static_cast<uint16_t*>(m)[slot.index]);
-  }
-  return 0.0;
-}
+using msg::read_slot;
+using msg::write_slot;
 
-void write(const WireSlot& slot, void* message, double v) {
-  void* m = slot.member(message);
-  switch (slot.kind) {
-    case WireSlot::Kind::f64: static_cast<double*>(m)[slot.index] = v; break;
-    case WireSlot::Kind::i32: static_cast<int32_t*>(m)[slot.index] = static_cast<int32_t>(v); break;
-    case WireSlot::Kind::u32: static_cast<uint32_t*>(m)[slot.index] = static_cast<uint32_t>(v); break;
-    case WireSlot::Kind::u16: static_cast<uint16_t*>(m)[slot.index] = static_cast<uint16_t>(v); break;
+std::size_t slot_size(const WireSlot& s) {
+  using K = WireSlot::Kind;
+  switch (s.kind) {
+    case K::f64: case K::i64: case K::u64: return 8;
+    case K::f32: case K::i32: case K::u32: return 4;
+    case K::i16: case K::u16: return 2;
+    case K::i8: case K::u8: case K::boolean: return 1;
   }
+  return 8;
 }
 
 /// The field names a type accepts, for errors ("q1.." stands for q1 to q16).
@@ -53,21 +46,17 @@ const char* to_string(Rejection r) {
   return "?";
 }
 
-const WireType* find_wire_type(std::string_view name) {
-  constexpr std::string_view scope = "plexus::msg::";
-  if (name.substr(0, scope.size()) == scope) name.remove_prefix(scope.size());
-  for (const auto& t : wire_types())
-    if (name == t.name) return &t;
-  return nullptr;
-}
-
 WireSignal::WireSignal(const scenario::SignalSpec& spec, int64_t step_ns) : spec_(&spec), step_ns_(step_ns) {
   const std::string who = "signal '" + spec.name + "' (produced by '" + spec.producer + "')";
   if (spec.message.empty())
     throw InputError(who + " has no IDL message type, so it cannot travel over DDS; run this scenario with "
                            "`plexus sim`");
   type_ = find_wire_type(spec.message);
-  if (!type_) throw InputError(who + ": '" + spec.message + "' is not a message type of idl/plexus/msg");
+  if (!type_)
+    throw InputError(who + ": '" + spec.message +
+                     "' is not a known message type (idl/plexus/msg, or a package of a plugin the scenario loads)");
+  if (!type_->support->header)
+    throw InputError(who + ": " + type_->name + " has no 'StampHeader header' member, so it cannot carry a signal");
   // Where each field lands in a message, to refuse two fields filling one member (aliases
   // such as z2 and z3, which both name HeadingEstimate.direction[0]).
   const MessagePtr probe = make_message();
@@ -78,11 +67,15 @@ WireSignal::WireSignal(const scenario::SignalSpec& spec, int64_t step_ns) : spec
     if (it == type_->slots.end())
       throw InputError(who + ": field '" + f + "' is not a member of " + type_->name + " (its fields: " +
                        join_fields(*type_) + "; docs/topics.md)");
-    const void* place = static_cast<const char*>(it->member(probe.get())) + it->index * sizeof(double);
+    const void* place = static_cast<const char*>(it->member(probe.get())) + it->index * slot_size(*it);
     if (std::find(places.begin(), places.end(), place) != places.end())
       throw InputError(who + ": field '" + f + "' fills a member of " + type_->name + " that another of its fields fills");
     places.push_back(place);
     slots_.push_back(&*it);
+    if (type_->count && static_cast<const void*>(type_->count(probe.get())) == place) {
+      count_field_ = true;  // a typed port carries the count itself
+      continue;
+    }
     joints = std::max(joints, it->index + 1);
   }
   if (type_->count) count_ = static_cast<uint16_t>(joints);
@@ -91,8 +84,8 @@ WireSignal::WireSignal(const scenario::SignalSpec& spec, int64_t step_ns) : spec
 MessagePtr WireSignal::make_message() const { return {support().create(), support().destroy}; }
 
 void WireSignal::encode(const scenario::SignalSample& s, void* message) const {
-  for (std::size_t i = 0; i < slots_.size(); ++i) write(*slots_[i], message, s.values[i]);
-  if (type_->count) *type_->count(message) = count_;
+  if (type_->count && !count_field_) *type_->count(message) = count_;
+  for (std::size_t i = 0; i < slots_.size(); ++i) write_slot(*slots_[i], message, s.values[i]);
   support().header(message)->data_time_ns(epoch_ns_ + s.step * step_ns_);
 }
 
@@ -117,9 +110,9 @@ Rejection WireSignal::decode(const void* message, scenario::SignalSample& s, std
   void* m = const_cast<void*>(message);  // the accessors are the generated non-const ones; nothing is written
   const int64_t t = support().header(m)->data_time_ns();
   if (t < 0) return Rejection::negative_time;
-  if (type_->count && *type_->count(m) != count_) return Rejection::wrong_count;
+  if (type_->count && !count_field_ && *type_->count(m) != count_) return Rejection::wrong_count;
   for (std::size_t i = 0; i < slots_.size(); ++i)
-    if (const Rejection r = check_value(*slots_[i], read(*slots_[i], m)); r != Rejection::none) {
+    if (const Rejection r = check_value(*slots_[i], read_slot(*slots_[i], m)); r != Rejection::none) {
       bad_field = i;
       return r;
     }
@@ -133,13 +126,13 @@ Rejection WireSignal::decode(const void* message, scenario::SignalSample& s, std
     r += step_ns_;
   }
   s.step = r >= step_ns_ - step_ns_ / 2 ? q + 1 : q;
-  for (std::size_t i = 0; i < slots_.size(); ++i) s.values[i] = read(*slots_[i], m);
+  for (std::size_t i = 0; i < slots_.size(); ++i) s.values[i] = read_slot(*slots_[i], m);
   std::fill(s.values.begin() + static_cast<std::ptrdiff_t>(slots_.size()), s.values.end(), 0.0);
   return Rejection::none;
 }
 
 double WireSignal::value(const void* message, std::size_t field) const {
-  return read(*slots_.at(field), const_cast<void*>(message));
+  return read_slot(*slots_.at(field), const_cast<void*>(message));
 }
 
 // --- endpoints ----------------------------------------------------------------

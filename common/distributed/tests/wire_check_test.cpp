@@ -230,7 +230,7 @@ TEST(WireBinding, ErrorsNameTheSignalItsProducerAndTheCause) {
             "scenario with `plexus sim`");
   const auto unknown = spec("r1/x", {"x"}, "Pose3D");
   EXPECT_EQ(input_error_of([&] { const WireSignal w(unknown, kStepNs); }),
-            "signal 'r1/x' (produced by 'r1/gps'): 'Pose3D' is not a message type of idl/plexus/msg");
+            "signal 'r1/x' (produced by 'r1/gps'): 'Pose3D' is not a known message type (idl/plexus/msg, or a package of a plugin the scenario loads)");
   const auto bad_field = spec("r1/x", {"x", "w"}, "Pose2D");
   EXPECT_EQ(input_error_of([&] { const WireSignal w(bad_field, kStepNs); }),
             "signal 'r1/x' (produced by 'r1/gps'): field 'w' is not a member of Pose2D (its fields: x, y, theta; "

@@ -1,5 +1,7 @@
 #include "plexus/runtime/qos.hpp"
 
+#include <dlfcn.h>
+
 #include <unistd.h>
 
 #include <cstdio>
@@ -27,8 +29,8 @@ E parse_enum(const YamlMap& m, const std::string& key, E fallback, const std::pa
 }
 
 // Both vendors must hold the value as it is: Fast DDS keeps whole seconds in an int32 (a
-// larger value was an undefined conversion), Cyclone DDS nanoseconds in an int64, and a value
-// below 1 ns became 0, which means something else. 1e9 s is 31 years.
+// larger value would be an undefined conversion), Cyclone DDS nanoseconds in an int64, and a
+// value below 1 ns would become 0, which means something else. 1e9 s is 31 years.
 double duration(const YamlMap& m, const std::string& key, double fallback) {
   const double v = m.optional<double>(key, fallback);
   if (v < 0) m.fail(key, "must be >= 0 seconds (0 means infinite/none), got " + std::to_string(v));
@@ -125,11 +127,22 @@ std::string default_qos_file() {
   if (const char* env = std::getenv("PLEXUS_QOS_FILE"); env && *env) return env;
   namespace fs = std::filesystem;
   std::error_code ec;
+  // Beside this library, which a user's program built against an installed plexus shares with
+  // plexus's own: the build tree's deploy/ (build/lib/), or the install prefix's share/plexus.
+  std::vector<fs::path> candidates;
+  Dl_info info{};
+  if (dladdr(reinterpret_cast<void*>(&default_qos_file), &info) && info.dli_fname) {
+    const fs::path lib = fs::absolute(info.dli_fname, ec).parent_path();
+    candidates.push_back(lib / "../../deploy/qos.yaml");
+    candidates.push_back(lib / PLEXUS_SHARE_FROM_LIB / "qos.yaml");
+  }
   const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
   if (!ec) {
-    for (const fs::path& candidate : {exe.parent_path() / "../../deploy/qos.yaml", exe.parent_path() / "../share/plexus/qos.yaml"})
-      if (fs::exists(candidate, ec)) return fs::weakly_canonical(candidate, ec).string();
+    candidates.push_back(exe.parent_path() / "../../deploy/qos.yaml");
+    candidates.push_back(exe.parent_path() / "../share/plexus/qos.yaml");
   }
+  for (const fs::path& candidate : candidates)
+    if (fs::exists(candidate, ec)) return fs::weakly_canonical(candidate, ec).string();
   return "deploy/qos.yaml";
 }
 

@@ -20,11 +20,11 @@
 namespace plexus::rt {
 namespace {
 
-// Found by fuzzing the subscriber edge (tests/fuzz, cdr_decode). The generated Fast DDS
-// decoder let Fast CDR's BadParamException out (an encapsulation that does not start with a
-// zero byte), through DataReader::take_next_sample into the service; and Fast DDS hands a
-// sample whose decode failed to the reader as valid. Every type's Fast DDS decoder now fails
-// without throwing and flags the failure for the reader (checked_fast_type.hpp).
+// The generated Fast DDS decoder lets Fast CDR's BadParamException out (an encapsulation that
+// does not start with a zero byte), through DataReader::take_next_sample into the service; and
+// Fast DDS hands a sample whose decode failed to the reader as valid (both found by fuzzing the
+// subscriber edge: tests/fuzz, cdr_decode). So every type's Fast DDS decoder fails without
+// throwing and flags the failure for the reader (checked_fast_type.hpp).
 TEST(MessageCodec, FastDecoderFailsWithoutThrowingAndFlagsTheFailure) {
   const auto decode = [](const msg::TypeSupport& ts, std::vector<unsigned char> bytes) {
     const std::unique_ptr<eprosima::fastdds::dds::TopicDataType> type(ts.make_fast_type());

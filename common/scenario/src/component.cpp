@@ -46,9 +46,10 @@ OutputPort& Component::add_output(const std::string& port, std::vector<std::stri
   return *outputs_.back();
 }
 
+std::string Component::signal_of(const std::string& port) const { return resolve_signal(robot_, remap_, port); }
+
 void Component::hold(int64_t, double) {
-  for (auto& out : outputs_)
-    for (std::size_t i = 0; i < out->fields().size(); ++i) (*out)[i] = 0.0;
+  for (auto& out : outputs_) out->clear();
 }
 
 }  // namespace plexus::scenario

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "plexus/base/input_error.hpp"
-#include "plexus/scenario/evaluation.hpp"
+#include "plexus/scenario/format.hpp"
 #include "plexus/scenario/step_executor.hpp"
 
 namespace plexus::scenario {

@@ -1,5 +1,8 @@
 #include "plexus/scenario/registry.hpp"
 
+#include <cstdio>
+#include <cstdlib>
+
 #include "named_registry.hpp"
 
 namespace plexus::scenario {
@@ -7,6 +10,11 @@ namespace {
 
 detail::NamedRegistry<ComponentType>& types() {
   static detail::NamedRegistry<ComponentType> registry("component type");  // built on first use
+  return registry;
+}
+
+detail::NamedRegistry<ServiceDeclaration>& service_registry() {
+  static detail::NamedRegistry<ServiceDeclaration> registry("service");
   return registry;
 }
 
@@ -20,5 +28,59 @@ ComponentRegistration::ComponentRegistration(std::string name, ComponentKind kin
 const ComponentType* find_component_type(const std::string& name) { return types().find(name); }
 
 std::vector<const ComponentType*> component_types() { return types().all(); }
+
+const char* to_string(ServiceRole role) {
+  switch (role) {
+    case ServiceRole::plant: return "plant";
+    case ServiceRole::service: return "service";
+    case ServiceRole::host: return "host";
+  }
+  return "?";
+}
+
+ServiceRegistration::ServiceRegistration(ServiceDeclaration declaration) {
+  for (const auto& t : declaration.component_types)
+    if (const ServiceDeclaration* other = service_declaring(t)) {
+      std::fprintf(stderr, "plexus: component type '%s' is declared by both services %s and %s\n", t.c_str(),
+                   other->name.c_str(), declaration.name.c_str());
+      std::abort();
+    }
+  service_registry().add(std::move(declaration));
+}
+
+const ServiceDeclaration* find_service(const std::string& name) { return service_registry().find(name); }
+
+const ServiceDeclaration* service_declaring(const std::string& type) {
+  for (const ServiceDeclaration* s : service_registry().all())
+    for (const auto& t : s->component_types)
+      if (t == type) return s;
+  return nullptr;
+}
+
+const ServiceDeclaration* host_service() {
+  for (const ServiceDeclaration* s : service_registry().all())
+    if (s->role == ServiceRole::host) return s;
+  return nullptr;
+}
+
+std::string executable_for(const std::string& type) {
+  if (const ServiceDeclaration* s = service_declaring(type)) return s->name;
+  const ServiceDeclaration* host = host_service();
+  return host ? host->name : "";
+}
+
+std::string plant_executable_for(const std::string& plant_type, const std::vector<std::string>& sensor_types) {
+  const ServiceDeclaration* plant = service_declaring(plant_type);
+  bool fits = plant && plant->role == ServiceRole::plant;
+  for (const auto& t : sensor_types) {
+    const ServiceDeclaration* s = service_declaring(t);
+    fits = fits && (!s || s == plant);  // a plant service hosts the sensors no other service declares
+  }
+  if (fits) return plant->name;
+  const ServiceDeclaration* host = host_service();
+  return host ? host->name : "";
+}
+
+std::vector<const ServiceDeclaration*> services() { return service_registry().all(); }
 
 }  // namespace plexus::scenario

@@ -14,7 +14,8 @@
 #include "plexus/scenario/digest.hpp"
 #include "plexus/scenario/registry.hpp"
 #include "plexus/scenario/scenario.hpp"
-#include "plexus/scenario/evaluation.hpp"
+#include "plexus/scenario/format.hpp"
+#include "plexus/scenario/plugins.hpp"
 #include "security_section.hpp"
 #include "wiring.hpp"
 
@@ -169,6 +170,20 @@ struct Loader {
     return out;
   }
 
+  // `plugins:` before anything is built: their component, service and message types are then known.
+  void load_plugins(const YamlMap& top) {
+    if (!top.has("plugins")) return;
+    const auto entries = top.sequence("plugins");
+    for (std::size_t i = 0; i < entries.size(); ++i) {
+      const std::string where = top.where(entries[i]) + ": plugins." + std::to_string(i);
+      if (!entries[i].IsScalar()) throw InputError(where + ": expected the path of a shared library");
+      const std::filesystem::path p = entries[i].as<std::string>();
+      const std::string path = p.is_absolute() || sc.base_dir.empty() ? p.string() : (std::filesystem::path(sc.base_dir) / p).string();
+      load_plugin(path, where);
+      sc.plugins.push_back(std::filesystem::absolute(path).lexically_normal().string());
+    }
+  }
+
   void load_top(const YamlMap& top) {
     sc.name = top.required<std::string>("name");
     if (!valid_name(sc.name)) top.fail("name", "letters, digits, '_' and '-' only, at most 64 characters");
@@ -178,6 +193,7 @@ struct Loader {
       if (!sc.partial) top.fail("base_dir", "only a part of a scenario names the folder of its relative paths");
       sc.base_dir = top.required<std::string>("base_dir");
     }
+    load_plugins(top);
     sc.step = top.required<double>("step");
     // At least 1 us: distributed runs carry the step in whole nanoseconds (a step below 0.5 ns
     // was 0 there, and every process divided by it).

@@ -96,13 +96,15 @@ void StepExecutor::step(int64_t k, const RemoteInput& remote, const OutputSink& 
       }
       SignalSample& dst = in.port->sample();
       dst.step = src->step;
-      for (std::size_t f = 0; f < in.width; ++f) dst.values[f] = src->values[in.field_of[f]];
+      for (std::size_t f = 0; f < in.width; ++f) dst.values[f] = in.absent[f] ? 0.0 : src->values[in.field_of[f]];
+      in.port->refreshed();
     }
     if (!gate || gate(ci))
       c.component->step(k, t);
     else
       c.component->hold(k, t);
     for (const auto& out : w.outputs[ci]) {
+      out.port->commit();
       Slot& slot = impl_->bus[out.signal];
       SignalSample& sample = out.port->sample();
       sample.step = k;

@@ -4,6 +4,7 @@
 #include <map>
 
 #include "plexus/base/input_error.hpp"
+#include "plexus/msg/registry.hpp"
 
 namespace plexus::scenario::detail {
 namespace {
@@ -40,6 +41,23 @@ std::string remap_of(const ScenarioComponent& c, const std::string& port) {
     throw InputError(where + ": reads port '" + in.port() + "' from '" + in.signal() + "', which no component produces");
   throw InputError(reader.where + ": input '" + in.signal() + "' (port '" + in.port() +
                    "') is produced by no component; remap the port or add its producer");
+}
+
+// Two names of one message type: equal, or one the short form of the other ("Pose2D" and
+// "plexus::msg::Pose2D").
+bool same_message(const std::string& a, const std::string& b) {
+  if (a == b) return true;
+  auto short_of = [](const std::string& s) { const auto p = s.rfind("::"); return p == std::string::npos ? s : s.substr(p + 2); };
+  return (a.find("::") == std::string::npos || b.find("::") == std::string::npos) && short_of(a) == short_of(b) &&
+         msg::find_wire_type(a) == msg::find_wire_type(b);
+}
+
+// The member a field of `message` fills ("position[0]"), or "" when the type or field is unknown.
+std::string member_of(const std::string& message, const std::string& field) {
+  if (const msg::WireType* t = msg::find_wire_type(message))
+    for (const auto& s : t->slots)
+      if (s.field == field) return s.path;
+  return "";
 }
 
 }  // namespace
@@ -112,7 +130,7 @@ Wiring wire(const Scenario& scenario) {
       b.width = in->fields().size();
       SignalSpec& spec = w.signals[b.signal];
       if (external) {  // the fields of an external signal are those its readers here name
-        if (spec.message != in->message())
+        if (!same_message(spec.message, in->message()))
           throw InputError(c.where + ": input '" + in->signal() + "' is read as " + in->message() + " here and as " +
                            spec.message + " by another component of this process");
         for (const auto& f : in->fields())
@@ -120,7 +138,7 @@ Wiring wire(const Scenario& scenario) {
         if (spec.fields.size() > kMaxSignalFields)
           throw InputError(c.where + ": input '" + in->signal() + "' is read with more than " +
                            std::to_string(kMaxSignalFields) + " fields");
-      } else if (!in->message().empty() && !spec.message.empty() && in->message() != spec.message) {
+      } else if (!in->message().empty() && !spec.message.empty() && !same_message(in->message(), spec.message)) {
         throw InputError(c.where + ": input '" + in->signal() + "' (port '" + in->port() + "') expects " +
                          in->message() + ", but '" + spec.producer + "' publishes it as " + spec.message);
       }
@@ -128,6 +146,15 @@ Wiring wire(const Scenario& scenario) {
         std::size_t found = spec.fields.size();
         for (std::size_t g = 0; g < spec.fields.size(); ++g)
           if (spec.fields[g] == in->fields()[f]) found = g;
+        // Another name of the same member of the message type (Imu's gyro is wy).
+        if (found == spec.fields.size() && !spec.message.empty())
+          if (const std::string member = member_of(spec.message, in->fields()[f]); !member.empty())
+            for (std::size_t g = 0; g < spec.fields.size(); ++g)
+              if (member_of(spec.message, spec.fields[g]) == member) found = g;
+        if (found == spec.fields.size() && in->whole_message()) {
+          b.absent[f] = true;  // a member its producer does not use: 0, as on the wire
+          continue;
+        }
         if (found == spec.fields.size())
           throw InputError(c.where + ": input '" + in->signal() + "' has no field '" + in->fields()[f] +
                            "' (it has: " + join(spec.fields) + ")");

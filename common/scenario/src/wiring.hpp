@@ -15,6 +15,7 @@ struct InputBinding {
   bool delayed = false;    ///< reads the latest sample before this step (producer in same or later stage)
   std::size_t width = 0;
   std::array<std::size_t, kMaxSignalFields> field_of{};  ///< port field i = signal field field_of[i]
+  std::array<bool, kMaxSignalFields> absent{};            ///< typed ports: a field the producer does not fill (reads 0)
 };
 
 struct OutputBinding {

@@ -91,7 +91,7 @@ TEST_F(Recording, WrittenMessagesReadBackInReceiveOrder) {
   EXPECT_EQ(summary[0].last_ns, 20);
 }
 
-// A NULL name was read as a null char* into std::string: a crash.
+// A NULL name must not be read as a null char* into std::string (a crash).
 TEST_F(Recording, TopicWithoutANameOrTypeIsRefused) {
   sql("INSERT INTO topics VALUES(1, NULL, 'plexus::msg::Pose2D', '');");
   EXPECT_EQ(error_of([&] { RecordingReader r(path_); }), path_ + ": not a plexus recording: topic 1 without a name or a type");
@@ -145,8 +145,8 @@ TEST(RecordedQos, WhatPlexusRecordWritesIsReplayedAsRecorded) {
   EXPECT_EQ(d.depth, 64);
 }
 
-// Each of these reached the vendors' QoS conversion (a depth or duration no vendor holds) or
-// escaped as a JSON exception (exit 1, "failed"); each is now one line naming file, topic, key.
+// Each of these would reach the vendors' QoS conversion (a depth or duration no vendor holds) or
+// escape as a JSON exception (exit 1, "failed"); each is one line naming file, topic, key.
 TEST(RecordedQos, ValuesNoVendorAppliesAreRefused) {
   const std::string at = "f: topic 'r1/position': recorded QoS: ";
   const std::string hint = " (replay with --profile PROFILE to publish with a profile instead)";

@@ -5,9 +5,9 @@
 
 #include <stdexcept>
 
-#include "clock_offset.hpp"
-#include "remote_protocol.hpp"
-#include "ssh_command.hpp"
+#include "launch/clock_offset.hpp"
+#include "launch/remote_protocol.hpp"
+#include "launch/ssh_command.hpp"
 #include "systemd_units.hpp"
 
 namespace plexus::cli {
@@ -64,7 +64,26 @@ TEST(SshCommand, RemoteCommandChangesToTheWorkdirAndRunsThatHostsPlexus) {
   EXPECT_EQ(remote_launch_command(a, "/usr/bin/plexus"), "cd '/opt/plexus dir' && exec '/usr/bin/plexus' launch --remote");
   a.workdir.clear();
   a.plexus = "/opt/p/bin/plexus";
-  EXPECT_EQ(remote_launch_command(a, "/usr/bin/plexus"), "exec '/opt/p/bin/plexus' launch --remote");
+  EXPECT_EQ(remote_launch_command(a, "/usr/bin/plexus"),
+            "P='/opt/p/bin/plexus'; if [ -d \"$P\" ]; then P=\"$P/bin/plexus\"; fi; exec \"$P\" launch --remote");
+}
+
+TEST(SshCommand, AnInstallPrefixRunsItsBinPlexus) {
+  // The command as the remote shell runs it, with `exec` shown instead of done: a folder (an
+  // install prefix) runs its bin/plexus, a file runs itself.
+  auto run = [](const std::string& plexus) {
+    scenario::Scenario::HostAccess a{"robot@10.0.0.2", "", plexus};
+    std::string cmd = remote_launch_command(a, "/usr/bin/plexus");
+    cmd.replace(cmd.find("exec "), 5, "echo ");
+    std::string out;
+    FILE* f = popen(cmd.c_str(), "r");
+    char buf[256] = {};
+    if (f && fgets(buf, sizeof buf, f)) out = buf;
+    if (f) pclose(f);
+    return out;
+  };
+  EXPECT_EQ(run("/tmp"), "/tmp/bin/plexus launch --remote\n");
+  EXPECT_EQ(run("/opt/p/bin/plexus"), "/opt/p/bin/plexus launch --remote\n");
 }
 
 TEST(SshCommand, ArgumentsEndOptionsBeforeTheDestination) {

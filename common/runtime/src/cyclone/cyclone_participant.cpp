@@ -13,6 +13,7 @@
 #include <mutex>
 #include <stdexcept>
 
+#include "../endpoint_listener.hpp"
 #include "../policy_names.hpp"
 #include "cdr_sertype.hpp"
 #include "cyclone_security.hpp"
@@ -86,7 +87,7 @@ std::string policy_value(const dds_qos_t* q, const std::string& policy) {
 class CycloneWriter final : public WriterBackend {
  public:
   CycloneWriter(const CycloneParticipant& owner, std::string topic, std::string local, const struct ddsi_sertype* st)
-      : owner_(owner), topic_(std::move(topic)), local_(std::move(local)), sertype_(st) {}
+      : owner_(owner), events_(owner, std::move(topic), /*on_writer=*/true, std::move(local)), sertype_(st) {}
   ~CycloneWriter() override {
     if (writer_ > 0) dds_delete(writer_);
   }
@@ -98,60 +99,47 @@ class CycloneWriter final : public WriterBackend {
     return dds_writecdr(writer_, sd) >= 0;  // takes ownership of sd
   }
   void assert_liveliness() override { dds_assert_liveliness(writer_); }
-  int matched_count() const override { return matched_; }
+  int matched_count() const override { return events_.matched_count(); }
   bool wait_for_acks(int64_t timeout_ns) override { return dds_wait_for_acks(writer_, timeout_ns) == DDS_RETCODE_OK; }
 
+  /// The writer's listener: every status plexus reports as an event.
+  static dds_listener_t* listener(CycloneWriter* self) {
+    dds_listener_t* l = dds_create_listener(self);
+    dds_lset_publication_matched(l, &CycloneWriter::on_matched);
+    dds_lset_offered_deadline_missed(l, &CycloneWriter::on_deadline);
+    dds_lset_offered_incompatible_qos(l, &CycloneWriter::on_incompatible);
+    dds_lset_liveliness_lost(l, &CycloneWriter::on_liveliness_lost);
+    return l;
+  }
   static void on_matched(dds_entity_t w, const dds_publication_matched_status_t s, void* arg) {
     auto* self = static_cast<CycloneWriter*>(arg);
-    self->matched_ = static_cast<int>(s.current_count);
-    Event e = self->base(s.current_count_change > 0 ? EventKind::matched : EventKind::unmatched);
-    e.total_count = static_cast<int32_t>(s.total_count);
-    e.current_count = static_cast<int32_t>(s.current_count);
-    if (s.current_count_change > 0) e.remote = self->owner_.describe_matched(w, s.last_subscription_handle, false);
-    self->owner_.emit_event(e);
+    const bool added = s.current_count_change > 0;
+    self->events_.matched(static_cast<int32_t>(s.total_count), static_cast<int32_t>(s.current_count),
+                          s.current_count_change,
+                          added ? self->owner_.describe_matched(w, s.last_subscription_handle, false) : std::string());
   }
   static void on_deadline(dds_entity_t, const dds_offered_deadline_missed_status_t s, void* arg) {
-    auto* self = static_cast<CycloneWriter*>(arg);
-    Event e = self->base(EventKind::deadline_missed);
-    e.total_count = static_cast<int32_t>(s.total_count);
-    self->owner_.emit_event(e);
+    static_cast<CycloneWriter*>(arg)->events_.deadline_missed(static_cast<int32_t>(s.total_count));
   }
   static void on_incompatible(dds_entity_t, const dds_offered_incompatible_qos_status_t s, void* arg) {
-    auto* self = static_cast<CycloneWriter*>(arg);
-    Event e = self->base(EventKind::incompatible_qos);
-    e.total_count = static_cast<int32_t>(s.total_count);
-    e.policy = policy_name(static_cast<dds_qos_policy_id_t>(s.last_policy_id));
-    e.remote = self->owner_.incompatible_remotes(self->topic_, false, e.policy);
-    self->owner_.emit_event(e);
+    static_cast<CycloneWriter*>(arg)->events_.incompatible_qos(
+        static_cast<int32_t>(s.total_count), policy_name(static_cast<dds_qos_policy_id_t>(s.last_policy_id)));
   }
   static void on_liveliness_lost(dds_entity_t, const dds_liveliness_lost_status_t s, void* arg) {
-    auto* self = static_cast<CycloneWriter*>(arg);
-    Event e = self->base(EventKind::liveliness_lost);
-    e.total_count = static_cast<int32_t>(s.total_count);
-    self->owner_.emit_event(e);
+    static_cast<CycloneWriter*>(arg)->events_.liveliness_lost(static_cast<int32_t>(s.total_count));
   }
 
  private:
-  Event base(EventKind k) const {
-    Event e;
-    e.kind = k;
-    e.on_writer = true;
-    e.topic = topic_;
-    e.local = local_;
-    return e;
-  }
   const CycloneParticipant& owner_;
-  std::string topic_;
-  std::string local_;
+  detail::EndpointEvents events_;
   const struct ddsi_sertype* sertype_;  // owned by the topic, which outlives the writer
   dds_entity_t writer_ = 0;
-  std::atomic<int> matched_{0};
 };
 
 class CycloneReader final : public ReaderBackend {
  public:
   CycloneReader(const CycloneParticipant& owner, std::string topic, std::string local)
-      : owner_(owner), topic_(std::move(topic)), local_(std::move(local)) {}
+      : owner_(owner), events_(owner, std::move(topic), /*on_writer=*/false, std::move(local)) {}
   ~CycloneReader() override {
     if (waitset_ > 0) dds_delete(waitset_);
     if (reader_ > 0) dds_delete(reader_);
@@ -185,16 +173,16 @@ class CycloneReader final : public ReaderBackend {
   bool wait(int64_t timeout_ns) override {
     return dds_waitset_wait(waitset_, nullptr, 0, static_cast<dds_duration_t>(timeout_ns)) > 0;
   }
-  int matched_count() const override { return matched_; }
+  int matched_count() const override { return events_.matched_count(); }
   uint64_t malformed_count() const override { return malformed_; }
   void set_data_callback(std::function<void()> fn) override {
-    if (data_cb_) throw std::logic_error("reader on '" + topic_ + "': data callback set twice");
-    data_cb_ = std::move(fn);  // before the listener can call it
+    data_cb_.set(std::move(fn), events_.topic());  // before the listener can call it
     // dds_set_listener replaces the whole listener: the status callbacks again, plus data.
     dds_listener_t* l = listener(this, true);
     const dds_return_t rc = dds_set_listener(reader_, l);
     dds_delete_listener(l);
-    if (rc < 0) throw std::runtime_error(cyc_error(("cannot set the data listener on '" + topic_ + "'").c_str(), rc));
+    if (rc < 0)
+      throw std::runtime_error(cyc_error(("cannot set the data listener on '" + events_.topic() + "'").c_str(), rc));
     on_data_available(reader_, this);  // samples that arrived before the listener
   }
 
@@ -212,80 +200,47 @@ class CycloneReader final : public ReaderBackend {
   }
   // Cyclone calls it on the thread that delivered the data: with the default
   // Internal/SynchronousDeliveryLatencyBound, the receive thread itself, as ddsperf's pong.
-  static void on_data_available(dds_entity_t, void* arg) {
-    auto* self = static_cast<CycloneReader*>(arg);
-    std::lock_guard lk(self->data_mu_);  // never two calls at once (the interface's promise)
-    self->data_cb_();
-  }
+  static void on_data_available(dds_entity_t, void* arg) { static_cast<CycloneReader*>(arg)->data_cb_(); }
 
   static void on_matched(dds_entity_t r, const dds_subscription_matched_status_t s, void* arg) {
     auto* self = static_cast<CycloneReader*>(arg);
-    self->matched_ = static_cast<int>(s.current_count);
-    Event e = self->base(s.current_count_change > 0 ? EventKind::matched : EventKind::unmatched);
-    e.total_count = static_cast<int32_t>(s.total_count);
-    e.current_count = static_cast<int32_t>(s.current_count);
-    if (s.current_count_change > 0) e.remote = self->owner_.describe_matched(r, s.last_publication_handle, true);
-    self->owner_.emit_event(e);
+    const bool added = s.current_count_change > 0;
+    self->events_.matched(static_cast<int32_t>(s.total_count), static_cast<int32_t>(s.current_count),
+                          s.current_count_change,
+                          added ? self->owner_.describe_matched(r, s.last_publication_handle, true) : std::string());
   }
   static void on_deadline(dds_entity_t, const dds_requested_deadline_missed_status_t s, void* arg) {
-    auto* self = static_cast<CycloneReader*>(arg);
-    Event e = self->base(EventKind::deadline_missed);
-    e.total_count = static_cast<int32_t>(s.total_count);
-    self->owner_.emit_event(e);
+    static_cast<CycloneReader*>(arg)->events_.deadline_missed(static_cast<int32_t>(s.total_count));
   }
   static void on_incompatible(dds_entity_t, const dds_requested_incompatible_qos_status_t s, void* arg) {
-    auto* self = static_cast<CycloneReader*>(arg);
-    Event e = self->base(EventKind::incompatible_qos);
-    e.total_count = static_cast<int32_t>(s.total_count);
-    e.policy = policy_name(static_cast<dds_qos_policy_id_t>(s.last_policy_id));
-    e.remote = self->owner_.incompatible_remotes(self->topic_, true, e.policy);
-    self->owner_.emit_event(e);
+    static_cast<CycloneReader*>(arg)->events_.incompatible_qos(
+        static_cast<int32_t>(s.total_count), policy_name(static_cast<dds_qos_policy_id_t>(s.last_policy_id)));
   }
   static void on_liveliness(dds_entity_t r, const dds_liveliness_changed_status_t s, void* arg) {
     auto* self = static_cast<CycloneReader*>(arg);
-    Event e = self->base(EventKind::liveliness_changed);
-    e.alive = s.alive_count_change > 0;
-    // Alive count down without a not-alive count up: the writer was removed (its lease did
-    // not expire), as every writer is when a run ends.
-    e.writer_left = s.alive_count_change < 0 && s.not_alive_count_change <= 0;
-    e.current_count = static_cast<int32_t>(s.alive_count);
-    e.total_count = static_cast<int32_t>(s.alive_count + s.not_alive_count);
-    e.remote = self->owner_.describe_matched(r, s.last_publication_handle, true);
-    self->owner_.emit_event(e);
+    self->events_.liveliness_changed(static_cast<int32_t>(s.alive_count), static_cast<int32_t>(s.not_alive_count),
+                                     s.alive_count_change, s.not_alive_count_change,
+                                     self->owner_.describe_matched(r, s.last_publication_handle, true));
   }
   static void on_sample_lost(dds_entity_t, const dds_sample_lost_status_t s, void* arg) {
-    auto* self = static_cast<CycloneReader*>(arg);
-    Event e = self->base(EventKind::sample_lost);
-    e.total_count = static_cast<int32_t>(s.total_count);
-    self->owner_.emit_event(e);
+    static_cast<CycloneReader*>(arg)->events_.sample_lost(static_cast<int32_t>(s.total_count));
   }
 
  private:
-  Event base(EventKind k) const {
-    Event e;
-    e.kind = k;
-    e.on_writer = false;
-    e.topic = topic_;
-    e.local = local_;
-    return e;
-  }
   const CycloneParticipant& owner_;
-  std::string topic_;
-  std::string local_;
+  detail::EndpointEvents events_;
   dds_entity_t reader_ = 0;
   dds_entity_t waitset_ = 0;
   dds_entity_t readcond_ = 0;
-  std::atomic<int> matched_{0};
   std::atomic<uint64_t> malformed_{0};
-  std::mutex data_mu_;
-  std::function<void()> data_cb_;  // set once; outlives the reader entity (deleted in ~CycloneReader)
+  detail::DataCallback data_cb_;  // outlives the reader entity (deleted in ~CycloneReader)
 };
 
 // The domains this process created (dds_create_domain), with the participants on each: one
 // configuration per domain and process, made by the first participant and deleted with the
-// last. An explicitly created domain otherwise outlives main(), and its receive threads then
-// ran on while exit handlers had already cleaned up OpenSSL: with DDS Security on, a packet
-// decrypted at that moment crashed the process (SIGSEGV in EVP_CipherInit_ex, about one exit
+// last. An explicitly created domain would otherwise outlive main(), and its receive threads
+// run on while exit handlers have already cleaned up OpenSSL: with DDS Security on, a packet
+// decrypted at that moment crashes the process (SIGSEGV in EVP_CipherInit_ex, about one exit
 // in seven under load).
 struct DomainUse {
   dds_entity_t handle = 0;  // 0: created by someone else in this process, not ours to delete
@@ -402,13 +357,9 @@ CycloneParticipant::Topic CycloneParticipant::topic(const msg::TypeSupport& type
 std::unique_ptr<WriterBackend> CycloneParticipant::make_writer(const msg::TypeSupport& type, const std::string& topic_name,
                                                                const QosProfile& qos) {
   const Topic t = topic(type, topic_name);
-  auto w = std::make_unique<CycloneWriter>(*this, topic_name, options().name + " writer (" + describe(qos) + ")",
+  auto w = std::make_unique<CycloneWriter>(*this, topic_name, detail::local_endpoint(options().name, true, qos),
                                            t.sertype);
-  dds_listener_t* l = dds_create_listener(w.get());
-  dds_lset_publication_matched(l, &CycloneWriter::on_matched);
-  dds_lset_offered_deadline_missed(l, &CycloneWriter::on_deadline);
-  dds_lset_offered_incompatible_qos(l, &CycloneWriter::on_incompatible);
-  dds_lset_liveliness_lost(l, &CycloneWriter::on_liveliness_lost);
+  dds_listener_t* l = CycloneWriter::listener(w.get());
   dds_qos_t* q = make_qos(qos);
   const dds_entity_t dw = dds_create_writer(participant_, t.entity, q, l);
   dds_delete_qos(q);
@@ -421,7 +372,7 @@ std::unique_ptr<WriterBackend> CycloneParticipant::make_writer(const msg::TypeSu
 std::unique_ptr<ReaderBackend> CycloneParticipant::make_reader(const msg::TypeSupport& type, const std::string& topic_name,
                                                                const QosProfile& qos) {
   const Topic t = topic(type, topic_name);
-  auto r = std::make_unique<CycloneReader>(*this, topic_name, options().name + " reader (" + describe(qos) + ")");
+  auto r = std::make_unique<CycloneReader>(*this, topic_name, detail::local_endpoint(options().name, false, qos));
   dds_listener_t* l = CycloneReader::listener(r.get(), false);
   dds_qos_t* q = make_qos(qos);
   const dds_entity_t dr = dds_create_reader(participant_, t.entity, q, l);

@@ -8,11 +8,12 @@
 #include <mutex>
 #include <string>
 
+#include "../endpoint_listener.hpp"
 #include "plexus/runtime/participant.hpp"
 
 namespace plexus::rt {
 
-class CycloneParticipant final : public Participant {
+class CycloneParticipant final : public Participant, public detail::EventOwner {
  public:
   explicit CycloneParticipant(const ParticipantOptions& options);
   ~CycloneParticipant() override;
@@ -26,11 +27,12 @@ class CycloneParticipant final : public Participant {
 
   // For the endpoint listeners.
   dds_entity_t handle() const { return participant_; }
-  void emit_event(const Event& e) const { emit(e); }
+  void emit_event(const Event& e) const override { emit(e); }
   /// "writer of participant 'name'" for a matched remote endpoint.
   std::string describe_matched(dds_entity_t local, dds_instance_handle_t remote, bool remote_is_writer) const;
   /// Every discovered remote endpoint of the given kind on `topic`, with its value of `policy`.
-  std::string incompatible_remotes(const std::string& topic, bool remote_is_writer, const std::string& policy) const;
+  std::string incompatible_remotes(const std::string& topic, bool remote_is_writer,
+                                   const std::string& policy) const override;
 
   /// The configuration XML plexus gives Cyclone for these network options (for tools and tests).
   static std::string config_xml(const NetworkOptions& net);

@@ -26,6 +26,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "../endpoint_listener.hpp"
 #include "../policy_names.hpp"
 #include "fast_endpoint_qos.hpp"
 #include "fast_security.hpp"
@@ -94,8 +95,8 @@ void apply_common(Q& q, const QosProfile& p, bool data_sharing) {
   repr.m_value.push_back(fdds::XCDR_DATA_REPRESENTATION);
   // A keep_last writer holds exactly `depth` samples. A reader keeps Fast DDS's default
   // limits: a reliable reader also holds samples received out of order until the gap before
-  // them is filled or declared lost, and with max_samples = depth a reader that joined a
-  // running writer (a restarted service) refused every new sample, each then reported lost,
+  // them is filled or declared lost, and with max_samples = depth a reader that joins a
+  // running writer (a restarted service) refuses every new sample, each then reported lost,
   // for the rest of the run (tests/fault, docs/distributed.md).
   if constexpr (requires { q.representation(); }) {
     if (p.history == QosProfile::History::keep_last) {
@@ -107,7 +108,8 @@ void apply_common(Q& q, const QosProfile& p, bool data_sharing) {
 
 class FastWriter final : public WriterBackend, public fdds::DataWriterListener {
  public:
-  FastWriter(const FastParticipant& owner, std::string topic) : owner_(owner), topic_(std::move(topic)) {}
+  FastWriter(const FastParticipant& owner, std::string topic, std::string local)
+      : owner_(owner), events_(owner, std::move(topic), /*on_writer=*/true, std::move(local)) {}
   ~FastWriter() override {
     if (writer_) {
       writer_->set_listener(nullptr);
@@ -118,7 +120,7 @@ class FastWriter final : public WriterBackend, public fdds::DataWriterListener {
 
   bool write(const void* sample) override { return writer_->write(const_cast<void*>(sample)); }
   void assert_liveliness() override { writer_->assert_liveliness(); }
-  int matched_count() const override { return matched_; }
+  int matched_count() const override { return events_.matched_count(); }
   bool wait_for_acks(int64_t timeout_ns) override {
     const eprosima::fastrtps::Duration_t max_wait(static_cast<int32_t>(timeout_ns / 1'000'000'000),
                                     static_cast<uint32_t>(timeout_ns % 1'000'000'000));
@@ -126,49 +128,29 @@ class FastWriter final : public WriterBackend, public fdds::DataWriterListener {
   }
 
   void on_publication_matched(fdds::DataWriter*, const fdds::PublicationMatchedStatus& s) override {
-    matched_ = s.current_count;
-    Event e = base(s.current_count_change > 0 ? EventKind::matched : EventKind::unmatched);
-    e.total_count = s.total_count;
-    e.current_count = s.current_count;
-    e.remote = owner_.describe_remote(s.last_subscription_handle);
-    owner_.emit_event(e);
+    events_.matched(s.total_count, s.current_count, s.current_count_change,
+                    owner_.describe_remote(s.last_subscription_handle));
   }
   void on_offered_deadline_missed(fdds::DataWriter*, const fdds::OfferedDeadlineMissedStatus& s) override {
-    Event e = base(EventKind::deadline_missed);
-    e.total_count = s.total_count;
-    owner_.emit_event(e);
+    events_.deadline_missed(s.total_count);
   }
   void on_offered_incompatible_qos(fdds::DataWriter*, const fdds::OfferedIncompatibleQosStatus& s) override {
-    Event e = base(EventKind::incompatible_qos);
-    e.total_count = s.total_count;
-    e.policy = policy_name(s.last_policy_id);
-    e.remote = owner_.incompatible_remotes(topic_, /*remote_is_writer=*/false, e.policy);
-    owner_.emit_event(e);
+    events_.incompatible_qos(s.total_count, policy_name(s.last_policy_id));
   }
   void on_liveliness_lost(fdds::DataWriter*, const fdds::LivelinessLostStatus& s) override {
-    Event e = base(EventKind::liveliness_lost);
-    e.total_count = s.total_count;
-    owner_.emit_event(e);
+    events_.liveliness_lost(s.total_count);
   }
 
  private:
-  Event base(EventKind k) const {
-    Event e;
-    e.kind = k;
-    e.on_writer = true;
-    e.topic = topic_;
-    e.local = owner_.local_name() + " writer (" + owner_.local_qos(topic_, true) + ")";
-    return e;
-  }
   const FastParticipant& owner_;
-  std::string topic_;
+  detail::EndpointEvents events_;
   fdds::DataWriter* writer_ = nullptr;
-  std::atomic<int> matched_{0};
 };
 
 class FastReader final : public ReaderBackend, public fdds::DataReaderListener {
  public:
-  FastReader(const FastParticipant& owner, std::string topic) : owner_(owner), topic_(std::move(topic)) {}
+  FastReader(const FastParticipant& owner, std::string topic, std::string local)
+      : owner_(owner), events_(owner, std::move(topic), /*on_writer=*/false, std::move(local)) {}
   ~FastReader() override {
     if (reader_) {
       reader_->set_listener(nullptr);
@@ -199,74 +181,41 @@ class FastReader final : public ReaderBackend, public fdds::DataReaderListener {
     if (reader_->get_unread_count() > 0) return true;
     return reader_->wait_for_unread_message(eprosima::fastrtps::Duration_t(static_cast<long double>(timeout_ns) * 1e-9L));
   }
-  int matched_count() const override { return matched_; }
+  int matched_count() const override { return events_.matched_count(); }
   uint64_t malformed_count() const override { return malformed_; }
   void set_data_callback(std::function<void()> fn) override {
-    if (data_cb_) throw std::logic_error("reader on '" + topic_ + "': data callback set twice");
-    data_cb_ = std::move(fn);  // before the listener can call it
+    data_cb_.set(std::move(fn), events_.topic());  // before the listener can call it
     if (!reader_->set_listener(this, fdds::StatusMask::all()))
-      throw std::runtime_error("Fast DDS: cannot set the data listener on '" + topic_ + "'");
+      throw std::runtime_error("Fast DDS: cannot set the data listener on '" + events_.topic() + "'");
     on_data_available(reader_);  // samples that arrived before the listener
   }
   // Fast DDS calls it on the thread that received the data (the transport's receive thread).
-  void on_data_available(fdds::DataReader*) override {
-    std::lock_guard lk(data_mu_);  // never two calls at once (the interface's promise)
-    if (data_cb_) data_cb_();
-  }
+  void on_data_available(fdds::DataReader*) override { data_cb_(); }
 
   void on_subscription_matched(fdds::DataReader*, const fdds::SubscriptionMatchedStatus& s) override {
-    matched_ = s.current_count;
-    Event e = base(s.current_count_change > 0 ? EventKind::matched : EventKind::unmatched);
-    e.total_count = s.total_count;
-    e.current_count = s.current_count;
-    e.remote = owner_.describe_remote(s.last_publication_handle);
-    owner_.emit_event(e);
+    events_.matched(s.total_count, s.current_count, s.current_count_change,
+                    owner_.describe_remote(s.last_publication_handle));
   }
   void on_requested_deadline_missed(fdds::DataReader*, const fdds::RequestedDeadlineMissedStatus& s) override {
-    Event e = base(EventKind::deadline_missed);
-    e.total_count = s.total_count;
-    owner_.emit_event(e);
+    events_.deadline_missed(s.total_count);
   }
   void on_requested_incompatible_qos(fdds::DataReader*, const fdds::RequestedIncompatibleQosStatus& s) override {
-    Event e = base(EventKind::incompatible_qos);
-    e.total_count = s.total_count;
-    e.policy = policy_name(s.last_policy_id);
-    e.remote = owner_.incompatible_remotes(topic_, /*remote_is_writer=*/true, e.policy);
-    owner_.emit_event(e);
+    events_.incompatible_qos(s.total_count, policy_name(s.last_policy_id));
   }
   void on_liveliness_changed(fdds::DataReader*, const fdds::LivelinessChangedStatus& s) override {
-    Event e = base(EventKind::liveliness_changed);
-    e.alive = s.alive_count_change > 0;
-    // Alive count down without a not-alive count up: the writer was removed (its lease did
-    // not expire), as every writer is when a run ends.
-    e.writer_left = s.alive_count_change < 0 && s.not_alive_count_change <= 0;
-    e.current_count = s.alive_count;
-    e.total_count = s.alive_count + s.not_alive_count;
-    e.remote = owner_.describe_remote(s.last_publication_handle);
-    owner_.emit_event(e);
+    events_.liveliness_changed(s.alive_count, s.not_alive_count, s.alive_count_change, s.not_alive_count_change,
+                               owner_.describe_remote(s.last_publication_handle));
   }
   void on_sample_lost(fdds::DataReader*, const fdds::SampleLostStatus& s) override {
-    Event e = base(EventKind::sample_lost);
-    e.total_count = s.total_count;
-    owner_.emit_event(e);
+    events_.sample_lost(s.total_count);
   }
 
  private:
-  Event base(EventKind k) const {
-    Event e;
-    e.kind = k;
-    e.on_writer = false;
-    e.topic = topic_;
-    e.local = owner_.local_name() + " reader (" + owner_.local_qos(topic_, false) + ")";
-    return e;
-  }
   const FastParticipant& owner_;
-  std::string topic_;
+  detail::EndpointEvents events_;
   fdds::DataReader* reader_ = nullptr;
-  std::atomic<int> matched_{0};
   std::atomic<uint64_t> malformed_{0};
-  std::mutex data_mu_;
-  std::function<void()> data_cb_;  // set once; outlives the reader (deleted in ~FastReader)
+  detail::DataCallback data_cb_;
 };
 
 }  // namespace
@@ -394,7 +343,7 @@ class FastParticipant::Discovery final : public fdds::DomainParticipantListener 
 FastParticipant::FastParticipant(const ParticipantOptions& o) : Participant(o), discovery_(std::make_unique<Discovery>()) {
   // Fast DDS logs to stdout by default, where tools print their results (`plexus topic list
   // --json`): its own log goes to stderr instead. Security errors (a failed handshake with a
-  // participant of another CA, for one) otherwise broke the JSON.
+  // participant of another CA, for one) would otherwise break the JSON.
   static std::once_flag log_to_stderr;
   std::call_once(log_to_stderr, [] {
     auto consumer = std::make_unique<fdds::StdoutErrConsumer>();
@@ -410,7 +359,7 @@ FastParticipant::FastParticipant(const ParticipantOptions& o) : Participant(o), 
   // host id in the SHM locator) and UDP with any other: a Cyclone DDS peer ignores the SHM
   // locators, another host cannot reach them. RTPS messages are encrypted before either
   // transport carries them, so DDS Security works over both (docs/runtime.md, Transports).
-  // Only with transport shm, not by default (auto is UDP for now): a reader killed with
+  // Only with transport shm, not by default (auto is UDP): a reader killed with
   // SIGKILL and started again beside a running writer got nothing for 4 s in 2 of 5 rounds
   // over the SHM transport (tests/fault/restarted_reader.sh; 0 of 5 over UDP).
   pq.transport().use_builtin_transports = false;
@@ -425,10 +374,11 @@ FastParticipant::FastParticipant(const ParticipantOptions& o) : Participant(o), 
   pq.wire_protocol().builtin.metatrafficUnicastLocatorList.clear();
   pq.wire_protocol().builtin.metatrafficUnicastLocatorList.push_back(Locator_t());
   pq.wire_protocol().builtin.initialPeersList.clear();
-  // Announce every 0.5 s, not every 3 s: a participant answers a newcomer only with its next
-  // announcement, so a reader started (or restarted) beside a running writer waited up to 3 s
-  // for its first sample, about 0.5 s on Cyclone DDS. Measured: half of the readers joining a
-  // 100 Hz writer got nothing within 2 s before; now each gets its first samples in about 0.5 s.
+  // Announce every 0.5 s (Fast DDS's default: 3 s): a participant answers a newcomer only
+  // with its next announcement, so a reader started (or restarted) beside a running writer
+  // waits up to one period for its first sample (about 0.5 s on Cyclone DDS). Measured on a
+  // 100 Hz writer: with 3 s half of the joining readers got nothing within 2 s; with 0.5 s
+  // each gets its first samples in about 0.5 s.
   pq.wire_protocol().builtin.discovery_config.leaseDuration_announcementperiod = eprosima::fastrtps::Duration_t(0, 500'000'000);
   const auto& ports = pq.wire_protocol().port;
   for (const auto& peer : o.network.peers) {
@@ -493,12 +443,6 @@ bool FastParticipant::data_sharing(const msg::TypeSupport& type) const {
   return !ts.empty() && ts.is_plain();
 }
 
-std::string FastParticipant::local_qos(const std::string& topic, bool writer) const {
-  std::lock_guard lk(mu_);
-  auto it = qos_by_endpoint_.find((writer ? "w:" : "r:") + topic);
-  return it == qos_by_endpoint_.end() ? "" : it->second;
-}
-
 std::unique_ptr<WriterBackend> FastParticipant::make_writer(const msg::TypeSupport& type, const std::string& topic_name,
                                                             const QosProfile& qos) {
   fdds::Topic* t = topic(type, topic_name);
@@ -508,11 +452,7 @@ std::unique_ptr<WriterBackend> FastParticipant::make_writer(const msg::TypeSuppo
   // request (NetworkOptions::reliable_heartbeat_s; Fast DDS's defaults: 3 s and 5 ms).
   wq.reliable_writer_qos().times.heartbeatPeriod = to_duration(options().network.reliable_heartbeat_s);
   wq.reliable_writer_qos().times.nackResponseDelay = eprosima::fastrtps::Duration_t(0, 1'000'000);
-  {
-    std::lock_guard lk(mu_);
-    qos_by_endpoint_["w:" + topic_name] = describe(qos);
-  }
-  auto w = std::make_unique<FastWriter>(*this, topic_name);
+  auto w = std::make_unique<FastWriter>(*this, topic_name, detail::local_endpoint(options().name, true, qos));
   fdds::DataWriter* dw = publisher_->create_datawriter(t, wq, w.get(), fdds::StatusMask::all());
   if (!dw) throw std::runtime_error("Fast DDS: cannot create writer on '" + topic_name + "' with profile " + qos.name);
   w->attach(dw);
@@ -526,11 +466,7 @@ std::unique_ptr<ReaderBackend> FastParticipant::make_reader(const msg::TypeSuppo
   apply_common(rq, qos, data_sharing(type));
   // Asks for what a heartbeat says it missed 1 ms after it (default 5 ms): NetworkOptions.
   rq.reliable_reader_qos().times.heartbeatResponseDelay = eprosima::fastrtps::Duration_t(0, 1'000'000);
-  {
-    std::lock_guard lk(mu_);
-    qos_by_endpoint_["r:" + topic_name] = describe(qos);
-  }
-  auto r = std::make_unique<FastReader>(*this, topic_name);
+  auto r = std::make_unique<FastReader>(*this, topic_name, detail::local_endpoint(options().name, false, qos));
   // data_available only with a data callback (set_data_callback): otherwise readers are
   // polled or waited on.
   fdds::StatusMask mask = fdds::StatusMask::all();

@@ -6,6 +6,7 @@
 #include <mutex>
 #include <string>
 
+#include "../endpoint_listener.hpp"
 #include "plexus/runtime/participant.hpp"
 
 namespace eprosima::fastdds::dds {
@@ -20,7 +21,7 @@ struct InstanceHandle_t;
 
 namespace plexus::rt {
 
-class FastParticipant final : public Participant {
+class FastParticipant final : public Participant, public detail::EventOwner {
  public:
   explicit FastParticipant(const ParticipantOptions& options);
   ~FastParticipant() override;
@@ -35,11 +36,10 @@ class FastParticipant final : public Participant {
   // For the endpoint listeners.
   eprosima::fastdds::dds::Publisher* publisher() const { return publisher_; }
   eprosima::fastdds::dds::Subscriber* subscriber() const { return subscriber_; }
-  void emit_event(const Event& e) const { emit(e); }
-  const std::string& local_name() const { return options().name; }
-  std::string local_qos(const std::string& topic, bool writer) const;
+  void emit_event(const Event& e) const override { emit(e); }
   std::string describe_remote(const eprosima::fastrtps::rtps::InstanceHandle_t& h) const;
-  std::string incompatible_remotes(const std::string& topic, bool remote_is_writer, const std::string& policy) const;
+  std::string incompatible_remotes(const std::string& topic, bool remote_is_writer,
+                                   const std::string& policy) const override;
 
  private:
   class Discovery;
@@ -53,7 +53,6 @@ class FastParticipant final : public Participant {
   eprosima::fastdds::dds::Subscriber* subscriber_ = nullptr;
   mutable std::mutex mu_;
   std::map<std::string, eprosima::fastdds::dds::Topic*> topics_;
-  std::map<std::string, std::string> qos_by_endpoint_;
 };
 
 }  // namespace plexus::rt

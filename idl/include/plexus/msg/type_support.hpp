@@ -1,9 +1,9 @@
 // What a DDS back end needs to know about a generated message type.
 //
 // One C++ type per message: service code uses the class fastddsgen generates
-// from idl/. Both back ends are generic over it through this record, which the
-// build generates for every IDL struct (see idl/CMakeLists.txt); nothing here is
-// written by hand per message.
+// from its IDL. Both back ends are generic over it through this record, which
+// plexus_idlgen generates for every IDL struct (cmake/PlexusMessages.cmake);
+// nothing here is written by hand per message. registry.hpp finds them by name.
 #pragma once
 
 #include <nlohmann/json_fwd.hpp>
@@ -48,14 +48,19 @@ struct TypeSupport {
   /// The sample's StampHeader (every plexus message starts with one), or nullptr for a
   /// type without a `StampHeader header` member.
   StampHeader* (*header)(void* sample);
-  /// True for a type with a sequence member (LatencyProbe): its CDR size varies.
+  /// True for a type with a sequence or string member (LatencyProbe): its CDR size varies.
   bool variable_size;
+  /// The self-contained IDL text that defines the type (its file with its includes resolved):
+  /// the `omgidl` schema of MCAP recordings and the Foxglove WebSocket.
+  const char* schema;
+  /// The IDL file it is defined in, as included ("plexus/msg/pose.idl").
+  const char* idl_file;
 };
 
-/// The TypeSupport of a scoped IDL type name ("plexus::msg::Pose2D", case-sensitive, exact),
-/// or nullptr. Covers every topic type, fixed and variable size.
+/// The TypeSupport of a scoped IDL type name ("plexus::msg::Pose2D": exact), or nullptr. Every
+/// type of every message package loaded (registry.hpp).
 const TypeSupport* find_type_support(std::string_view type_name);
-/// Every topic type's TypeSupport, in IDL file order.
+/// Every registered type's TypeSupport, packages in load order, types in IDL file order.
 const std::vector<const TypeSupport*>& all_type_supports();
 
 /// Specialised for every message type by the generated messages.cpp.

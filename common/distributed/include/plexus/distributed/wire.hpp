@@ -2,11 +2,11 @@
 // message (docs/topics.md).
 //
 // Every output port names an IDL message type (SignalSpec::message, "PositionMeasurement").
-// Each type is described once (wire_types.cpp) as a list of slots: the name of a signal
-// field and the message member (and array element) it occupies, with the member's physical
-// range. A signal binds its fields to slots by name, so one description serves every
-// component that produces or reads that type, and a program written against idl/ alone
-// sees ordinary named members (x, y; position[i]), never a positional array.
+// Each type is described once, in its IDL file, and generated as a list of slots: the name of a
+// signal field and the message member (and array element) it occupies, with the member's
+// accepted range (@range) and unit (@unit). A signal binds its fields to slots by name, so one
+// description serves every component that produces or reads that type, and a program written
+// against idl/ alone sees ordinary named members (x, y; position[i]), never a positional array.
 //
 // The step a sample belongs to travels in its header: data_time_ns = epoch + step * step_ns,
 // where the epoch is 0 in lockstep (sim time) and the run's start on the wall clock in
@@ -27,35 +27,18 @@
 #include <vector>
 
 #include "plexus/msg/messages.hpp"
+#include "plexus/msg/registry.hpp"
 #include "plexus/runtime/participant.hpp"
 #include "plexus/scenario/signal.hpp"
 
 namespace plexus::distributed {
 
-/// The message member one signal field occupies.
-struct WireSlot {
-  enum class Kind : uint8_t { f64, i32, u32, u16 };
-  std::string field;              ///< the field name components use ("x", "q3")
-  Kind kind = Kind::f64;
-  void* (*member)(void* message) = nullptr;  ///< the member's address (an array's first element)
-  std::size_t index = 0;          ///< element within an array member
-  double min = 0.0, max = 0.0;    ///< physical range, inclusive (the edge check)
-  const char* unit = "";          ///< for docs and errors
-};
-
-/// One IDL message type as signals see it.
-struct WireType {
-  const char* name = "";                          ///< short IDL name ("Pose2D")
-  const msg::TypeSupport* support = nullptr;
-  std::vector<WireSlot> slots;
-  /// Joint messages: the member holding the number of valid array entries.
-  uint16_t* (*count)(void* message) = nullptr;
-};
-
-/// Every message type a signal can travel as.
-const std::vector<WireType>& wire_types();
-/// A type by short ("Pose2D") or scoped ("plexus::msg::Pose2D") name; nullptr if none.
-const WireType* find_wire_type(std::string_view name);
+/// The message member one signal field occupies, and a message type as signals see it: both
+/// generated from the IDL (plexus/msg/registry.hpp).
+using WireSlot = msg::WireSlot;
+using WireType = msg::WireType;
+/// A type by its scoped ("plexus::msg::Pose2D") or unambiguous short name ("Pose2D"); nullptr if none.
+using msg::find_wire_type;
 
 /// Why a received sample was refused.
 enum class Rejection { none, negative_time, non_finite, out_of_range, wrong_count };
@@ -96,6 +79,7 @@ class WireSignal {
   const WireType* type_;
   std::vector<const WireSlot*> slots_;  // by field
   uint16_t count_ = 0;                  // joint messages: entries used
+  bool count_field_ = false;            // the signal carries the [count] member as a field (typed ports)
   int64_t step_ns_;
   int64_t epoch_ns_ = 0;
 };

@@ -14,8 +14,16 @@
 // '/' that does not start with `truth/` names a signal of its own (`other/state`).
 //
 // Every output names the IDL message type that carries it between processes (the topic's
-// type, docs/topics.md); its fields are matched to that type's members by name
-// (common/distributed/src/wire_types.cpp).
+// type, docs/topics.md); its fields are matched to that type's members by name (the signal
+// fields of the type, generated from its IDL: docs/messages.md).
+//
+// Ports are declared in one of two ways:
+// - typed (docs/sdk.md): `add_input<msg::PositionMeasurement>("position")` gives a port read as
+//   the generated message type (`pos_->x()`), `add_output<msg::Pose2D>("estimate")` one written
+//   as it (`out_->theta() = ...`); every member of the type is a field, checked at compile time;
+// - by field names: `add_input("position", {"x", "y"}, "PositionMeasurement")`, read by index.
+// Both are views of the same samples, so `plexus sim`, lockstep digests and metrics see no
+// difference.
 #pragma once
 
 #include <cstdint>
@@ -25,6 +33,8 @@
 #include <vector>
 
 #include "plexus/base/yaml_reader.hpp"
+#include "plexus/msg/signal_layout.hpp"
+#include "plexus/msg/type_support.hpp"
 #include "plexus/scenario/signal.hpp"
 
 namespace plexus::scenario {
@@ -81,6 +91,9 @@ class Port {
  public:
   Port(std::string port, std::string signal, std::vector<std::string> fields)
       : port_(std::move(port)), signal_(std::move(signal)), fields_(std::move(fields)) {}
+  virtual ~Port() = default;
+  Port(const Port&) = delete;
+  Port& operator=(const Port&) = delete;
 
   const std::string& port() const { return port_; }
   const std::string& signal() const { return signal_; }
@@ -107,6 +120,14 @@ class InputPort : public Port {
   double operator[](std::size_t i) const { return sample_.values[i]; }
   /// False until the producer has produced its first sample.
   bool valid() const { return sample_.step >= 0; }
+  /// True for a typed port (add_input<T>): it reads the whole message, so a field its producer
+  /// does not fill reads 0, as a member a producer does not use is 0 on the wire.
+  bool whole_message() const { return whole_message_; }
+  /// For the runner: the sample was filled for this step (a typed port decodes it). Must not allocate.
+  virtual void refreshed() {}
+
+ protected:
+  bool whole_message_ = false;
 
  private:
   std::string message_;
@@ -120,9 +141,55 @@ class OutputPort : public Port {
   double& operator[](std::size_t i) { return sample_.values[i]; }
   /// The IDL message type that carries it between processes; empty: in process only.
   const std::string& message() const { return message_; }
+  /// Sets every field to zero (the default safe output). Must not allocate.
+  virtual void clear() { sample_.values.fill(0.0); }
+  /// For the runner: the component has written this step's output (a typed port encodes it).
+  /// Must not allocate.
+  virtual void commit() {}
 
  private:
   std::string message_;
+};
+
+/// A port's field names for a message type: its SignalLayout's.
+template <class T>
+std::vector<std::string> layout_fields() {
+  const auto& f = msg::SignalLayout<T>::fields;
+  return {f.begin(), f.end()};
+}
+
+/// An input read as its IDL message type: `in->x()`, `(*in).position()[1]`.
+template <class T>
+class TypedInput final : public InputPort {
+ public:
+  TypedInput(std::string port, std::string signal)
+      : InputPort(std::move(port), std::move(signal), layout_fields<T>(), msg::type_support<T>().type_name) {
+    whole_message_ = true;
+  }
+  const T& operator*() const { return value_; }
+  const T* operator->() const { return &value_; }
+  void refreshed() override { msg::SignalLayout<T>::load(sample_.values.data(), value_); }
+
+ private:
+  T value_{};
+};
+
+/// An output written as its IDL message type: `out->theta() = ...` (the header is the runtime's).
+template <class T>
+class TypedOutput final : public OutputPort {
+ public:
+  TypedOutput(std::string port, std::string signal)
+      : OutputPort(std::move(port), std::move(signal), layout_fields<T>(), msg::type_support<T>().type_name) {}
+  T& operator*() { return value_; }
+  T* operator->() { return &value_; }
+  void clear() override {
+    value_ = T{};
+    OutputPort::clear();
+  }
+  void commit() override { msg::SignalLayout<T>::store(value_, sample_.values.data()); }
+
+ private:
+  T value_{};
 };
 
 class Component {
@@ -156,6 +223,24 @@ class Component {
   /// Declares an output port producing a signal with these fields, carried between
   /// processes as the IDL message type `message` ("Pose2D"; empty: in process only).
   OutputPort& add_output(const std::string& port, std::vector<std::string> fields, std::string message);
+  /// Declares an input read as the generated message type T (every member a field).
+  template <class T>
+  TypedInput<T>& add_input(const std::string& port) {
+    auto in = std::make_unique<TypedInput<T>>(port, signal_of(port));
+    TypedInput<T>& ref = *in;
+    inputs_.push_back(std::move(in));
+    return ref;
+  }
+  /// Declares an output written as the generated message type T.
+  template <class T>
+  TypedOutput<T>& add_output(const std::string& port) {
+    auto out = std::make_unique<TypedOutput<T>>(port, signal_of(port));
+    TypedOutput<T>& ref = *out;
+    outputs_.push_back(std::move(out));
+    return ref;
+  }
+  /// The signal `port` binds to (the scenario's remap, else `<robot>/<port>`).
+  std::string signal_of(const std::string& port) const;
 
  private:
   std::string name_;

@@ -102,6 +102,8 @@ struct Scenario {
   std::string file;
   /// Folder of relative file parameters: the file's, or a part's top-level `base_dir`.
   std::string base_dir;
+  /// The libraries of its `plugins:` key (absolute paths), loaded before its components were built.
+  std::vector<std::string> plugins;
   YAML::Node resolved;  ///< the tree after overrides, with derived seeds written in
   std::string name;
   std::string description;

@@ -16,9 +16,9 @@
 
 namespace plexus::scenario {
 
-/// Largest number of fields in one signal: an arm estimate of 16 joints has 8 per joint
-/// (plexus::msg::LinkJointState).
-inline constexpr std::size_t kMaxSignalFields = 128;
+/// Largest number of fields in one signal: an arm estimate of 16 joints has 8 per joint, and
+/// read whole (a typed port) its joint count too (plexus::msg::LinkJointState: 129).
+inline constexpr std::size_t kMaxSignalFields = 136;
 
 /// The value of a signal at one base step.
 struct SignalSample {

@@ -1,0 +1,43 @@
+#include "plexus/service/dds_options.hpp"
+
+#include <set>
+
+#include "plexus/runtime/security_cli.hpp"
+#include <sstream>
+
+namespace plexus::scenario {
+
+void ServiceDdsOptions::add_to(CLI::App& app) {
+  app.add_option("--dds", dds, "DDS vendor: fast or cyclone");
+  app.add_option("--domain", domain, "DDS domain id");
+  app.add_option("--qos-file", qos_file, "QoS profiles (default deploy/qos.yaml)");
+  app.add_option("--service", service, "Name in heartbeats and logs (default: the executable and what it hosts)");
+  app.add_option("--interface", interface_address, "Address of the one interface DDS uses (default 127.0.0.1)");
+  app.add_option("--peers", peers, "Comma-separated unicast discovery peers (default 127.0.0.1)");
+  app.add_option("--transport", transport,
+                 "auto (today UDP), udp, or shm (Fast DDS: shared memory with same-host Fast DDS peers, else UDP) (default auto)");
+  rt::add_security_options(app, security, identity, governance);
+}
+
+rt::ParticipantOptions ServiceDdsOptions::participant(const std::string& default_name,
+                                                      const std::string& default_identity) const {
+  rt::ParticipantOptions po;
+  po.vendor = rt::parse_vendor(dds);
+  po.domain_id = domain;
+  po.name = service.empty() ? default_name : service;
+  po.network.interface_address = interface_address;
+  po.network.transport = rt::parse_transport(transport);
+  std::set<std::string> unique;
+  std::stringstream ss(peers);
+  for (std::string item; std::getline(ss, item, ',');)
+    if (!item.empty()) unique.insert(item);
+  po.network.peers.assign(unique.begin(), unique.end());
+  po.security = rt::security_from_options(security, identity, governance, default_identity);
+  return po;
+}
+
+rt::QosProfiles ServiceDdsOptions::profiles() const {
+  return rt::QosProfiles::load(qos_file.empty() ? rt::default_qos_file() : qos_file);
+}
+
+}  // namespace plexus::scenario

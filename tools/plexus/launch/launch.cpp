@@ -1,0 +1,79 @@
+// plexus launch SCENARIO: the stages in order (stages.hpp), and how a run ends (LaunchRun).
+#include <algorithm>
+#include <csignal>
+#include <cstdio>
+
+#include "child_process.hpp"
+#include "run_result.hpp"
+#include "stages.hpp"
+#include "plexus/base/clock.hpp"
+#include "plexus/base/teardown_deadline.hpp"
+#include "plexus/evaluation/run_folder.hpp"
+
+namespace plexus::cli {
+
+std::atomic<bool> g_launch_stop{false};
+std::atomic<int> g_launch_signal{0};
+
+namespace {
+void on_signal(int s) {
+  g_launch_signal = s;
+  g_launch_stop = true;
+}
+}  // namespace
+
+void stop_on_signal(int signal) { std::signal(signal, on_signal); }
+
+int run_launch(LaunchOptions o) {
+  LaunchPlan plan = plan_launch(o);
+  LaunchRun run;
+  if (!preflight_launch(o, plan, run)) return 1;  // the launcher that started this share gave up
+  start_launch(o, plan, run);
+  if (!plan.runs_clock) return serve_launch(o, plan, run);
+  if (plan.realtime) {
+    RealtimeResult r;
+    if (const auto ended = run_realtime_launch(o, plan, run, r)) return *ended;
+    return summarise_realtime(o, plan, run, r);
+  }
+  LockstepOutcome r;
+  if (const auto ended = run_lockstep_launch(o, plan, run, r)) return *ended;
+  return summarise_lockstep(o, plan, run, r);
+}
+
+bool LaunchPlan::is_external(const Process& p) const {
+  return std::find(externals.begin(), externals.end(), p.name) != externals.end();
+}
+
+LaunchRun::~LaunchRun() {
+  if (supervising) stop_all();
+}
+
+void LaunchRun::stop_all() {
+  const int64_t t = monotonic_ns();
+  if (supervisor) supervisor->stop();
+  if (remotes) remotes->stop();
+  if (teardown_s < 0) teardown_s = static_cast<double>(monotonic_ns() - t) * 1e-9;
+  if (relay) relay->drain();  // the children's last lines before the launcher's verdict
+}
+
+int LaunchRun::failure(const std::string& what) {
+  stop_all();
+  const std::string lost = remotes ? remotes->failure() : std::string();  // a lost host is the cause
+  const std::string& died = supervisor->died();
+  const std::string why = !lost.empty() ? lost : died.empty() ? what : died;
+  scenario::mark_run_folder(run_dir, "failed: " + why);
+  std::fprintf(stderr, "plexus launch: %s\n", why.c_str());
+  return done(1);
+}
+
+int LaunchRun::interrupted() {
+  stop_all();
+  const double wall_s = static_cast<double>(monotonic_ns() - launched_ns) * 1e-9;
+  return done(interrupted_run("plexus launch", g_launch_signal, run_dir, wall_s));
+}
+
+bool LaunchRun::host_lost() const { return remotes && !remotes->failure().empty(); }
+
+int LaunchRun::done(int rc) { return exit_within(rc, kTeardownDeadlineS, "plexus launch"); }
+
+}  // namespace plexus::cli

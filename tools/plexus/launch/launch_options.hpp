@@ -1,0 +1,31 @@
+// The command line of `plexus launch` (cmd_launch.cpp registers it with CLI11).
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace plexus::cli {
+
+struct LaunchOptions {
+  std::string scenario;
+  std::vector<std::string> sets;
+  std::vector<std::string> vendors;    // PROCESS=VENDOR
+  std::vector<std::string> kills;      // PROCESS@SECONDS (fault injection, realtime)
+  std::vector<std::string> externals;  // processes provided from outside (replay, hardware bridge)
+  std::string dds, out, qos_file, host, record;
+  std::string transport;  // --transport: dds.transport of the scenario, overridden (travels as a --set)
+  int domain = -1;
+  double timeout = 10.0;
+  bool json = false, quiet = false, report = false;
+  // Hosts over ssh (remote_share.hpp): --ssh-config, --allow-clock-offset; --remote is the
+  // share a launcher started over ssh; --inject-clock-offset HOST=SECONDS fakes an offset (tests).
+  std::string ssh_config;
+  bool allow_clock_offset = false, remote = false;
+  std::vector<std::string> clock_injections;
+};
+
+/// `plexus launch`: plan, preflight, start, run, summarise (stages.hpp). Returns the exit
+/// code; bad input throws InputError (exit 2).
+int run_launch(LaunchOptions o);
+
+}  // namespace plexus::cli

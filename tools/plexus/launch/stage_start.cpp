@@ -1,0 +1,124 @@
+// Stage 3 of plexus launch: the launcher's own participant and run folder, then every
+// process of this host started with its part of the scenario, and watched (stages.hpp).
+#include <algorithm>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "preflight.hpp"
+#include "run_result.hpp"
+#include "stages.hpp"
+#include "plexus/base/clock.hpp"
+#include "plexus/base/input_error.hpp"
+#include "plexus/base/logging.hpp"
+#include "plexus/runtime/vendor.hpp"
+#include "plexus/evaluation/run_folder.hpp"
+
+namespace plexus::cli {
+namespace {
+
+/// --record: the lockstep clock's samples, to a file created now (file errors: exit 2).
+std::unique_ptr<SignalRecorder> open_recorder(const LaunchOptions& o, const LaunchPlan& plan) {
+  if (o.record.empty()) return nullptr;
+  if (plan.realtime)
+    throw InputError("--record: records what the lockstep clock receives; in realtime mode run `plexus record`");
+  if (!plan.runs_clock)
+    throw InputError("--record: only the host running the clock (" + plan.sc.hosts.front() + ") records");
+  return std::make_unique<SignalRecorder>(o.record, plan.lockstep_qos);
+}
+
+std::unique_ptr<rt::Participant> launcher_participant(const LaunchOptions& o, const LaunchPlan& plan) {
+  rt::ParticipantOptions po;
+  po.vendor = rt::parse_vendor(plan.vendor);
+  po.domain_id = plan.domain;
+  po.name = "plexus launch" + (o.host.empty() ? std::string() : " " + o.host);
+  po.network = plan.net;
+  po.security = plan.security.launcher;
+  return rt::Participant::create(po);
+}
+
+/// The run folder (on a host without the clock, <run>-<host>), the status line, the log
+/// relay (each child's lines to <run>/logs/<process>.log and, prefixed, to stderr), and the
+/// other hosts' shares and the launcher's keepalives, which may stop the run from now on.
+void open_run_folder(const LaunchOptions& o, const LaunchPlan& plan, LaunchRun& run) {
+  run.run_dir = scenario::prepare_run_folder(o.out, plan.sc.name, plan.runs_clock ? "" : "-" + o.host).string();
+  // Once per run: the services' own processes keep quiet.
+  if (plan.runs_clock) log_scenario_warnings(plan.sc, run.run_dir);
+  run.console.emplace(!o.quiet);
+  run.console_logging.emplace(*run.console);
+  run.relay.emplace(std::filesystem::path(run.run_dir) / "logs", *run.console);
+  const int processes = static_cast<int>(plan.procs.size());
+  if (run.remotes) {
+    run.remotes->start(*run.relay, processes, g_launch_stop);
+    run.console->set_hosts([&run] { return run.remotes->health(); });
+  }
+  if (plan.session) plan.session->watch(g_launch_stop, processes, [] { return running_children(); });
+}
+
+/// Writes `p`'s part of the scenario (launch_plan.hpp part_document) into `dir`; returns the file.
+std::string write_part(const std::filesystem::path& dir, const scenario::Scenario& sc, const Process& p) {
+  std::string file_name = p.name;
+  std::replace(file_name.begin(), file_name.end(), ' ', '_');
+  const std::string part_file = (dir / (file_name + ".yaml")).string();
+  YAML::Emitter yaml;
+  yaml << part_document(sc, p);
+  std::FILE* f = std::fopen(part_file.c_str(), "w");
+  const bool written = f && std::fputs(yaml.c_str(), f) >= 0;
+  if (!(f && std::fclose(f) == 0 && written))
+    throw InputError(part_file + ": cannot write this process's part of the scenario");
+  return part_file;
+}
+
+/// The command line of `p`: a service with its part, or `plexus replay` of a robot's topics.
+std::vector<std::string> process_args(const LaunchOptions& o, const LaunchPlan& plan, const Process& p,
+                                      const std::string& part_file) {
+  const scenario::Scenario& sc = plan.sc;
+  const std::string& address = plan.net.interface_address;
+  std::vector<std::string> args{"--part", part_file, "--service", p.service()};
+  args.insert(args.end(), {"--domain", std::to_string(plan.domain), "--qos-file", plan.qos_file, "--timeout",
+                           std::to_string(o.timeout), "--interface", address, "--peers", plan.peers, "--transport",
+                           sc.dds_transport});
+  args.insert(args.end(), {"--dds", p.vendor, "--mode", plan.realtime ? "realtime" : "lockstep"});
+  if (plan.realtime) args.push_back("--start-signal");
+  if (plan.realtime && p.priority > 0) args.insert(args.end(), {"--priority", std::to_string(p.priority)});
+  if (plan.realtime && p.cpu >= 0) args.insert(args.end(), {"--cpu", std::to_string(p.cpu)});
+  if (p.program == "replay") {  // plexus replay of the robot's topics, not a service
+    args = replay_args(sc, p);
+    args.insert(args.end(), {"--dds", p.vendor, "--domain", std::to_string(plan.domain), "--qos-file", plan.qos_file,
+                             "--interface", address, "--peers", plan.peers, "--transport", sc.dds_transport});
+  }
+  const auto security_args = plan.security.args(p.name);
+  args.insert(args.end(), security_args.begin(), security_args.end());
+  return args;
+}
+
+}  // namespace
+
+void start_launch(const LaunchOptions& o, LaunchPlan& plan, LaunchRun& run) {
+  run.recorder = open_recorder(o, plan);
+  init_logging("plexus launch", "", "warn");  // --quiet drops the status line, not the warnings
+  stop_on_signal(SIGINT);
+  stop_on_signal(SIGTERM);
+  run.participant = launcher_participant(o, plan);
+  auto kill_at = parse_kills(o.kills, plan.procs, plan.realtime);
+  open_run_folder(o, plan, run);
+  run.supervisor.emplace(plan.procs, *run.relay, run.fault, run.run_active, g_launch_stop, plan.realtime, std::move(kill_at));
+  // Each process gets its own part of the scenario and builds only that (launch_plan.hpp).
+  const std::filesystem::path parts_dir = std::filesystem::path(run.run_dir) / "parts";
+  std::error_code ec;
+  std::filesystem::create_directories(parts_dir, ec);
+  if (ec) throw InputError(parts_dir.string() + ": cannot create the folder: " + ec.message());
+  for (auto& p : plan.procs) {
+    p.args = process_args(o, plan, p, write_part(parts_dir, plan.sc, p));
+    run.supervisor->start(p);
+  }
+  // A child that dies ends the run, with its name and exit code (realtime: after a grace
+  // during which the others' reaction is recorded).
+  run.supervisor->watch();
+  run.supervising = true;
+  run.launched_ns = monotonic_ns();
+}
+
+}  // namespace plexus::cli
