@@ -13,7 +13,11 @@
 //   r_gyro_degps (0.5), initial_theta_std_deg (0.5), initial_rate_std_degps (1),
 //   initial_drift_std_degps (1), alpha (1), beta (2), kappa (0).
 //   It runs one cycle per new IMU sample with dt = the IMU's period, imu_rate (Hz, default
-//   its own rate; run it at the IMU's rate or faster). Its model is its own parameters, with
+//   its own rate; run it at the IMU's rate or faster). Sample times (realtime;
+//   docs/distributed.md, "Late samples"): the realtime host runs each step once its IMU
+//   sample has arrived; a sample that never came in time (a newer one arrived first) is
+//   bridged by a prediction over its period with the held torque before the newer sample's
+//   cycle, so the filter's time stays the samples' (gaps counts the periods bridged). Its model is its own parameters, with
 //   the plant's and the sensor's key names and defaults: body_mass, com_height,
 //   body_inertia, wheel_mass, wheel_radius, wheel_inertia, gravity, max_torque, and the
 //   IMU's gamma1, gamma2_degps2, gyro_range_degps, accel_height.
@@ -50,11 +54,20 @@ class AttitudeFilterComponent final : public Component {
         imu_(add_input("imu", {"acc_x", "acc_z", "gyro"}, "Imu")),
         cmd_(add_input("cmd", {"torque"}, "WheelTorqueCommand")),
         out_(add_output("attitude", {"theta", "theta_dot", "drift", "theta_std"}, "AttitudeEstimate")),
-        filter_(params(c)) {}
+        filter_(params(c)), base_step_(c.base_step), imu_dt_(imu_period(c)) {}
+
+  uint64_t dropped_late_samples() const override { return gaps_; }
 
   void step(int64_t /*k*/, double /*t*/) override {
     // Runs at its own rate; the torque is the command held since the previous step (k-1).
     if (imu_.valid() && imu_.sample().step != last_imu_step_) {
+      // IMU periods between the previous sample and this one that brought no sample (0 in
+      // `plexus sim` and lockstep): predicted over, then this sample's cycle.
+      if (last_imu_step_ >= 0) {
+        const auto missed = std::llround(static_cast<double>(imu_.sample().step - last_imu_step_) * base_step_ / imu_dt_) - 1;
+        for (long long i = 0; i < missed; ++i) filter_.predict(cmd_.valid() ? cmd_[0] : 0.0);
+        if (missed > 0) gaps_ += static_cast<uint64_t>(missed);
+      }
       last_imu_step_ = imu_.sample().step;
       // The accelerometer's tilt, atan2(-f_x, f_z), as ImuSensor defines it (paper 002 section 4.1).
       filter_.step(cmd_.valid() ? cmd_[0] : 0.0, std::atan2(-imu_[0], imu_[1]), imu_[2]);
@@ -111,6 +124,9 @@ class AttitudeFilterComponent final : public Component {
   OutputPort& out_;
   alg::AttitudeFilter filter_;
   int64_t last_imu_step_ = -1;
+  double base_step_;
+  double imu_dt_;
+  uint64_t gaps_ = 0;  ///< IMU periods with no sample, bridged by a prediction
 };
 
 const ComponentRegistration kFilter{

@@ -25,6 +25,15 @@
 //
 // It starts (pose from the GPS) at its first GPS sample; from then on it predicts with the
 // track speeds at every step and updates at every new GPS sample.
+//
+// Sample times (realtime; docs/distributed.md, "Late samples"): each step predicts over its
+// own period with the latest track speeds, held over the period (the sim's zero-order hold).
+// A GPS pose is a measurement of the pose at its own step: the realtime host runs each
+// step of the EKF once the samples it reads have arrived, so a GPS sample meets the
+// prediction of its own step. One that arrives later than that (first read at a step one
+// EKF period or more after its own) would update the pose of a later time with an older
+// position, a bias of speed x delay that the ICRs absorb; it is dropped and counted
+// (dropped_late_samples). In `plexus sim` and lockstep every GPS sample is read at its step.
 #include <cmath>
 #include <memory>
 #include <stdexcept>
@@ -105,13 +114,19 @@ class IcrEkfComponent final : public Component {
     write();
   }
 
+  uint64_t dropped_late_samples() const override { return late_gps_; }
+
   void step(int64_t /*k*/, double /*t*/) override {
     if (started_ && wheels_.valid()) {
       ekf_.predict({wheels_[0], wheels_[1]}, dt_);
       if (checking_ > 0) shadow_.predict({wheels_[0], wheels_[1]}, dt_);
     }
+    const int64_t due_before = gps_due_;
+    gps_due_ = gps_.due();
     if (new_gps_(gps_)) {
-      if (!started_) {
+      if (gps_.sample().step <= due_before) {
+        ++late_gps_;  // it was due at the previous step already: one EKF period late or more, dropped (above)
+      } else if (!started_) {
         ekf_.reset(pose_of(gps_));
         started_ = true;
       } else {
@@ -180,6 +195,8 @@ class IcrEkfComponent final : public Component {
   long resets_ = 0;
   double last_window_ = 0.0;
   NewSample new_gps_;
+  int64_t gps_due_ = -1;   ///< the GPS step due at the previous step
+  uint64_t late_gps_ = 0;  ///< GPS samples dropped for arriving after their step
   InputPort& wheels_;
   InputPort& gps_;
   InputPort* classes_;

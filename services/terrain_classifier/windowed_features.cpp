@@ -11,7 +11,15 @@ WindowedFeatures::WindowedFeatures(const ComponentConfig& c)
     : extractor(feature_params(c)), window(samples(c, "window_s", 1.0), hop(c)), features(extractor.size()) {}
 
 bool WindowedFeatures::push(const InputPort& in) {
+  const int64_t due_before = due_;
+  due_ = in.due();
   if (!fresh(in)) return false;
+  const int64_t step = in.sample().step;
+  if (pushed_ >= 0 && pushed_ < due_before && step > due_before) {
+    window.clear();  // the sample due at the previous step never came: a gap (above)
+    ++gaps;
+  }
+  pushed_ = step;
   if (!window.push(in[0])) return false;
   extractor.compute(window.window(), features);
   return true;

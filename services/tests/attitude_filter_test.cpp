@@ -108,6 +108,30 @@ TEST(AttitudeFilter, UkfCyclesMatchTheAlgorithm) {
   EXPECT_EQ(s.check_output("r3/attitude"), Rejection::none);
 }
 
+TEST(AttitudeFilter, AMissingSampleIsPredictedOver) {
+  // Realtime: the IMU sample of step 5 never came (step 5 reads the old one, step 6 the
+  // new). The filter predicts over step 5's period with the held torque, then runs step 6's
+  // cycle: its time stays the samples'. Counted as one bridged sample.
+  ServiceUnderTest s(kFilter);
+  alg::AttitudeFilter ref(service_defaults());
+  for (int64_t k = 0; k < 10; ++k) {
+    if (k == 5) {
+      ASSERT_EQ(s.deliver("r3/cmd", torque(s, k, torque_at(k))), Rejection::none);
+    } else {
+      feed_filter(s, k);
+    }
+    s.step(k);
+    if (k == 5) continue;
+    if (k == 6) ASSERT_TRUE(ref.predict(torque_at(k)));
+    ref.step(torque_at(k), std::atan2(9.81 * std::sin(tilt_at(k)), 9.81 * std::cos(tilt_at(k))), gyro_at(k));
+    const auto m = s.published<msg::AttitudeEstimate>("r3/attitude");
+    ASSERT_NEAR(m.tilt(), ref.state()(0), 1e-13) << k;
+    ASSERT_NEAR(m.tilt_rate(), ref.state()(1), 1e-13) << k;
+    ASSERT_NEAR(m.stddev()[0], std::sqrt(ref.covariance()(0, 0)), 1e-15) << k;
+  }
+  EXPECT_EQ(s.scenario().components[0].component->dropped_late_samples(), 1u);
+}
+
 TEST(AttitudeFilter, BadSamplesAreRefusedAndLeaveTheEstimateAlone) {
   expect_refused_without_effect(
       kFilter, {}, {"r3/attitude"}, 8, 4, feed_filter,

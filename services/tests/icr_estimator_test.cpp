@@ -95,6 +95,30 @@ TEST(IcrEkf, PredictsAndUpdatesLikeTheAlgorithm) {
   EXPECT_LT(s.out("r2/icr", "sd_y_l"), 0.5);  // the GPS updates tightened the ICRs
 }
 
+TEST(IcrEkf, AGpsSampleReadAfterItsStepIsDropped) {
+  // Realtime: the GPS sample of step 10 arrives after step 10 ran (step 10 read the one of
+  // step 5). Read at step 11, it would update the pose of step 11 with the position of
+  // step 10: dropped and counted. Everything else as the algorithm does it.
+  ServiceUnderTest s(kEkf);
+  alg::IcrEkf ref{alg::IcrEkfParams{}};
+  for (int64_t k = 0; k < 16; ++k) {
+    const double t = 0.01 * static_cast<double>(k);
+    if (k == 10) {
+      ASSERT_EQ(s.deliver("r2/wheels", wheels(s, k, 0.3, 0.5 + 0.2 * std::sin(t))), Rejection::none);
+      s.step(k);
+      ASSERT_EQ(s.deliver("r2/gps", gps(s, k, 0.4 * t, 0.1 * t * t, 0.2 * t)), Rejection::none);  // too late
+    } else {
+      feed_ekf(s, k);
+      s.step(k);
+    }
+    if (k > 0) ref.predict({0.3, 0.5 + 0.2 * std::sin(t)}, 0.01);
+    if (k == 0) ref.reset({0, 0, 0});
+    else if (k % 5 == 0 && k != 10) ref.update({0.4 * t, 0.1 * t * t, 0.2 * t});
+    for (int i = 0; i < 6; ++i) ASSERT_NEAR(s.sample("r2/icr").values[static_cast<std::size_t>(i)], ref.state()(i), 1e-12) << k;
+  }
+  EXPECT_EQ(s.scenario().components[0].component->dropped_late_samples(), 1u);
+}
+
 TEST(IcrEkf, AdaptiveResetOnAConfirmedTerrainChange) {
   // Paper 001 eq. (22): two consecutive windows on a new class reset P to P_B (sd 0.5 m).
   ServiceUnderTest s(kEkf, {}, {"services.ekf.adaptive_reset=true"});

@@ -125,6 +125,23 @@ TEST(TerrainClassifier, ClassOfAKnownWindow) {
   EXPECT_EQ(m.confidence(), second.confidence);
 }
 
+TEST(TerrainClassifier, AMissingSampleRestartsTheWindow) {
+  // Realtime: the IMU sample of step 50 never came (step 50 reads the one of 49, step 51
+  // the one of 51). A window across the gap would not be evenly sampled: the partial one is
+  // dropped and the first window is samples 51..150, decided at step 150, not 99.
+  const TempDir dir;
+  ServiceUnderTest s(classifier_doc(write_training(dir)));
+  for (int64_t k = 0; k <= 150; ++k) {
+    if (k != 50) ASSERT_EQ(s.deliver("r2/imu", imu(s, k, vibration(20.0, k))), Rejection::none);
+    s.step(k);
+    if (k == 149) EXPECT_EQ(s.published<msg::TerrainClass>("r2/terrain").terrain_id(), -1) << "no decision yet";
+  }
+  const auto m = s.published<msg::TerrainClass>("r2/terrain");
+  EXPECT_EQ(m.terrain_id(), 1);
+  EXPECT_EQ(m.windows(), 1u);
+  EXPECT_EQ(s.scenario().components[0].component->dropped_late_samples(), 1u);
+}
+
 TEST(TerrainClassifier, BadSamplesAreRefusedAndLeaveTheWindowAlone) {
   const TempDir dir;
   const std::string doc = classifier_doc(write_training(dir));

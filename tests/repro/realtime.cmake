@@ -67,3 +67,20 @@ foreach(variant "fast;146;1000000;55;30;fast;" "cyclone;147;115200;80;55;fast;5"
   set_tests_properties(repro.realtime.serial_bridge_rfid_${vendor} PROPERTIES
                        LABELS "repro;realtime;multiprocess;slow;bridges" TIMEOUT 300 RUN_SERIAL TRUE)
 endforeach()
+
+# Issue 35: the main job in realtime, as the README runs it (every service its own process),
+# shortened to 45 s with the skid-steer robot's first terrain switch (40 s): its estimators
+# use each sample at its own step, so paper 001's figures hold as in lockstep (re-convergence
+# <= 3 s, classifier accuracy >= 0.95); every loop runs the whole run; overruns at most 5 %
+# of each loop's ticks (issue 35's 0.1 % printed, enforced with STRICT_TIMING=1). The arm's
+# figures are printed only (its 1 kHz loop across three processes: docs/distributed.md).
+# RUN_SERIAL: 13 processes, the whole machine.
+foreach(variant "fast;172" "cyclone;173")
+  list(POP_FRONT variant vendor domain)
+  add_test(NAME repro.realtime.main_job_45s_${vendor}
+           COMMAND ${CMAKE_CURRENT_LIST_DIR}/scripts/realtime_main_job.sh $<TARGET_FILE:plexus>
+                   ${PROJECT_SOURCE_DIR}/deploy/scenarios/four_robots.yaml
+                   ${CMAKE_BINARY_DIR}/test-runs/realtime/main_job_45s_${vendor} ${domain} ${vendor} 45)
+  set_tests_properties(repro.realtime.main_job_45s_${vendor} PROPERTIES
+                       LABELS "repro;realtime;multiprocess;slow" TIMEOUT 300 RUN_SERIAL TRUE)
+endforeach()

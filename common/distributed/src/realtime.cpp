@@ -7,6 +7,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstring>
+#include <numeric>
 
 #include "plexus/base/clock.hpp"
 #include "plexus/base/input_error.hpp"
@@ -20,22 +21,59 @@ namespace {
 
 using scenario::SignalSample;
 
-/// Most steps a host runs back to back after an overrun (more are skipped: a host that far
+/// Most ticks a host runs back to back after an overrun (more are skipped: a host that far
 /// behind would only fall further behind by catching up).
-constexpr int64_t kMaxCatchUpSteps = 10;
+constexpr int64_t kMaxCatchUpTicks = 10;
 
-/// Latest sample of a signal produced in another process.
-struct RemoteLatest {
-  RemoteLatest(const scenario::SignalSpec& spec, rt::Participant& p, const rt::QosProfile& qos, int64_t step_ns)
-      : sub(p, spec, step_ns, qos) {}
+/// Most steps a deferred estimator runs behind the grid: one of its own periods. A sample
+/// later than that is read late (the newest older one) and the algorithm's own rule for a
+/// late sample applies (docs/distributed.md, "Late samples").
+constexpr int64_t kEstimatorWaitPeriods = 1;
+
+/// History depth of a realtime input's reader (at least): samples received between two reads.
+constexpr int32_t kReaderDepth = 8;
+
+/// The recent samples of a signal produced in another process, in step order: a read gets
+/// the sample of the step it asks for when it has arrived, not merely the newest one, so a
+/// sample that arrived after its tick is still read at its own step by a deferred estimator
+/// or a catch-up step.
+struct RemoteSamples {
+  static constexpr std::size_t kKept = 32;  ///< samples kept per signal (32 periods of its producer)
+  struct Entry {
+    SignalSample sample;
+    int64_t origin_ns = 0;  // header origin time (wall clock)
+  };
+  RemoteSamples(const scenario::SignalSpec& spec, rt::Participant& p, const rt::QosProfile& qos, int64_t step_ns)
+      : sub(p, spec, step_ns, qos), ring(kKept) {}
   WireSubscriber sub;
-  SignalSample sample;       // step -1 until the first one arrives
+  std::vector<Entry> ring;   // ring[(first + i) % kKept], i < count: oldest first
+  std::size_t first = 0, count = 0;
   SignalSample scratch;
-  int64_t received_ns = 0;   // monotonic
-  int64_t origin_ns = 0;     // header origin time (wall clock)
+  int64_t received_ns = 0;   // monotonic, of the newest sample
   int64_t deadline_ns = 0;   // stale after this age
-};
 
+  /// Step of the newest sample, -1 before the first.
+  int64_t newest_step() const { return count == 0 ? -1 : ring[(first + count - 1) % kKept].sample.step; }
+  /// The newest sample at or before step `due`; the oldest kept if every one is newer; nullptr if none.
+  const Entry* at_or_before(int64_t due) const {
+    for (std::size_t i = count; i-- > 0;) {
+      const Entry& e = ring[(first + i) % kKept];
+      if (e.sample.step <= due) return &e;
+    }
+    return count == 0 ? nullptr : &ring[first];
+  }
+  /// Appends the decoded sample in `scratch` (a newer step than every kept one), dropping the oldest.
+  void push(int64_t origin_ns) {
+    if (count == kKept) {
+      first = (first + 1) % kKept;
+      --count;
+    }
+    Entry& e = ring[(first + count) % kKept];
+    e.sample = scratch;
+    e.origin_ns = origin_ns;
+    ++count;
+  }
+};
 
 /// True if a signal comes from a plant or a sensor (a measurement): its producer's kind in
 /// this document, else the stage its `inputs:` entry gives (unstaged: read as a measurement).
@@ -105,7 +143,7 @@ struct RealtimeHost::Impl {
   scenario::StepExecutor exec;
   RealtimeOptions opt;
   detail::InputGuard guard{opt.service};
-  std::vector<std::unique_ptr<RemoteLatest>> remote;  // by signal
+  std::vector<std::unique_ptr<RemoteSamples>> remote;  // by signal
   std::vector<std::unique_ptr<WirePublisher>> out;     // by signal
   std::vector<int64_t> local_origin;                  // by signal: origin of the latest local sample
   std::vector<std::vector<std::size_t>> local_inputs;  // by component: the signals it reads from this process
@@ -121,6 +159,9 @@ struct RealtimeHost::Impl {
   std::vector<bool> blind;                             // by signal: its producer here is blind
   std::vector<int64_t> last_measured_ns;               // by component: last tick with a fresh measurement (0: never)
   int64_t blind_after_ns = 0;
+  int64_t stride = 1;                                  // the loop period in base steps (gcd of the hosted periods)
+  std::vector<bool> deferred;                          // by component: an estimator that waits for its remote samples
+  std::vector<int64_t> next_step;                      // by component (deferred): its next step to run
   rt::Subscriber<msg::ClockStep> start;
   rt::Publisher<msg::Heartbeat> heartbeat;
   msg::Heartbeat hb;
@@ -164,8 +205,23 @@ struct RealtimeHost::Impl {
         for (std::size_t in : exec.inputs_of(c))
           if (std::find(remote_ins.begin(), remote_ins.end(), in) != remote_ins.end() && physical_producer(sc, signals[in]))
             measurements[c].push_back(in);
+    stride = 0;
+    deferred.assign(sc.components.size(), false);
+    next_step.assign(sc.components.size(), 0);
+    for (std::size_t c = 0; c < sc.components.size(); ++c) {
+      if (!exec.hosted(c)) continue;
+      stride = std::gcd(stride, sc.components[c].period_steps);
+      if (sc.components[c].kind != scenario::ComponentKind::estimator) continue;
+      for (std::size_t in : exec.inputs_of(c))
+        if (std::find(remote_ins.begin(), remote_ins.end(), in) != remote_ins.end()) deferred[c] = true;
+    }
+    if (stride < 1) stride = 1;
     for (std::size_t i : exec.remote_inputs()) {
-      auto r = std::make_unique<RemoteLatest>(signals[i], p, input_qos(sc, signals[i], profiles), step_ns(sc));
+      // The reader keeps the last few samples, not only the newest: a producer that catches up
+      // after an overrun publishes several steps at once, and each is read at its own step.
+      rt::QosProfile qos = input_qos(sc, signals[i], profiles);
+      if (qos.history == rt::QosProfile::History::keep_last) qos.depth = std::max(qos.depth, kReaderDepth);
+      auto r = std::make_unique<RemoteSamples>(signals[i], p, qos, step_ns(sc));
       r->deadline_ns = static_cast<int64_t>(sc.input_deadline_periods * static_cast<double>(signals[i].period_steps) *
                                             sc.step * 1e9);
       remote[i] = std::move(r);
@@ -185,14 +241,19 @@ struct RealtimeHost::Impl {
   }
 
   void drain(std::size_t signal) {
-    RemoteLatest& r = *remote[signal];
+    RemoteSamples& r = *remote[signal];
     while (const void* m = r.sub.take()) {
       if (!guard.accept(r.sub.wire(), m, r.scratch)) continue;  // refused: counted and logged
-      if (r.scratch.step < r.sample.step) continue;       // older than what we have
-      r.sample = r.scratch;
+      if (r.scratch.step <= r.newest_step()) continue;       // not newer than what we have
+      r.push(r.sub.header().origin_time_ns());
       r.received_ns = monotonic_ns();
-      r.origin_ns = r.sub.header().origin_time_ns();
     }
+  }
+
+  /// Has the sample of `signal` due at step `due` arrived (or a newer one, when it never will)?
+  bool arrived(std::size_t signal, int64_t due) {
+    drain(signal);
+    return remote[signal]->newest_step() >= due;
   }
 
   void publish_heartbeat(msg::ServiceState state, const rt::LoopStats& ls) {
@@ -250,15 +311,19 @@ RealtimeReport RealtimeHost::run(const std::atomic<bool>& stop) {
     m.start.wait(50'000'000);
   }
 
-  // The start signal carries the run's start T0 (wall clock). Tick k is due at
-  // T0 + (k + phase) periods: the first one still ahead is this host's first, so a host
-  // restarted mid-run joins at the current tick instead of replaying the run from 0.
-  const int64_t step_ns = std::llround(m.sc.step * 1e9);  // the loop period, as PeriodicLoop rounds it
+  // The start signal carries the run's start T0 (wall clock). Step k is due at
+  // T0 + (k + phase) base periods. The loop ticks at the host's own period, `stride` base
+  // steps (the greatest common divisor of its components' periods: a host of 100 Hz services
+  // on a 1 kHz grid wakes 100 times a second, not 1000), on the steps that are multiples of
+  // it. The first such step still ahead is this host's first, so a host restarted mid-run
+  // joins at the current tick instead of replaying the run from 0.
+  const int64_t step_ns = std::llround(m.sc.step * 1e9);  // the base period, as PeriodicLoop rounds it
+  const int64_t stride = m.stride;
   const auto offset_ns = static_cast<int64_t>(m.phase * static_cast<double>(step_ns));
   const int64_t wall_now = wall_time_ns(), mono_now = monotonic_ns();
   const int64_t t0 = go.sim_time_ns() > 0 ? go.sim_time_ns() : wall_now;
-  const int64_t late_ns = wall_now - t0 - offset_ns;  // past this host's tick 0 by
-  const int64_t k0 = late_ns < 0 ? 0 : late_ns / step_ns + 1;
+  const int64_t late_ns = wall_now - t0 - offset_ns;  // past this host's step 0 by
+  const int64_t k0 = late_ns < 0 ? 0 : (late_ns / step_ns / stride + 1) * stride;
   const int64_t first_deadline = mono_now + (t0 + k0 * step_ns + offset_ns - wall_now);
   // Data times are wall-clock times on the run's grid (wire.hpp): step k is at t0 + k periods.
   for (auto& w : m.out)
@@ -266,21 +331,26 @@ RealtimeReport RealtimeHost::run(const std::atomic<bool>& stop) {
   for (auto& r : m.remote)
     if (r) r->sub.wire().set_epoch(t0);
   rt::LoopOptions lo = m.opt.loop;
-  lo.rate_hz = 1.0 / m.sc.step;
+  lo.rate_hz = 1.0 / (m.sc.step * static_cast<double>(stride));
   rt::PeriodicLoop loop(lo);
   const scenario::StepExecutor::RemoteInput read = [&m](std::size_t signal, int64_t due, SignalSample& s) {
     m.drain(signal);
-    const RemoteLatest& r = *m.remote[signal];
-    if (r.sample.step < due) ++m.report.late_inputs;  // the sample of this step has not arrived
-    s = r.sample;
-    const bool stale = r.sample.step < 0 || monotonic_ns() - r.received_ns > r.deadline_ns;
+    const RemoteSamples& r = *m.remote[signal];
+    const RemoteSamples::Entry* e = r.at_or_before(due);
+    if (e == nullptr) {
+      s = SignalSample{};  // never received
+    } else {
+      s = e->sample;
+      if (s.step < due) ++m.report.late_inputs;  // the sample of this step has not arrived
+      m.origin = std::max(m.origin, e->origin_ns);
+    }
+    const bool stale = e == nullptr || monotonic_ns() - r.received_ns > r.deadline_ns;
     m.fresh[signal] = !stale;
     if (stale) {
       m.stale = true;
       ++m.report.stale_inputs;
       if (m.stop_when_stale[signal]) std::fill(s.values.begin(), s.values.end(), 0.0);
     }
-    m.origin = std::max(m.origin, r.origin_ns);
   };
   const scenario::StepExecutor::Gate gate = [&m](std::size_t component) {
     const auto kind = m.sc.components[component].kind;
@@ -319,19 +389,48 @@ RealtimeReport RealtimeHost::run(const std::atomic<bool>& stop) {
   };
   const int64_t ticks = m.sc.steps + 1;
   if (k0 >= ticks) return m.report;  // joined after the end of the run
+  // Runs step j of every hosted component. An estimator that reads samples from another
+  // process runs its step once they have arrived (each at the step it belongs to, as in
+  // `plexus sim`), at most kEstimatorWaitPeriods of its periods behind the grid; then with
+  // what has arrived (late reads, counted). Its output is that step's, published later.
+  const auto run_step = [&](int64_t j) {
+    for (std::size_t c = 0; c < m.sc.components.size(); ++c) {
+      if (!m.exec.hosted(c)) continue;
+      if (!m.deferred[c]) {
+        m.exec.step_component(c, j, read, publish, gate);
+        continue;
+      }
+      const int64_t period = m.sc.components[c].period_steps;
+      int64_t& next = m.next_step[c];
+      // Steps lost to an overrun beyond the catch-up are skipped, as for every component.
+      const int64_t oldest = j - kMaxCatchUpTicks * stride - kEstimatorWaitPeriods * period;
+      if (next < oldest) next = (oldest + period - 1) / period * period;
+      while (next <= j) {
+        const bool ready = m.exec.remote_inputs_ready(c, next, [&m](std::size_t sig, int64_t due) { return m.arrived(sig, due); });
+        if (!ready && j < ticks - 1 && j - next < kEstimatorWaitPeriods * period) break;  // wait for its samples
+        if (next < j) ++m.report.deferred_steps;
+        m.exec.step_component(c, next, read, publish, gate);
+        next += period;
+      }
+    }
+  };
+  for (std::size_t c = 0; c < m.sc.components.size(); ++c) {
+    const int64_t period = m.sc.components[c].period_steps;
+    m.next_step[c] = (k0 + period - 1) / period * period;
+  }
   const int64_t hb_every = std::max<int64_t>(1, static_cast<int64_t>(1.0 / m.sc.step));
   int64_t next_beat = k0;
-  int64_t last_k = k0 - 1;
+  int64_t last_k = k0 - stride;
   loop.run([&](const rt::PeriodicLoop::Tick& t) {
     // The step is the grid's, from the deadline: after an overrun the loop skips the periods
     // it missed, and so does the step, so every host keeps the same step at the same time.
-    // The steps skipped (up to kMaxCatchUpSteps) still run first, back to back: a plant
+    // The steps skipped (up to kMaxCatchUpTicks ticks) still run first, back to back: a plant
     // integrates them with the command it holds and an estimator predicts over them, so
     // neither falls behind the grid's time by the periods it lost.
-    const int64_t k = std::min(ticks - 1, k0 + (t.deadline_ns - first_deadline) / loop.period_ns());
-    for (int64_t j = std::max(last_k + 1, k - kMaxCatchUpSteps); j < k; ++j) m.exec.step(j, read, publish, gate);
+    const int64_t k = std::min(ticks - 1, k0 + (t.deadline_ns - first_deadline) / loop.period_ns() * stride);
+    for (int64_t j = std::max(last_k + stride, k - kMaxCatchUpTicks * stride); j < k; j += stride) run_step(j);
     last_k = k;
-    m.exec.step(k, read, publish, gate);
+    run_step(k);
     if (k >= next_beat) {
       m.publish_heartbeat(m.report.holds ? msg::SERVICE_DEGRADED : msg::SERVICE_RUNNING, loop.stats());
       next_beat = k + hb_every;
@@ -340,6 +439,8 @@ RealtimeReport RealtimeHost::run(const std::atomic<bool>& stop) {
     return k + 1 < ticks && !stop.load(std::memory_order_relaxed);
   }, first_deadline);
   m.report.loop = loop.stats();
+  for (std::size_t c = 0; c < m.sc.components.size(); ++c)
+    if (m.exec.hosted(c)) m.report.dropped_late_samples += m.sc.components[c].component->dropped_late_samples();
   m.report.rejected_inputs = m.guard.rejected();
   m.publish_heartbeat(msg::SERVICE_DRAINING, m.report.loop);
   // The last beat carries the final loop figures, and the launcher waits for it: delivered

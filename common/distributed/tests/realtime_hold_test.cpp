@@ -8,13 +8,16 @@
 //    recovers once the input is fresh again; every hold is counted in the report;
 //  - a plant whose command is stale gets the zero command (and does not hold);
 //  - an estimator with no fresh measurement is blind: it publishes nothing, and a controller
-//    reading it in the same process holds (so a dead plant stops every loop).
+//    reading it in the same process holds (so a dead plant stops every loop);
+//  - an estimator whose samples arrive after its tick computes each step from the sample of
+//    that step (it runs once the sample has arrived), not from the one before.
 //
 // The deadline is 10 periods of 10 ms, far above a loaded machine's scheduling hiccups;
 // every wait is on a condition with a generous bound, never on a duration.
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <cmath>
 #include <string>
 #include <thread>
 
@@ -250,6 +253,74 @@ TEST_P(RealtimeHold, ControllerHoldsBehindABlindEstimatorInItsProcess) {
   EXPECT_EQ(run.error(), "no error");
   EXPECT_GT(run.report().blind_steps, 0u);
   EXPECT_GT(run.report().holds, 0u);
+}
+
+/// A producer whose samples arrive `delay` after their own time: every 1 ms it publishes a
+/// sample stamped `delay` ago, carrying that data time (ns modulo 1000 s, in seconds) in x.
+class DelayedFeeder {
+ public:
+  DelayedFeeder(rt::Participant& p, const scenario::SignalSpec& spec, int64_t step_ns, int64_t delay_ns)
+      : pub_(p, spec, step_ns, profiles().get("state")), delay_ns_(delay_ns), thread_([this] { loop(); }) {}
+  ~DelayedFeeder() {
+    quit_ = true;
+    thread_.join();
+  }
+
+ private:
+  void loop() {
+    scenario::SignalSample s;
+    while (!quit_) {
+      const int64_t taken = wall_time_ns() - delay_ns_;
+      s.values[0] = static_cast<double>(taken % kWrapNs) * 1e-9;
+      pub_.publish_at(s, taken, 0);
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+  }
+  static constexpr int64_t kWrapNs = 1'000'000'000'000;
+  WirePublisher pub_;
+  int64_t delay_ns_;
+  std::atomic<bool> quit_{false};
+  std::thread thread_;  // last
+};
+
+TEST_P(RealtimeHold, EstimatorUsesALateSampleAtItsOwnStep) {
+  // Every sample arrives 8.5 ms (0.85 periods) after its time, so at the estimator's tick
+  // (a quarter period after its step's time) the sample of that step has not arrived: a read
+  // of the newest sample would give the one of the step before, at every step. The host runs
+  // the estimator's step once its sample has arrived (the next tick), so the estimate of each
+  // step is computed from the sample of that step: its x (the sample's data time) lies within
+  // one period of the estimate's own data time (the first sample that rounds to the step, half
+  // a period before it), where the sample of the step before lies 1.5 periods away.
+  const std::string robot = unique_robot("rt_late", vendor());
+  auto sc_host = estimator_chain_scenario(robot, kRealtime);
+  auto sc_peer = estimator_chain_scenario(robot, kRealtime);
+  auto p_host = make("host estimator");
+  auto p_peer = make("late plant");
+  RealtimeOptions opt;
+  opt.service = "rt_late_" + std::string(rt::to_string(vendor()));
+  RealtimeHost host(sc_host, hosting(sc_host, "estimator"), *p_host, profiles(), opt);
+  WireSubscriber estimate(*p_peer, sc_peer.signals[1], step_ns(sc_peer), profiles().get("state"));
+  DelayedFeeder state(*p_peer, sc_peer.signals[0], step_ns(sc_peer), 8'500'000);
+  HostThread run(host);
+
+  int own = 0, other = 0;
+  const int64_t period = step_ns(sc_peer);
+  EXPECT_TRUE(eventually([&] {
+    while (const void* m = estimate.take()) {
+      scenario::SignalSample s;
+      std::size_t bad = 0;
+      if (estimate.wire().decode(m, s, bad) != Rejection::none || s.values[0] == 0.0) continue;
+      const int64_t at = estimate.header().data_time_ns() % 1'000'000'000'000;
+      const int64_t used = std::llround(s.values[0] * 1e9);
+      ++(std::abs(at - used) < period ? own : other);  // own step's sample: 4-5 ms apart; the one before: 14-15 ms
+    }
+    return own + other >= 200;
+  })) << own << " estimates from their own step's sample, " << other << " from another";
+  run.join();
+  EXPECT_EQ(run.error(), "no error");
+  // A loaded machine may delay a sample past the next tick too (then read late): most are not.
+  EXPECT_GE(own, 4 * other) << own << " estimates from their own step's sample, " << other << " from another";
+  EXPECT_GT(run.report().deferred_steps, 0u);
 }
 
 INSTANTIATE_TEST_SUITE_P(Dds, RealtimeHold, ::testing::Values(rt::Vendor::fast, rt::Vendor::cyclone), vendor_name);

@@ -72,46 +72,66 @@ std::vector<std::size_t> StepExecutor::inputs_of(std::size_t component) const {
 }
 
 void StepExecutor::step(int64_t k, const RemoteInput& remote, const OutputSink& sink, const Gate& gate) {
+  const std::size_t n = scenario_.components.size();
+  for (std::size_t ci = 0; ci < n; ++ci)
+    if (hosted_[ci]) run_component(ci, k, remote, sink, gate);
+}
+
+void StepExecutor::step_component(std::size_t component, int64_t k, const RemoteInput& remote, const OutputSink& sink,
+                                  const Gate& gate) {
+  if (hosted_.at(component)) run_component(component, k, remote, sink, gate);
+}
+
+std::size_t StepExecutor::remote_input_count(std::size_t component) const {
+  return impl_->wiring.inputs.at(component).size();
+}
+
+int64_t StepExecutor::remote_input_due(std::size_t component, std::size_t n, int64_t k, std::size_t& signal) const {
+  const auto& in = impl_->wiring.inputs[component][n];
+  signal = in.signal;
+  if (impl_->produced_here[in.signal]) return -1;
+  return due_step(k, impl_->wiring.signals[in.signal].period_steps, in.delayed);
+}
+
+void StepExecutor::run_component(std::size_t ci, int64_t k, const RemoteInput& remote, const OutputSink& sink,
+                                 const Gate& gate) {
   auto& w = impl_->wiring;
   const double t = static_cast<double>(k) * scenario_.step;
-  const std::size_t n = scenario_.components.size();
-  for (std::size_t ci = 0; ci < n; ++ci) {
-    if (!hosted_[ci]) continue;
-    auto& c = scenario_.components[ci];
-    if (k % c.period_steps != 0) continue;
-    for (const auto& in : w.inputs[ci]) {
-      const SignalSample* src = nullptr;
-      if (impl_->produced_here[in.signal]) {
-        const Slot& slot = impl_->bus[in.signal];
-        src = (in.delayed && slot.current.step >= k) ? &slot.previous : &slot.current;
+  auto& c = scenario_.components[ci];
+  if (k % c.period_steps != 0) return;
+  for (const auto& in : w.inputs[ci]) {
+    const SignalSample* src = nullptr;
+    const int64_t due = due_step(k, w.signals[in.signal].period_steps, in.delayed);
+    if (impl_->produced_here[in.signal]) {
+      const Slot& slot = impl_->bus[in.signal];
+      src = (in.delayed && slot.current.step >= k) ? &slot.previous : &slot.current;
+    } else {
+      SignalSample& r = impl_->remote_sample;
+      if (due < 0) {
+        r = SignalSample{};  // not produced yet: invalid input, fields zero
       } else {
-        SignalSample& r = impl_->remote_sample;
-        const int64_t due = due_step(k, w.signals[in.signal].period_steps, in.delayed);
-        if (due < 0) {
-          r = SignalSample{};  // not produced yet: invalid input, fields zero
-        } else {
-          remote(in.signal, due, r);
-        }
-        src = &r;
+        remote(in.signal, due, r);
       }
-      SignalSample& dst = in.port->sample();
-      dst.step = src->step;
-      for (std::size_t f = 0; f < in.width; ++f) dst.values[f] = in.absent[f] ? 0.0 : src->values[in.field_of[f]];
-      in.port->refreshed();
+      src = &r;
     }
-    if (!gate || gate(ci))
-      c.component->step(k, t);
-    else
-      c.component->hold(k, t);
-    for (const auto& out : w.outputs[ci]) {
-      out.port->commit();
-      Slot& slot = impl_->bus[out.signal];
-      SignalSample& sample = out.port->sample();
-      sample.step = k;
-      slot.previous = slot.current;
-      slot.current = sample;
-      sink(out.signal, sample);
-    }
+    SignalSample& dst = in.port->sample();
+    in.port->set_due(due);
+    dst.step = src->step;
+    for (std::size_t f = 0; f < in.width; ++f) dst.values[f] = in.absent[f] ? 0.0 : src->values[in.field_of[f]];
+    in.port->refreshed();
+  }
+  if (!gate || gate(ci))
+    c.component->step(k, t);
+  else
+    c.component->hold(k, t);
+  for (const auto& out : w.outputs[ci]) {
+    out.port->commit();
+    Slot& slot = impl_->bus[out.signal];
+    SignalSample& sample = out.port->sample();
+    sample.step = k;
+    slot.previous = slot.current;
+    slot.current = sample;
+    sink(out.signal, sample);
   }
 }
 

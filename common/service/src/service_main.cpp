@@ -179,9 +179,10 @@ int plexus::service::run_service(int argc, char** argv, const std::string& self)
       distributed::RealtimeHost host(sc, hosted, *participant, profiles, ro);
       const auto r = host.run(g_stop);
       spdlog::info("ran {} ticks: {} holds, {} stale and {} late input reads, {} refused samples, jitter p99 {:.1f} us, "
-                   "{} overruns, {} blind estimator steps",
+                   "{} overruns, {} blind estimator steps; {} loop iterations, compute p99 {:.1f} us, "
+                   "{} estimator steps run after their tick, {} late samples dropped or bridged",
                    r.ticks, r.holds, r.stale_inputs, r.late_inputs, r.rejected_inputs, r.loop.jitter_p99_us, r.loop.overruns,
-                   r.blind_steps);
+                   r.blind_steps, r.loop.iterations, r.loop.compute_p99_us, r.deferred_steps, r.dropped_late_samples);
       return exit_within(0, kTeardownDeadlineS, self);  // armed before the participant is deleted
     }
     distributed::LockstepHost host(sc, hosted, *participant, profiles.get(profile), {.timeout_s = timeout});

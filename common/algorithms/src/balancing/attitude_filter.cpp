@@ -118,6 +118,32 @@ bool AttitudeFilter::step(double torque, double acc_tilt, double gyro) {
   return false;
 }
 
+bool AttitudeFilter::predict(double torque) {
+  if (!std::isfinite(torque)) return false;
+  if (!predicted_once_) return true;  // nothing to predict from yet
+  const AttitudeModel& m = model_;
+  const double Ra = params_.r_tilt * params_.r_tilt, Rg = params_.r_gyro * params_.r_gyro;
+  switch (params_.kind) {
+    case AttitudeFilterKind::kUkfAugmented: {
+      // The points drawn here are drawn again by the next step()'s predict, from this estimate.
+      auto f = [&](const State& x, const Eigen::Vector3d& w) -> State { return m.predict(x, torque) + w; };
+      if (params_.measurement == AttitudeMeasurementForm::kPaper)
+        return aug1_.predict(f, Q_, Eigen::Matrix<double, 1, 1>(Ra));
+      return aug2_.predict(f, Q_, Eigen::Vector2d(Ra, Rg).asDiagonal().toDenseMatrix());
+    }
+    case AttitudeFilterKind::kUkfAdditive:
+      return add_.predict([&](const State& x) -> State { return m.predict(x, torque); }, Q_);
+    case AttitudeFilterKind::kEkf:
+      return ekf_.predict(
+          [&](const State& x, Eigen::Matrix3d& F) -> State {
+            F = m.jacobian(x, torque);
+            return m.predict(x, torque);
+          },
+          Q_);
+  }
+  return false;
+}
+
 const AttitudeFilter::State& AttitudeFilter::state() const {
   switch (params_.kind) {
     case AttitudeFilterKind::kUkfAugmented:

@@ -1,12 +1,19 @@
 // Realtime mode: the scenario's components on wall-clock loops, latest-sample semantics.
 //
-//  - Each host runs its components in one absolute-deadline loop at the base rate
-//    (PeriodicLoop); a component runs at the ticks its period divides.
-//  - An input from another process is the latest sample received on its typed topic
-//    `<signal>` (wire.hpp: data times are wall-clock times on the run's grid); a read
-//    that finds an older sample than the step the sim would read is counted as late. It is
-//    stale when it is older than `input_deadline_periods` periods of its producer (scenario
-//    `clock.input_deadline_periods`, default 3), or has never arrived.
+//  - Each host runs its components in one absolute-deadline loop (PeriodicLoop) whose period
+//    is the greatest common divisor of their periods (a host of 100 Hz services on a 1 kHz
+//    grid ticks at 100 Hz); a component runs at the steps its period divides.
+//  - An input from another process is read from the recent samples received on its typed
+//    topic `<signal>` (wire.hpp: data times are wall-clock times on the run's grid): the
+//    sample of the step the sim would read if it has arrived, else the newest older one, a
+//    read counted as late. It is stale when the newest sample is older than
+//    `input_deadline_periods` periods of its producer (scenario `clock.input_deadline_periods`,
+//    default 3), or none has arrived.
+//  - An estimator that reads from another process runs each of its steps once the samples
+//    that step reads have arrived, at most one of its periods after the step's tick (then
+//    with what has arrived: late reads); so a sample that comes after its tick is still used
+//    at its own step, as `plexus sim` uses it, and the estimate of that step is published
+//    when it is computed. Controllers and plants do not wait: they read at their tick.
 //  - A controller with a stale input runs hold() instead of step(): its documented safe
 //    output (by default all zero: zero velocity, zero torque). It recovers by itself at the
 //    first tick where its inputs are fresh again. Other components run on the last sample,
@@ -89,6 +96,8 @@ struct RealtimeReport {
   uint64_t blind_steps = 0;      ///< estimator steps with no fresh measurement (outputs not published)
   uint64_t stale_inputs = 0;     ///< input reads that found a stale sample
   uint64_t late_inputs = 0;      ///< input reads that found an older sample than the sim would read
+  uint64_t deferred_steps = 0;   ///< estimator steps run after their tick, once their samples had arrived
+  uint64_t dropped_late_samples = 0;  ///< samples the components dropped or bridged by their late-sample rules
   uint64_t rejected_inputs = 0;  ///< received samples refused at the edge (non-finite, malformed)
   rt::LoopStats loop;
 };

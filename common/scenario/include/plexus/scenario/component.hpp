@@ -120,6 +120,12 @@ class InputPort : public Port {
   double operator[](std::size_t i) const { return sample_.values[i]; }
   /// False until the producer has produced its first sample.
   bool valid() const { return sample_.step >= 0; }
+  /// The step whose sample this read asked for (the latest of the producer's steps the
+  /// reading step may see; -1 before the first). sample().step equals it in `plexus sim` and
+  /// lockstep; in realtime a sample that has not arrived yet leaves an older one here.
+  int64_t due() const { return due_; }
+  /// For the runner: sets due().
+  void set_due(int64_t step) { due_ = step; }
   /// True for a typed port (add_input<T>): it reads the whole message, so a field its producer
   /// does not fill reads 0, as a member a producer does not use is 0 on the wire.
   bool whole_message() const { return whole_message_; }
@@ -131,6 +137,7 @@ class InputPort : public Port {
 
  private:
   std::string message_;
+  int64_t due_ = -1;
 };
 
 /// An output: the component writes every field at each of its steps.
@@ -208,6 +215,11 @@ class Component {
   /// default sets every output field to zero (zero velocity, zero torque); a controller
   /// that must hold something else overrides it. Must not allocate.
   virtual void hold(int64_t k, double t);
+
+  /// Samples this component dropped by its documented rule for a late sample (realtime: a
+  /// sample that arrived after the step that should have used it, docs/distributed.md);
+  /// 0 for a component without such a rule. The realtime host reports the sum.
+  virtual uint64_t dropped_late_samples() const { return 0; }
 
   const std::string& name() const { return name_; }
   /// The signal `port` would bind to without the scenario's remap.

@@ -50,7 +50,32 @@ class StepExecutor {
   /// Runs base step k of the hosted components. Does not allocate (the callbacks must not either).
   void step(int64_t k, const RemoteInput& remote, const OutputSink& sink, const Gate& gate = {});
 
+  /// Runs step k of hosted component i alone, as step(k, ...) runs it in its turn (nothing
+  /// when k is not one of its steps). A realtime host uses it to run an estimator's step
+  /// once the samples that step reads have arrived (realtime.hpp). Does not allocate.
+  void step_component(std::size_t component, int64_t k, const RemoteInput& remote, const OutputSink& sink,
+                      const Gate& gate = {});
+
+  /// Asks `have(signal, due)` for every input of component i produced in another process,
+  /// with the step whose sample the component's step k reads; true if every answer is true
+  /// (or it reads none). Does not allocate.
+  template <class Have>
+  bool remote_inputs_ready(std::size_t component, int64_t k, Have&& have) const {
+    for (std::size_t n = 0, count = remote_input_count(component); n < count; ++n) {
+      std::size_t signal = 0;
+      const int64_t due = remote_input_due(component, n, k, signal);
+      if (due >= 0 && !have(signal, due)) return false;
+    }
+    return true;
+  }
+
  private:
+  std::size_t remote_input_count(std::size_t component) const;
+  /// The due step of component i's n-th input binding at step k (-1: not produced yet, or
+  /// produced in this process), and its signal.
+  int64_t remote_input_due(std::size_t component, std::size_t n, int64_t k, std::size_t& signal) const;
+  void run_component(std::size_t ci, int64_t k, const RemoteInput& remote, const OutputSink& sink, const Gate& gate);
+
   struct Impl;
   Scenario& scenario_;
   std::vector<bool> hosted_;

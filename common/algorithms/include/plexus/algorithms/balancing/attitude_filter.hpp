@@ -55,6 +55,11 @@ class AttitudeFilter {
   /// update with the accelerometer tilt and the gyro (ignored in the paper form). Returns
   /// false if the filter refused a step (non-finite input; estimate kept). No allocation.
   bool step(double torque, double acc_tilt, double gyro);
+  /// One sample period of prediction with `torque` and no measurement: a sample that never
+  /// came. The next step() predicts its own period and updates as usual. Before the first
+  /// step() it does nothing (the first step() only updates). Returns false if refused
+  /// (non-finite torque or prediction; estimate kept). No allocation.
+  bool predict(double torque);
 
   const State& state() const;
   const Eigen::Matrix3d& covariance() const;

@@ -1,0 +1,60 @@
+#!/usr/bin/env bash
+# realtime_main_job.sh PLEXUS SCENARIO OUT DOMAIN VENDOR [DURATION]: the main job
+# (four_robots.yaml) in realtime, shortened to DURATION s (default 45: the skid-steer robot's
+# first terrain switch is at 40 s), every service its own process as the README runs it.
+# What it asserts, on a loaded machine too:
+#  - every process ran the whole run (its loop ticked at least 90 % of the run's 10 ms periods:
+#    every host of the main job ticks at 100 Hz or faster) and the skid-steer's services
+#    refused no sample;
+#  - the skid-steer's figures of paper 001 as in lockstep: ICRs re-converged within 3 s of the
+#    switch (lockstep: 1.0 s) and terrain classified with accuracy >= 0.95 (lockstep: 1.0).
+#    Its estimators use each sample at its own step (docs/distributed.md, "Late samples"), so
+#    these do not depend on when the samples arrive;
+#  - overruns: at most 5 % of each process's loop ticks (a loop that cannot keep its period
+#    at all). Issue 35's bound, 0.1 % per service, is a timing goal: printed, and enforced
+#    with STRICT_TIMING=1 (as every realtime timing goal of the suite, docs/testing.md).
+# The arm's figures are printed, not checked: its 1 kHz loop across three processes is the
+# loop group's work (docs/distributed.md).
+set -u
+plexus=$1 scenario=$2 out=$3 domain=$4 vendor=$5 duration=${6:-45}
+rm -rf "$out"
+mkdir -p "$out"
+from=$((duration - 10))
+"$plexus" launch "$scenario" --set clock.mode=realtime --set duration="$duration" \
+  --set metrics.0.from=$from --set metrics.1.from=$from \
+  --dds "$vendor" --json --quiet --domain "$domain" --out "$out/launch" > "$out/metrics.json" 2> "$out/stderr.txt"
+rc=$?
+if [ "$rc" -ne 0 ] && [ "$rc" -ne 1 ]; then
+  echo "plexus launch exited $rc"; tail -20 "$out/stderr.txt"; exit 1
+fi
+j=$out/launch/launch.json
+[ -s "$j" ] || { echo "no launch.json"; tail -20 "$out/stderr.txt"; exit 1; }
+fail=0
+# The processes' loops: ticks, overruns, late and stale reads, refused samples.
+min_ticks=$((duration * 90))
+printf '%-52s %8s %8s %8s %8s %8s\n' process ticks overruns '%' late stale
+while IFS=$'\t' read -r name ticks overruns late stale rejected; do
+  pct=$(awk -v o="$overruns" -v t="$ticks" 'BEGIN { printf "%.3f", t > 0 ? 100 * o / t : 100 }')
+  printf '%-52s %8s %8s %8s %8s %8s\n' "$name" "$ticks" "$overruns" "$pct" "$late" "$stale"
+  if awk -v p="$pct" 'BEGIN { exit !(p > 5) }'; then echo "  $name: overruns above 5 % of its ticks"; fail=1; fi
+  if [ "${STRICT_TIMING:-0}" = 1 ] && awk -v p="$pct" 'BEGIN { exit !(p > 0.1) }'; then
+    echo "  $name: overruns above 0.1 % of its ticks (STRICT_TIMING)"; fail=1
+  fi
+  [ "$ticks" -ge "$min_ticks" ] || { echo "  $name: $ticks loop ticks, fewer than $min_ticks"; fail=1; }
+  case "$name" in
+    *skid*) [ "$rejected" -eq 0 ] || { echo "  $name: $rejected refused samples"; fail=1; } ;;
+  esac
+done < <(jq -r '.services | to_entries[] | [.key, .value.loop_count, .value.overruns, .value.late_input_reads,
+                .value.stale_input_reads, .value.rejected_inputs] | @tsv' "$j")
+# The estimators' late samples (services' closing lines, when the log has them).
+grep -ho '[0-9]* estimator steps run after their tick, [0-9]* late samples dropped or bridged' "$out"/launch/logs/*.log |
+  sed 's/^/  /' || true
+m=$out/metrics.json
+reconv=$(jq -r '.skid_reconvergence_time_s' "$m")
+acc=$(jq -r '.skid_classifier_accuracy' "$m")
+echo "skid re-convergence ${reconv} s (paper <= 3, lockstep 1.0), classifier accuracy ${acc} (>= 0.95, lockstep 1.0)"
+echo "arm (not checked): rms $(jq -r '.arm_rms_e1_mrad' "$m") / $(jq -r '.arm_rms_e2_mrad' "$m") mrad," \
+     "peak torque $(jq -r '.arm_max_torque_1_nm' "$m") / $(jq -r '.arm_max_torque_2_nm' "$m") N m"
+awk -v r="$reconv" 'BEGIN { exit !(r != "null" && r <= 3) }' || { echo "skid re-convergence above 3 s"; fail=1; }
+awk -v a="$acc" 'BEGIN { exit !(a != "null" && a >= 0.95) }' || { echo "skid classifier accuracy below 0.95"; fail=1; }
+exit $fail
