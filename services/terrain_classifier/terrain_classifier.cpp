@@ -67,7 +67,7 @@ class TerrainClassifierComponent final : public Component {
         out_(add_output("terrain", {"class", "confidence", "windows", "votes"}, "TerrainClass")) {
     out_[0] = -1.0;  // no decision yet
   }
-  uint64_t dropped_late_samples() const override { return windows_.gaps; }
+  uint64_t dropped_late_samples() const override { return windows_.missing; }
 
   void step(int64_t /*k*/, double /*t*/) override {
     if (windows_.push(in_)) {

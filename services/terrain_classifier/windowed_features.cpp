@@ -8,19 +8,34 @@ namespace plexus::scenario {
 namespace alg = plexus::algorithms;
 
 WindowedFeatures::WindowedFeatures(const ComponentConfig& c)
-    : extractor(feature_params(c)), window(samples(c, "window_s", 1.0), hop(c)), features(extractor.size()) {}
+    : extractor(feature_params(c)), window(samples(c, "window_s", 1.0), hop(c)), features(extractor.size()),
+      period_steps_(c.period_steps), max_fill_(samples(c, "window_s", 1.0) / 10) {}
 
 bool WindowedFeatures::push(const InputPort& in) {
   const int64_t due_before = due_;
   due_ = in.due();
   if (!fresh(in)) return false;
   const int64_t step = in.sample().step;
+  const double x = in[0];
+  bool ready = false;
   if (pushed_ >= 0 && pushed_ < due_before && step > due_before) {
-    window.clear();  // the sample due at the previous step never came: a gap (above)
-    ++gaps;
+    // The sample due at the previous step never came: its slot, and any after it, are empty.
+    const int64_t gap = (step - pushed_) / period_steps_ - 1;
+    if (gap >= 1) {
+      missing += static_cast<uint64_t>(gap);
+      if (static_cast<std::size_t>(gap) <= max_fill_) {
+        for (int64_t i = 1; i <= gap; ++i)
+          ready = window.push(last_ + (x - last_) * static_cast<double>(i) / static_cast<double>(gap + 1)) || ready;
+      } else {
+        window.clear();
+        ready = false;
+      }
+    }
   }
   pushed_ = step;
-  if (!window.push(in[0])) return false;
+  last_ = x;
+  ready = window.push(x) || ready;
+  if (!ready) return false;
   extractor.compute(window.window(), features);
   return true;
 }

@@ -122,7 +122,9 @@ TEST(AttitudeFilter, AMissingSampleIsPredictedOver) {
     }
     s.step(k);
     if (k == 5) continue;
-    if (k == 6) ASSERT_TRUE(ref.predict(torque_at(k)));
+    if (k == 6) {
+      ASSERT_TRUE(ref.predict(torque_at(k)));
+    }
     ref.step(torque_at(k), std::atan2(9.81 * std::sin(tilt_at(k)), 9.81 * std::cos(tilt_at(k))), gyro_at(k));
     const auto m = s.published<msg::AttitudeEstimate>("r3/attitude");
     ASSERT_NEAR(m.tilt(), ref.state()(0), 1e-13) << k;

@@ -125,21 +125,46 @@ TEST(TerrainClassifier, ClassOfAKnownWindow) {
   EXPECT_EQ(m.confidence(), second.confidence);
 }
 
-TEST(TerrainClassifier, AMissingSampleRestartsTheWindow) {
+TEST(TerrainClassifier, AMissingSampleIsInterpolatedInItsSlot) {
   // Realtime: the IMU sample of step 50 never came (step 50 reads the one of 49, step 51
-  // the one of 51). A window across the gap would not be evenly sampled: the partial one is
-  // dropped and the first window is samples 51..150, decided at step 150, not 99.
+  // the one of 51). Its slot gets the mean of its neighbours, so the first window is still
+  // samples 0..99, decided at step 99, on the window the algorithm gets with that value.
   const TempDir dir;
   ServiceUnderTest s(classifier_doc(write_training(dir)));
-  for (int64_t k = 0; k <= 150; ++k) {
+  std::vector<double> window;
+  for (int64_t k = 0; k < 100; ++k) {
     if (k != 50) ASSERT_EQ(s.deliver("r2/imu", imu(s, k, vibration(20.0, k))), Rejection::none);
     s.step(k);
-    if (k == 149) EXPECT_EQ(s.published<msg::TerrainClass>("r2/terrain").terrain_id(), -1) << "no decision yet";
+    window.push_back(k == 50 ? vibration(20.0, 49) + (vibration(20.0, 51) - vibration(20.0, 49)) * 0.5 : vibration(20.0, k));
   }
   const auto m = s.published<msg::TerrainClass>("r2/terrain");
   EXPECT_EQ(m.terrain_id(), 1);
   EXPECT_EQ(m.windows(), 1u);
+  alg::PsdFeatureExtractor e(feature_params());
+  std::vector<double> f(e.size());
+  e.compute(window, f);
+  alg::KnnParams kp;
+  kp.k = 3;
+  const alg::KnnResult r = alg::KnnClassifier(alg::load_training_set(dir.file("training.txt")), kp).classify(f);
+  EXPECT_EQ(m.votes(), r.votes);
+  EXPECT_EQ(m.confidence(), r.confidence);
   EXPECT_EQ(s.scenario().components[0].component->dropped_late_samples(), 1u);
+}
+
+TEST(TerrainClassifier, AGapLongerThanATenthOfAWindowRestartsIt) {
+  // 20 samples (steps 50..69) never came: more than a tenth of a window to fill, so the
+  // partial window is dropped and the first one is samples 70..169, decided at step 169.
+  const TempDir dir;
+  ServiceUnderTest s(classifier_doc(write_training(dir)));
+  for (int64_t k = 0; k < 170; ++k) {
+    if (k < 50 || k >= 70) ASSERT_EQ(s.deliver("r2/imu", imu(s, k, vibration(20.0, k))), Rejection::none);
+    s.step(k);
+    if (k == 168) EXPECT_EQ(s.published<msg::TerrainClass>("r2/terrain").terrain_id(), -1) << "no decision yet";
+  }
+  const auto m = s.published<msg::TerrainClass>("r2/terrain");
+  EXPECT_EQ(m.terrain_id(), 1);
+  EXPECT_EQ(m.windows(), 1u);
+  EXPECT_EQ(s.scenario().components[0].component->dropped_late_samples(), 20u);
 }
 
 TEST(TerrainClassifier, BadSamplesAreRefusedAndLeaveTheWindowAlone) {

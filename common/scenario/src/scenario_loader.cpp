@@ -391,6 +391,56 @@ struct Loader {
     sc.signals = detail::wire(sc).signals;
   }
 
+  /// `loops:`: each loop's members (robot or service names), its budget and its process.
+  /// A loop's `process` is given to every member, as a service's own `process` key is.
+  void load_loops(const YamlMap& top) {
+    if (!top.has("loops")) return;
+    if (sc.partial) top.fail("loops", "belongs to a whole scenario, not to one process's part");
+    const YamlMap loops = top.map("loops");
+    for (const auto& name : loops.keys()) {
+      const YamlMap l = loops.map(name_key(loops, name, "loop"));
+      ScenarioLoop loop;
+      loop.name = name;
+      loop.where = l.where() + ": loops." + name;
+      const auto members = l.sequence("members");
+      if (members.size() < 2) l.fail("members", "a loop has at least two members (robots or services)");
+      int64_t fastest = 0;
+      for (const auto& m : members) {
+        if (!m.IsScalar()) l.fail("members", "expected a list of robot and service names");
+        const std::string member = m.as<std::string>();
+        std::size_t found = 0;
+        for (std::size_t i = 0; i < sc.components.size(); ++i) {
+          const auto& c = sc.components[i];
+          const bool physical = c.kind == ComponentKind::plant || c.kind == ComponentKind::sensor;
+          const std::string& n = c.component->name();
+          if (physical ? n.substr(0, n.find('/')) != member : n != member) continue;
+          if (std::count(loop.members.begin(), loop.members.end(), i)) l.fail("members", "'" + member + "' is named twice");
+          loop.members.push_back(i);
+          fastest = fastest == 0 ? c.period_steps : std::min(fastest, c.period_steps);
+          ++found;
+        }
+        if (found == 0) l.fail("members", "no robot or service '" + member + "' in this scenario");
+        if (sc.sources.count(member))
+          l.fail("members", "robot '" + member + "' is fed by its source (" + to_string(sc.sources.at(member).type) +
+                                "), a process of its own: it cannot be a member of a loop");
+      }
+      loop.deadline_s = l.optional<double>("deadline", static_cast<double>(fastest) * sc.step);
+      if (!(loop.deadline_s > 0.0 && loop.deadline_s <= 3600.0)) l.fail("deadline", "must be in (0, 3600] s");
+      loop.process = l.optional<std::string>("process", "");
+      if (l.has("process") && !valid_name(loop.process))
+        l.fail("process", "letters, digits, '_' and '-' only, at most 64 characters");
+      for (std::size_t i : loop.members) {
+        auto& c = sc.components[i];
+        if (loop.process.empty()) continue;
+        if (!c.process.empty() && c.process != loop.process)
+          l.fail("process", "'" + c.component->name() + "' already runs in process '" + c.process + "' (" + c.where + ")");
+        c.process = loop.process;
+      }
+      l.reject_unknown();
+      sc.loops.push_back(std::move(loop));
+    }
+  }
+
   void load_metrics(const YamlMap& top) {
     if (!top.has("metrics")) return;
     const auto entries = top.sequence("metrics");
@@ -432,11 +482,12 @@ struct Loader {
 
   void load(const YamlMap& top) {
     // Read every top-level key first, so a misspelt one is reported before anything deeper.
-    for (const char* k : {"robots", "services", "metrics", "expectations", "inputs"}) top.node(k);
+    for (const char* k : {"robots", "services", "loops", "metrics", "expectations", "inputs"}) top.node(k);
     load_top(top);
     top.reject_unknown();
     load_inputs(top);
     load_components(top);
+    load_loops(top);
     if (sc.partial && (top.has("metrics") || top.has("expectations")))
       top.fail(top.has("metrics") ? "metrics" : "expectations", "belongs to a whole scenario, not to one service's part");
     load_metrics(top);

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # realtime_main_job.sh PLEXUS SCENARIO OUT DOMAIN VENDOR [DURATION]: the main job
 # (four_robots.yaml) in realtime, shortened to DURATION s (default 45: the skid-steer robot's
-# first terrain switch is at 40 s), every service its own process as the README runs it.
+# first terrain switch is at 40 s), as the README runs it (the arm a loop group).
 # What it asserts, on a loaded machine too:
 #  - every process ran the whole run (its loop ticked at least 90 % of the run's 10 ms periods:
 #    every host of the main job ticks at 100 Hz or faster) and the skid-steer's services
@@ -13,8 +13,12 @@
 #  - overruns: at most 5 % of each process's loop ticks (a loop that cannot keep its period
 #    at all). Issue 35's bound, 0.1 % per service, is a timing goal: printed, and enforced
 #    with STRICT_TIMING=1 (as every realtime timing goal of the suite, docs/testing.md).
-# The arm's figures are printed, not checked: its 1 kHz loop across three processes is the
-# loop group's work (docs/distributed.md).
+#  - the arm's figures of paper 004 Table 4 as in lockstep: its 1 kHz loop is a loop group
+#    (one process, `loops:` in the scenario), so it settles within Table 4's band (<= 0.36 /
+#    0.37 s; lockstep 0.123 / 0.122 s), and its RMS error and peak torque stay within the
+#    bounds tests/repro/four_robots.sh puts around lockstep's (Table 4's RMS and peak torque
+#    are missed in lockstep too: docs/algorithms/arm.md);
+#  - the loop's timing budget was checked: launch.json has the verdict for loop 'arm'.
 set -u
 plexus=$1 scenario=$2 out=$3 domain=$4 vendor=$5 duration=${6:-45}
 rm -rf "$out"
@@ -53,8 +57,23 @@ m=$out/metrics.json
 reconv=$(jq -r '.skid_reconvergence_time_s' "$m")
 acc=$(jq -r '.skid_classifier_accuracy' "$m")
 echo "skid re-convergence ${reconv} s (paper <= 3, lockstep 1.0), classifier accuracy ${acc} (>= 0.95, lockstep 1.0)"
-echo "arm (not checked): rms $(jq -r '.arm_rms_e1_mrad' "$m") / $(jq -r '.arm_rms_e2_mrad' "$m") mrad," \
-     "peak torque $(jq -r '.arm_max_torque_1_nm' "$m") / $(jq -r '.arm_max_torque_2_nm' "$m") N m"
+arm() { jq -r ".arm_$1" "$m"; }
+echo "arm: settling $(arm settling_time_1_s) / $(arm settling_time_2_s) s (Table 4 <= 0.36 / 0.37)," \
+     "rms $(arm rms_e1_mrad) / $(arm rms_e2_mrad) mrad (lockstep 1.29 / 1.14)," \
+     "peak torque $(arm max_torque_1_nm) / $(arm max_torque_2_nm) N m (lockstep 590 / 163)"
+within() {  # within NAME LOW HIGH
+  awk -v v="$(arm "$1")" -v lo="$2" -v hi="$3" 'BEGIN { exit !(v != "null" && v >= lo && v <= hi) }' ||
+    { echo "arm_$1 = $(arm "$1") outside [$2, $3]"; fail=1; }
+}
+within settling_time_1_s 0 0.36
+within settling_time_2_s 0 0.37
+within rms_e1_mrad 0 1.42
+within rms_e2_mrad 0 1.26
+within max_torque_1_nm 0 650
+within max_torque_2_nm 0 180
+fits=$(jq -r '.loops.arm.fits' "$j")
+echo "timing budget of loop arm: fits=$fits ($(jq -c '.loops.arm.hops | length' "$j") hops between processes)"
+[ "$fits" = true ] || { echo "loop arm: no verdict, or it does not fit its budget"; fail=1; }
 awk -v r="$reconv" 'BEGIN { exit !(r != "null" && r <= 3) }' || { echo "skid re-convergence above 3 s"; fail=1; }
 awk -v a="$acc" 'BEGIN { exit !(a != "null" && a >= 0.95) }' || { echo "skid classifier accuracy below 0.95"; fail=1; }
 exit $fail

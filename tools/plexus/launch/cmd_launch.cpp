@@ -36,6 +36,8 @@ Command add_launch_command(CLI::App& root) {
       ->check(positive_seconds());
   c.app->add_flag("--json", o->json, "Print the metrics (and steps_per_s) as one JSON object");
   c.app->add_flag("--quiet,-q", o->quiet, "No live status line");
+  c.app->add_flag("--strict", o->strict,
+                  "Realtime: end the run (exit 2) when a loop of the scenario (loops:) cannot fit its timing budget");
   c.app->add_flag("--report", o->report, "Then plot the run and print its metrics against the expectations (plexus report)");
   c.app->add_option("--ssh-config", o->ssh_config,
                     "Hosts reached over ssh (hosts.<h>.ssh): use this ssh configuration file (ssh -F; default ~/.ssh/config)");

@@ -56,14 +56,14 @@ void LaunchRun::stop_all() {
   if (relay) relay->drain();  // the children's last lines before the launcher's verdict
 }
 
-int LaunchRun::failure(const std::string& what) {
+int LaunchRun::failure(const std::string& what, int rc) {
   stop_all();
   const std::string lost = remotes ? remotes->failure() : std::string();  // a lost host is the cause
   const std::string& died = supervisor->died();
   const std::string why = !lost.empty() ? lost : died.empty() ? what : died;
   scenario::mark_run_folder(run_dir, "failed: " + why);
   std::fprintf(stderr, "plexus launch: %s\n", why.c_str());
-  return done(1);
+  return done(rc);
 }
 
 int LaunchRun::interrupted() {

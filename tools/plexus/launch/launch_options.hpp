@@ -17,6 +17,7 @@ struct LaunchOptions {
   int domain = -1;
   double timeout = 10.0;
   bool json = false, quiet = false, report = false;
+  bool strict = false;  // --strict: a loop that cannot fit its timing budget ends the run (exit 2)
   // Hosts over ssh (remote_share.hpp): --ssh-config, --allow-clock-offset; --remote is the
   // share a launcher started over ssh; --inject-clock-offset HOST=SECONDS fakes an offset (tests).
   std::string ssh_config;

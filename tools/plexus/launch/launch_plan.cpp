@@ -30,6 +30,10 @@ std::map<std::string, std::string> plant_programs(const scenario::Scenario& sc) 
   return out;
 }
 
+bool physical(const scenario::ScenarioComponent& c) {
+  return c.kind == scenario::ComponentKind::plant || c.kind == scenario::ComponentKind::sensor;
+}
+
 /// Services that share a `process` key must agree on where and how that process runs, and
 /// the process name must not be taken by another service or a plant-side process.
 void check_process_groups(const scenario::Scenario& sc) {
@@ -37,7 +41,7 @@ void check_process_groups(const scenario::Scenario& sc) {
   for (const auto& [robot, program] : plant_programs(sc)) plant_side.insert(program);
   std::map<std::string, const scenario::ScenarioComponent*> first_of;
   for (const auto& c : sc.components) {
-    if (c.process.empty()) continue;
+    if (c.process.empty() || c.kind == scenario::ComponentKind::sensor) continue;
     const std::string key = c.where + ".process";
     for (const auto& program : plant_side)
       if (c.process.rfind(program, 0) == 0)
@@ -52,20 +56,18 @@ void check_process_groups(const scenario::Scenario& sc) {
     const auto& f = *it->second;
     auto clash = [&](const char* what, const std::string& mine, const std::string& theirs) {
       if (mine != theirs)
-        throw InputError(key + ": services of process '" + c.process + "' must agree on `" + what + "` ('" + mine +
+        throw InputError(key + ": members of process '" + c.process + "' must agree on `" + what + "` ('" + mine +
                          "' here, '" + theirs + "' at " + f.where + ")");
     };
     clash("host", c.host, f.host);
     clash("dds", c.dds, f.dds);
+    // A robot in a loop group takes the restart policy and scheduling of the group's services.
+    if (physical(c) || physical(f)) continue;
     clash("restart", c.restart, f.restart);
     clash("restart_delay", std::to_string(c.restart_delay), std::to_string(f.restart_delay));
     clash("priority", std::to_string(c.priority), std::to_string(f.priority));
     clash("cpu", std::to_string(c.cpu), std::to_string(f.cpu));
   }
-}
-
-bool physical(const scenario::ScenarioComponent& c) {
-  return c.kind == scenario::ComponentKind::plant || c.kind == scenario::ComponentKind::sensor;
 }
 
 /// The plants and sensors of `robots`, by index in Scenario::components.
@@ -75,6 +77,40 @@ std::vector<std::size_t> robots_components(const scenario::Scenario& sc, const s
     if (physical(sc.components[i]) && std::count(robots.begin(), robots.end(), robot_of(sc.components[i])))
       out.push_back(i);
   return out;
+}
+
+/// A service's process, or the `process` group it joins (services, and the robots of a loop
+/// group): `member` (a service or robot name) with its components, in `program` if the group's
+/// members share one, else in the host service, which runs any type.
+void join_group(std::vector<Process>& procs, const scenario::ScenarioComponent& c, const std::string& member,
+                const std::vector<std::size_t>& components, const std::string& program) {
+  const std::string name = c.process.empty() ? c.component->name() : c.process;
+  auto group = std::find_if(procs.begin(), procs.end(), [&](const Process& p) { return p.name == name; });
+  if (group == procs.end()) {
+    Process p;
+    p.name = name;
+    p.program = program;
+    p.select = {"--components", member};
+    p.components = components;
+    p.vendor = c.dds;
+    procs.push_back(p);
+    group = std::prev(procs.end());
+  } else {
+    group->select.back() += "," + member;
+    group->components.insert(group->components.end(), components.begin(), components.end());
+    if (group->program != program) group->program = scenario::host_service()->name;  // any type
+  }
+  if (physical(c)) {
+    group->has_plant = true;
+    group->restart = "never";  // plants hold the physical state: never restarted
+  } else {
+    if (!group->has_plant) {
+      group->restart = c.restart;
+      group->restart_delay_ns = static_cast<int64_t>(c.restart_delay * 1e9);
+    }
+    group->priority = c.priority;  // the members of a group agree (check_process_groups)
+    group->cpu = c.cpu;
+  }
 }
 
 }  // namespace
@@ -93,7 +129,10 @@ std::vector<Process> plan(const scenario::Scenario& sc, const std::string& host)
   for (const auto& c : sc.components) {
     if (!here(c.host)) continue;
     const std::size_t index = static_cast<std::size_t>(&c - sc.components.data());
-    if (c.kind == scenario::ComponentKind::plant) {
+    if (c.kind == scenario::ComponentKind::plant && !c.process.empty()) {
+      // A robot in a loop group (`loops:`): its plant and sensors in the group's process.
+      join_group(procs, c, robot_of(c), robots_components(sc, {robot_of(c)}), plant_program.at(robot_of(c)));
+    } else if (c.kind == scenario::ComponentKind::plant) {
       const std::string robot = robot_of(c);
       if (const auto src = sc.sources.find(robot); src != sc.sources.end()) {
         // A robot fed by a bridge or a replay: that program, for that robot, in place of the
@@ -117,31 +156,12 @@ std::vector<Process> plan(const scenario::Scenario& sc, const std::string& host)
                          "must agree ('" + c.dds + "' for " + robot + ", '" + it->second + "' for " +
                          list.substr(0, list.rfind(',')) + ")");
     } else if (c.kind != scenario::ComponentKind::sensor) {
-      const std::string name = c.process.empty() ? c.component->name() : c.process;
-      const std::string program = scenario::executable_for(c.type);
-      auto group = std::find_if(procs.begin(), procs.end(), [&](const Process& p) { return p.name == name; });
-      if (group != procs.end()) {  // another service of the same `process`
-        group->select.back() += "," + c.component->name();
-        group->components.push_back(index);
-        if (group->program != program) group->program = scenario::host_service()->name;  // any type
-        continue;
-      }
-      Process p;
-      p.name = name;
-      p.program = program;
-      p.select = {"--components", c.component->name()};
-      p.components = {index};
-      p.restart = c.restart;
-      p.restart_delay_ns = static_cast<int64_t>(c.restart_delay * 1e9);
-      p.priority = c.priority;
-      p.cpu = c.cpu;
-      p.vendor = c.dds;
-      procs.push_back(p);
+      join_group(procs, c, c.component->name(), {index}, scenario::executable_for(c.type));
     }
   }
   std::set<HostProgram> robot_hosts;  // over the whole scenario, so names agree on every host
   for (const auto& c : sc.components)
-    if (c.kind == scenario::ComponentKind::plant && !sc.sources.count(robot_of(c)))
+    if (c.kind == scenario::ComponentKind::plant && c.process.empty() && !sc.sources.count(robot_of(c)))
       robot_hosts.insert({c.host, plant_program.at(robot_of(c))});
   std::vector<Process> sims;
   for (const auto& [key, robots] : robots_by_host) {

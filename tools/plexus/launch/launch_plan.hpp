@@ -31,6 +31,7 @@ struct Process {
   int restarts = 0;
   int priority = 0;  ///< realtime: SCHED_FIFO priority of its loop (scenario `priority`; 0: none)
   int cpu = -1;      ///< realtime: the CPU its loop is pinned to (scenario `cpu`; -1: none)
+  bool has_plant = false;  ///< a loop group with a robot's plant: never restarted
 
   /// The service name the process reports in its heartbeats and DDS participant.
   std::string service() const { return select.empty() ? program : program + " " + select.back(); }
@@ -40,7 +41,8 @@ struct Process {
 
 /// The processes of a scenario: one plant_simulator per host for the robots on that host,
 /// one process per service in the executable of its type, or one per `process` group (in the
-/// executable of its services' type if they share one, else component_host). With `host`
+/// executable of its members' type if they share one, else component_host); a robot in a
+/// loop group (`loops:` with `process`) runs in its group's process. With `host`
 /// set, only those assigned to it (components without a host run on the first host).
 /// Throws InputError when the services of a group disagree on host, vendor or restart policy,
 /// or a group takes another service's name.

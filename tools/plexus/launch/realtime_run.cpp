@@ -15,16 +15,10 @@
 #include "plexus/distributed/realtime.hpp"
 #include "plexus/evaluation/evaluation.hpp"
 #include "plexus/scenario/step_executor.hpp"
+#include "timing_budget.hpp"
 
 namespace plexus::cli {
 namespace {
-
-double percentile_us(std::vector<int64_t> v, double q) {
-  if (v.empty()) return 0.0;
-  const auto k = static_cast<std::size_t>(q * static_cast<double>(v.size() - 1) + 0.5);
-  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(k), v.end());
-  return static_cast<double>(v[k]) * 1e-3;
-}
 
 std::vector<bool> plants_of(const scenario::Scenario& sc) {
   std::vector<bool> plants(sc.components.size(), false);
@@ -39,7 +33,7 @@ class RealtimeMonitor {
  public:
   RealtimeMonitor(scenario::Scenario& sc, rt::Participant& participant, const rt::QosProfiles& profiles,
                   const std::vector<Process>& procs, FaultClock& fault, StatusConsole& console,
-                  const std::map<std::string, int64_t>& host_clock_offset_ns);
+                  const std::map<std::string, int64_t>& host_clock_offset_ns, BudgetCheck* budget);
   /// Every process reports, then is ready (or ready_wait_s passes); throws LockstepError.
   void wait_for_start(double start_timeout_s, double ready_wait_s, const std::atomic<bool>& stop);
   /// Publishes the start signal; returns the monotonic time of tick 0.
@@ -58,6 +52,8 @@ class RealtimeMonitor {
 
   scenario::Scenario& sc_;
   const std::vector<Process>& procs_;
+  BudgetCheck* budget_;                  // the loops' timing budgets (null: not checked)
+  std::vector<int64_t> publish_offset_;  // by signal: the clock offset of its producer's host
   FaultClock& fault_;
   StatusConsole& console_;
   scenario::StepExecutor wiring_;
@@ -91,9 +87,10 @@ class RealtimeMonitor {
 
 RealtimeMonitor::RealtimeMonitor(scenario::Scenario& sc, rt::Participant& participant, const rt::QosProfiles& profiles,
                                  const std::vector<Process>& procs, FaultClock& fault, StatusConsole& console,
-                                 const std::map<std::string, int64_t>& host_clock_offset_ns)
+                                 const std::map<std::string, int64_t>& host_clock_offset_ns, BudgetCheck* budget)
     : sc_(sc),
       procs_(procs),
+      budget_(budget),
       fault_(fault),
       console_(console),
       wiring_(sc, std::vector<bool>(sc.components.size(), false)),
@@ -119,6 +116,14 @@ RealtimeMonitor::RealtimeMonitor(scenario::Scenario& sc, rt::Participant& partic
       for (std::size_t s = 0; s < signals_.size(); ++s)
         if (signals_[s].name == in->signal()) origin_offset_[s] = off->second, corrected_[s] = true;
   }
+  // A sample's publish time is its producer's clock (timing budgets).
+  publish_offset_.assign(signals_.size(), 0);
+  for (std::size_t s = 0; s < signals_.size(); ++s)
+    for (const auto& c : sc.components)
+      if (c.component->name() == signals_[s].producer)
+        if (const auto off = host_clock_offset_ns.find(c.host); off != host_clock_offset_ns.end())
+          publish_offset_[s] = off->second;
+  if (budget_) budget_->bind(signals_);
   rt::QosProfile any = profiles.get("sensor");  // best effort, volatile: matches every producer
   any.depth = 256;
   for (const auto& spec : signals_)
@@ -197,6 +202,7 @@ void RealtimeMonitor::record(const std::atomic<bool>& stop) {
   const int64_t end = t0_ + static_cast<int64_t>((sc_.duration + 2.0) * 1e9);
   while (monotonic_ns() < end && !stop) {
     if (monotonic_ns() - status_at_ >= 1'000'000'000) show_status(monotonic_ns());
+    if (budget_) budget_->conclude(monotonic_ns() - t0_);  // once, after the first second
     const bool any_data = take_samples();
     drain_beats();
     bool all_done = true;
@@ -220,6 +226,8 @@ bool RealtimeMonitor::take_samples() {
       if (sample_.step < 0 || sample_.step > sc_.steps || (!trace.steps.empty() && sample_.step <= trace.steps.back()))
         continue;
       res_.log.record(s, sample_);
+      if (budget_)
+        budget_->sample(s, now - subs_[s]->header().publish_time_ns() + publish_offset_[s], monotonic_ns() - t0_);
       const int64_t origin = subs_[s]->header().origin_time_ns();
       if (origin > distributed::kNoMeasurementOrigin) latency_[s].push_back(now - origin + origin_offset_[s]);
       note_safe_command(s, sample_);
@@ -319,6 +327,7 @@ RealtimeResult RealtimeMonitor::result() {
                                           {"compute_p99_us", hb.compute_p99_us()}};
   }
   if (fault_.killed_ns.load()) res_.fault = fault_record();
+  if (budget_) res_.loops = budget_->record();
   for (std::size_t s : commands_) {
     res_.latency[signals_[s].name] = {{"samples", latency_[s].size()},
                                       {"p50_us", percentile_us(latency_[s], 0.5)},
@@ -335,8 +344,8 @@ RealtimeResult RealtimeMonitor::result() {
 RealtimeResult run_realtime(scenario::Scenario& sc, rt::Participant& participant, const rt::QosProfiles& profiles,
                             const std::vector<Process>& procs, double start_timeout_s, double ready_wait_s,
                             FaultClock& fault, StatusConsole& console, const std::atomic<bool>& stop,
-                            const std::map<std::string, int64_t>& host_clock_offset_ns) {
-  RealtimeMonitor monitor(sc, participant, profiles, procs, fault, console, host_clock_offset_ns);
+                            const std::map<std::string, int64_t>& host_clock_offset_ns, BudgetCheck* budget) {
+  RealtimeMonitor monitor(sc, participant, profiles, procs, fault, console, host_clock_offset_ns, budget);
   monitor.wait_for_start(start_timeout_s, ready_wait_s, stop);
   monitor.start();
   monitor.record(stop);

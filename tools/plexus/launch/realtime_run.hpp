@@ -12,6 +12,7 @@
 
 #include "launch_plan.hpp"
 #include "status_console.hpp"
+#include "timing_budget.hpp"
 #include "plexus/runtime/participant.hpp"
 #include "plexus/runtime/qos.hpp"
 #include "plexus/scenario/signal_log.hpp"
@@ -25,6 +26,7 @@ struct RealtimeResult {
   nlohmann::ordered_json services = nlohmann::ordered_json::object();
   nlohmann::ordered_json latency = nlohmann::ordered_json::object();
   nlohmann::ordered_json fault = nlohmann::ordered_json::object();
+  nlohmann::ordered_json loops = nlohmann::ordered_json::object();  ///< BudgetCheck::record()
   double wall = 0;
   int64_t all_running_ns = 0;  ///< monotonic time every process had reported (its first heartbeat)
 };
@@ -45,9 +47,12 @@ struct FaultClock {
 /// `host_clock_offset_ns`: each other host's clock minus this one's (plexus launch over ssh);
 /// the sensor-to-command latency of a robot on such a host is corrected by it (the sample's
 /// origin time is that host's clock, the arrival this one's), and says so in its record.
+/// `budget`: the loops' timing budgets, measured over the first second (timing_budget.hpp);
+/// it throws BudgetError out of here when strict and a loop does not fit.
 RealtimeResult run_realtime(scenario::Scenario& sc, rt::Participant& participant, const rt::QosProfiles& profiles,
                             const std::vector<Process>& procs, double start_timeout_s, double ready_wait_s,
                             FaultClock& fault, StatusConsole& console, const std::atomic<bool>& stop,
-                            const std::map<std::string, int64_t>& host_clock_offset_ns = {});
+                            const std::map<std::string, int64_t>& host_clock_offset_ns = {},
+                            BudgetCheck* budget = nullptr);
 
 }  // namespace plexus::cli

@@ -8,8 +8,10 @@
 #include <thread>
 
 #include "lockstep_status.hpp"
+#include "timing_budget.hpp"
 #include "stages.hpp"
 #include "plexus/base/clock.hpp"
+#include "plexus/base/input_error.hpp"
 #include "plexus/distributed/lockstep.hpp"
 #include "plexus/evaluation/run_folder.hpp"
 
@@ -33,6 +35,8 @@ std::optional<int> run_to_end(LaunchRun& run, const std::function<void()>& body)
   } catch (const distributed::LockstepError& e) {
     if (g_launch_signal) return run.interrupted();
     return run.failure(e.what());
+  } catch (const BudgetError& e) {  // --strict: a placement that cannot fit a loop's budget
+    return run.failure(e.what(), kExitBadInput);
   }
   if (g_launch_signal) return run.interrupted();
   run.stop_all();
@@ -71,8 +75,9 @@ std::optional<int> run_realtime_launch(const LaunchOptions& o, LaunchPlan& plan,
     for (const auto& h : plan.remote_hosts) host_offsets[h] = run.remotes->offset(h).offset_ns;
     // Readiness (inputs matched) is awaited for half the services' own wait for the start
     // signal (--timeout), so that they always get it before they give up.
+    BudgetCheck budget(loop_budgets(plan.sc, plan.everywhere), o.strict);
     out = run_realtime(plan.sc, *run.participant, plan.profiles, all, 30.0, o.timeout / 2, run.fault, *run.console,
-                       g_launch_stop, host_offsets);
+                       g_launch_stop, host_offsets, &budget);
     run.startup_s = static_cast<double>(out.all_running_ns - plan.command_ns) * 1e-9;
     run.run_active = false;
     run.console->clear();

@@ -57,6 +57,7 @@ int summarise_realtime(const LaunchOptions& o, const LaunchPlan& plan, LaunchRun
   for (const auto& p : plan.procs)
     if (p.restarts) restarts[p.service()] = p.restarts;
   summary.extra["restarts"] = restarts;
+  if (!r.loops.empty()) summary.extra["loops"] = r.loops;  // the timing budgets (timing_budget.hpp)
   if (!r.fault.empty()) {
     r.fault["killed"] = run.supervisor->killed();
     summary.extra["fault"] = r.fault;

@@ -105,8 +105,8 @@ struct LaunchRun {
   /// last log lines. Repeatable.
   void stop_all();
   /// Ends a failed run: everything stopped, the run folder marked failed with the cause (a
-  /// lost host, else a process that died, else `what`), one line. Returns done(1).
-  int failure(const std::string& what);
+  /// lost host, else a process that died, else `what`), one line. Returns done(rc).
+  int failure(const std::string& what, int rc = 1);
   /// Ends a run stopped by SIGINT or SIGTERM (interrupted_run). Returns done(128 + signal).
   int interrupted();
   /// True when another host was lost (its share failed or its session ended).

@@ -89,6 +89,20 @@ struct ScenarioSecurity {
   std::map<std::string, std::string> identity_where;  ///< process -> "file:line: security.identities.<process>"
 };
 
+/// A closed loop of the scenario (top-level `loops:`, docs/distributed.md, "Loops"): its
+/// members, the budget a realtime placement must fit (checked by `plexus launch`), and
+/// optionally the one process its members run in (a loop group, as ros2_control keeps a
+/// controller and its hardware interface in one loop).
+struct ScenarioLoop {
+  std::string name;
+  std::string where;                 ///< "file:line: loops.<name>", for messages
+  std::vector<std::size_t> members;  ///< indices in Scenario::components: robots' plants and sensors, services
+  /// Non-empty: every member runs in one process of this name under `plexus launch`, on one
+  /// tick, its signals passed in memory (each still published for the other processes).
+  std::string process;
+  double deadline_s = 0.0;  ///< `deadline`, or the period of its fastest member
+};
+
 struct ScenarioMetric {
   std::string name;
   std::string type;
@@ -134,6 +148,7 @@ struct Scenario {
   std::map<std::string, HostAccess> host_access;
   /// In execution order: by stage (ComponentKind), then in document order.
   std::vector<ScenarioComponent> components;
+  std::vector<ScenarioLoop> loops;  ///< top-level `loops:`, in document order
   std::vector<SignalSpec> signals;  ///< every signal, in component order (then external inputs)
   /// A part of a scenario (one process's components, or one service on its own): inputs no
   /// component produces are read from other processes, scheduled by `inputs` (else at the
