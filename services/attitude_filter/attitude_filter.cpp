@@ -17,10 +17,10 @@
 //   docs/distributed.md, "Late samples"): the realtime host runs each step once its IMU
 //   sample has arrived; a sample that never came in time (a newer one arrived first) is
 //   bridged by a prediction over its period with the held torque before the newer sample's
-//   cycle, so the filter's time stays the samples' (gaps counts the periods bridged). Its model is its own parameters, with
-//   the plant's and the sensor's key names and defaults: body_mass, com_height,
-//   body_inertia, wheel_mass, wheel_radius, wheel_inertia, gravity, max_torque, and the
-//   IMU's gamma1, gamma2_degps2, gyro_range_degps, accel_height.
+//   cycle, so the filter's time stays the samples' (gaps counts the periods bridged). Its model is its own parameters,
+//   with the plant's and the sensor's key names and defaults: body_mass, com_height, body_inertia, wheel_mass,
+//   wheel_radius, wheel_inertia, gravity, max_torque, and the IMU's gamma1, gamma2_degps2, gyro_range_degps,
+//   accel_height.
 #include <cmath>
 #include <memory>
 
@@ -54,7 +54,9 @@ class AttitudeFilterComponent final : public Component {
         imu_(add_input("imu", {"acc_x", "acc_z", "gyro"}, "Imu")),
         cmd_(add_input("cmd", {"torque"}, "WheelTorqueCommand")),
         out_(add_output("attitude", {"theta", "theta_dot", "drift", "theta_std"}, "AttitudeEstimate")),
-        filter_(params(c)), base_step_(c.base_step), imu_dt_(imu_period(c)) {}
+        filter_(params(c)),
+        base_step_(c.base_step),
+        imu_dt_(imu_period(c)) {}
 
   uint64_t dropped_late_samples() const override { return gaps_; }
 
@@ -64,7 +66,8 @@ class AttitudeFilterComponent final : public Component {
       // IMU periods between the previous sample and this one that brought no sample (0 in
       // `plexus sim` and lockstep): predicted over, then this sample's cycle.
       if (last_imu_step_ >= 0) {
-        const auto missed = std::llround(static_cast<double>(imu_.sample().step - last_imu_step_) * base_step_ / imu_dt_) - 1;
+        const auto missed =
+            std::llround(static_cast<double>(imu_.sample().step - last_imu_step_) * base_step_ / imu_dt_) - 1;
         for (long long i = 0; i < missed; ++i) filter_.predict(cmd_.valid() ? cmd_[0] : 0.0);
         if (missed > 0) gaps_ += static_cast<uint64_t>(missed);
       }
@@ -131,7 +134,8 @@ class AttitudeFilterComponent final : public Component {
 
 const ComponentRegistration kFilter{
     "attitude_filter", ComponentKind::estimator,
-    "tilt / rate / gyro-drift UKF (augmented, additive) or EKF (paper 002); out attitude {theta, theta_dot, drift, theta_std}",
+    "tilt / rate / gyro-drift UKF (augmented, additive) or EKF (paper 002); out attitude {theta, theta_dot, drift, "
+    "theta_std}",
     [](const ComponentConfig& c) { return std::make_unique<AttitudeFilterComponent>(c); }};
 
 }  // namespace

@@ -44,7 +44,6 @@ struct SharedCounters {
   std::atomic<double> latency_p50_us{0}, latency_p99_us{0}, latency_max_us{0};
 };
 
-
 }  // namespace
 
 struct Bridge::Impl {
@@ -79,7 +78,8 @@ struct Bridge::Impl {
     heartbeat = p.publisher<msg::Heartbeat>(distributed::health_topic(opt.service), profiles.get("health"));
     hb = distributed::heartbeat_of(opt.service, routes.robot);
     int fds[2];
-    if (pipe2(fds, O_NONBLOCK | O_CLOEXEC) != 0) throw std::runtime_error(std::string("pipe2: ") + std::strerror(errno));
+    if (pipe2(fds, O_NONBLOCK | O_CLOEXEC) != 0)
+      throw std::runtime_error(std::string("pipe2: ") + std::strerror(errno));
     pipe_r = fds[0];
     pipe_w = fds[1];
   }
@@ -143,8 +143,8 @@ struct Bridge::Impl {
     std::size_t bad = 0;
     if (const auto why = r.publisher->wire().check(sample, bad); why != distributed::Rejection::none) {
       c.rejected_frames.fetch_add(1, std::memory_order_relaxed);
-      warn("{}: frame 0x{:02x} for {} refused: {} ({} = {})", opt.service, f.id, r.spec->name, distributed::to_string(why),
-           r.layout->fields[bad], sample.values[bad]);
+      warn("{}: frame 0x{:02x} for {} refused: {} ({} = {})", opt.service, f.id, r.spec->name,
+           distributed::to_string(why), r.layout->fields[bad], sample.values[bad]);
       return;
     }
     r.publisher->publish_at(sample, arrived_wall, arrived_wall);

@@ -30,7 +30,7 @@
 namespace plexus::bridge {
 
 struct BridgeOptions {
-  std::string service;         ///< heartbeat and log name
+  std::string service;          ///< heartbeat and log name
   double link_timeout_s = 0.5;  ///< no valid frame for this long: link down, heartbeat DEGRADED
   double retry_s = 0.5;         ///< between attempts to open an absent device
 };
@@ -39,7 +39,7 @@ struct BridgeOptions {
 struct BridgeReport {
   msg::LinkStatus link;
   uint64_t commands_forwarded = 0;  ///< command frames the device took
-  uint64_t commands_refused = 0;  ///< edge check
+  uint64_t commands_refused = 0;    ///< edge check
   double run_s = 0;
 };
 

@@ -17,11 +17,11 @@
 #include <cstdio>
 
 #include "bridge.hpp"
-#include "plexus/link/serial_port.hpp"
-#include "plexus/link/udp_socket.hpp"
 #include "plexus/base/input_error.hpp"
 #include "plexus/base/logging.hpp"
 #include "plexus/base/teardown_deadline.hpp"
+#include "plexus/link/serial_port.hpp"
+#include "plexus/link/udp_socket.hpp"
 #include "plexus/scenario/overrides.hpp"
 #include "plexus/service/dds_options.hpp"
 #include "plexus/service/standalone.hpp"
@@ -35,12 +35,23 @@ constexpr std::string_view kName = PLEXUS_BRIDGE_KIND;
 constexpr bool kSerial = kName == "serial_bridge";
 
 nlohmann::ordered_json link_json(const plexus::msg::LinkStatus& s) {
-  return {{"up", s.state() == plexus::msg::LINK_UP}, {"frames_in", s.frames_in()}, {"frames_out", s.frames_out()}, {"crc_errors", s.crc_errors()},
-          {"framing_errors", s.framing_errors()}, {"oversize", s.oversize()}, {"resyncs", s.resyncs()},
-          {"bytes_discarded", s.bytes_discarded()}, {"rejected_frames", s.rejected_frames()},
-          {"reconnects", s.reconnects()}, {"disconnects", s.disconnects()}, {"stale_commands", s.stale_commands()},
-          {"stop_frames", s.stop_frames()}, {"tx_errors", s.tx_errors()}, {"latency_p50_us", s.latency_p50_us()},
-          {"latency_p99_us", s.latency_p99_us()}, {"latency_max_us", s.latency_max_us()}};
+  return {{"up", s.state() == plexus::msg::LINK_UP},
+          {"frames_in", s.frames_in()},
+          {"frames_out", s.frames_out()},
+          {"crc_errors", s.crc_errors()},
+          {"framing_errors", s.framing_errors()},
+          {"oversize", s.oversize()},
+          {"resyncs", s.resyncs()},
+          {"bytes_discarded", s.bytes_discarded()},
+          {"rejected_frames", s.rejected_frames()},
+          {"reconnects", s.reconnects()},
+          {"disconnects", s.disconnects()},
+          {"stale_commands", s.stale_commands()},
+          {"stop_frames", s.stop_frames()},
+          {"tx_errors", s.tx_errors()},
+          {"latency_p50_us", s.latency_p50_us()},
+          {"latency_p99_us", s.latency_p99_us()},
+          {"latency_max_us", s.latency_max_us()}};
 }
 
 }  // namespace
@@ -78,7 +89,8 @@ int main(int argc, char** argv) {
   }
   app.add_option("--link-timeout", link_timeout, "Seconds without a valid frame before the link is down (default 0.5)");
   net.add_to(app);
-  app.add_option("--mode", mode, "realtime only (a bridge follows its device's clock)")->check(CLI::IsMember({"realtime", "lockstep"}));
+  app.add_option("--mode", mode, "realtime only (a bridge follows its device's clock)")
+      ->check(CLI::IsMember({"realtime", "lockstep"}));
   app.add_flag("--start-signal", start_signal, "Accepted for plexus launch; a bridge starts at once");
   app.add_option("--timeout", timeout, "Accepted for plexus launch (lockstep only)");
   app.add_option("--log-level", log_level, "trace, debug, info, warn, error");
@@ -92,11 +104,14 @@ int main(int argc, char** argv) {
   std::signal(SIGTERM, on_signal);
   try {
     init_logging(name.c_str(), "", log_level);
-    if (mode != "realtime") throw InputError("--mode " + mode + ": a bridge runs in realtime only (its device keeps time)");
+    if (mode != "realtime")
+      throw InputError("--mode " + mode + ": a bridge runs in realtime only (its device keeps time)");
     scenario::Scenario sc;
     if (!part_file.empty()) {
       if (!device.empty() || baud || !bind.empty() || !peer.empty() || retry > 0 || link_timeout > 0)
-        throw InputError("--part: the link comes from the part's `source:`; drop --device/--baud/--bind/--peer/--retry/--link-timeout");
+        throw InputError(
+            "--part: the link comes from the part's `source:`; drop "
+            "--device/--baud/--bind/--peer/--retry/--link-timeout");
       std::vector<scenario::Override> overrides;
       for (const auto& s : sets) overrides.push_back(scenario::parse_override(s));
       sc = scenario::load_scenario(part_file, overrides, {.partial = true});
@@ -107,7 +122,8 @@ int main(int argc, char** argv) {
       std::string error;
       link::UdpEndpoint endpoint;
       if (baud && !link::supported_baud(baud))
-        throw InputError("--baud " + std::to_string(baud) + ": expected 115200, 230400, 460800, 500000, 576000, 921600 or 1000000");
+        throw InputError("--baud " + std::to_string(baud) +
+                         ": expected 115200, 230400, 460800, 500000, 576000, 921600 or 1000000");
       if (!bind.empty() && !link::parse_endpoint(bind, "--bind", endpoint, error)) throw InputError(error);
       if (!peer.empty() && !link::parse_endpoint(peer, "--peer", endpoint, error)) throw InputError(error);
       if (retry < 0 || link_timeout < 0) throw InputError("--retry and --link-timeout: expected seconds > 0");
@@ -132,7 +148,8 @@ int main(int argc, char** argv) {
       throw InputError(sc.file + ": a bridge serves exactly one robot whose `source` is " + name);
     const auto& [robot, src] = *sc.sources.begin();
     if (scenario::to_string(src.type) != name)
-      throw InputError(src.where + ": robot " + robot + "'s source is " + scenario::to_string(src.type) + ", not " + name);
+      throw InputError(src.where + ": robot " + robot + "'s source is " + scenario::to_string(src.type) + ", not " +
+                       name);
     auto link = kSerial ? bridge::serial_link(src.device, src.baud) : bridge::udp_link(src.bind, src.peer, src.where);
 
     const rt::ParticipantOptions po = net.participant(name + " " + robot, name);
@@ -141,8 +158,11 @@ int main(int argc, char** argv) {
     bridge::Bridge b(sc, *participant, profiles, std::move(link),
                      {.service = po.name, .link_timeout_s = src.link_timeout_s, .retry_s = src.retry_s});
     const auto r = b.run(g_stop);
-    nlohmann::ordered_json j{{"service", po.name}, {"run_s", r.run_s}, {"commands_forwarded", r.commands_forwarded},
-                             {"commands_refused", r.commands_refused}, {"link", link_json(r.link)}};
+    nlohmann::ordered_json j{{"service", po.name},
+                             {"run_s", r.run_s},
+                             {"commands_forwarded", r.commands_forwarded},
+                             {"commands_refused", r.commands_refused},
+                             {"link", link_json(r.link)}};
     std::printf("%s\n", j.dump().c_str());
     std::fflush(stdout);
     return exit_within(0, kTeardownDeadlineS, name);  // armed before the bridge and participant go

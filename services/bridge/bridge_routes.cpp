@@ -36,8 +36,8 @@ BridgeRoutes make_routes(scenario::Scenario& sc, rt::Participant& p, const rt::Q
     SensorRoute route;
     route.layout = layout;
     route.spec = framed_spec(spec, *layout);
-    route.publisher = std::make_unique<distributed::WirePublisher>(p, *route.spec, step,
-                                                                   distributed::signal_qos(sc, spec.producer, profiles));
+    route.publisher = std::make_unique<distributed::WirePublisher>(
+        p, *route.spec, step, distributed::signal_qos(sc, spec.producer, profiles));
     r.sensor_by_id[layout->id] = static_cast<int16_t>(r.sensors.size());
     r.sensors.push_back(std::move(route));
   }

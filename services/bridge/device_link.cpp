@@ -54,7 +54,8 @@ std::unique_ptr<DeviceLink> serial_link(std::string device, long baud) {
 std::unique_ptr<DeviceLink> udp_link(const std::string& bind, const std::string& peer, const std::string& where) {
   link::UdpEndpoint local, remote;
   std::string error;
-  if (!link::parse_endpoint(bind, where + ".bind", local, error) || !link::parse_endpoint(peer, where + ".peer", remote, error))
+  if (!link::parse_endpoint(bind, where + ".bind", local, error) ||
+      !link::parse_endpoint(peer, where + ".peer", remote, error))
     throw InputError(error);
   return std::make_unique<UdpLink>(std::move(local), std::move(remote));
 }

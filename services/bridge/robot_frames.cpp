@@ -46,8 +46,8 @@ RobotFrames robot_frames(const scenario::Scenario& sc, const scenario::StepExecu
   if (commands.size() > 1) {
     std::string names;
     for (std::size_t s : commands) names += (names.empty() ? "" : ", ") + signals[s].name;
-    throw InputError(sc.file + ": robot " + f.robot + " reads " + std::to_string(commands.size()) + " signals (" + names +
-                     ") from other processes; " + who + " takes exactly one command");
+    throw InputError(sc.file + ": robot " + f.robot + " reads " + std::to_string(commands.size()) + " signals (" +
+                     names + ") from other processes; " + who + " takes exactly one command");
   }
   if (commands.size() == 1) {
     const auto& spec = signals[commands.front()];

@@ -10,11 +10,14 @@ Eigen::VectorXd number_list(const YamlMap& p, const std::string& key, int n, con
   const auto items = p.sequence(key);
   if (static_cast<int>(items.size()) != n) p.fail(key, "needs " + std::to_string(n) + " numbers (one per joint)");
   Eigen::VectorXd v(n);
-  for (int i = 0; i < n; ++i) v(i) = number(p, items[static_cast<std::size_t>(i)], key);  // finite, or an error naming it
+  for (int i = 0; i < n; ++i)
+    v(i) = number(p, items[static_cast<std::size_t>(i)], key);  // finite, or an error naming it
   return v;
 }
 
-void read_into(const YamlMap& p, const std::string& key, Eigen::VectorXd& v) { v = number_list(p, key, static_cast<int>(v.size()), v); }
+void read_into(const YamlMap& p, const std::string& key, Eigen::VectorXd& v) {
+  v = number_list(p, key, static_cast<int>(v.size()), v);
+}
 
 algorithms::ArmModel read_model(const YamlMap& p) {
   namespace alg = plexus::algorithms;
@@ -29,7 +32,8 @@ algorithms::ArmModel read_model(const YamlMap& p) {
   } else {
     p.fail("model", "must be paper_2dof or uniform");
   }
-  if (preset == "paper_2dof" && p.has("dof") && p.optional<int>("dof", 2) != 2) p.fail("dof", "is 2 for model paper_2dof");
+  if (preset == "paper_2dof" && p.has("dof") && p.optional<int>("dof", 2) != 2)
+    p.fail("dof", "is 2 for model paper_2dof");
   const int n = m.dof();
   auto apply = [&](const std::string& key, auto member, auto& items) {
     Eigen::VectorXd current(n);

@@ -17,7 +17,9 @@ namespace alg = plexus::algorithms;
 class FigureEightComponent final : public Component {
  public:
   explicit FigureEightComponent(const ComponentConfig& c)
-      : Component(c), ref_(params(c.params())), out_(add_output("reference", {"x", "y", "dx", "dy", "ddx", "ddy"}, "PlanarReference")) {}
+      : Component(c),
+        ref_(params(c.params())),
+        out_(add_output("reference", {"x", "y", "dx", "dy", "ddx", "ddy"}, "PlanarReference")) {}
 
   void step(int64_t /*k*/, double t) override {
     const alg::ReferenceSample r = ref_.sample(t);
@@ -43,9 +45,10 @@ class FigureEightComponent final : public Component {
   OutputPort& out_;
 };
 
-const ComponentRegistration kFigureEight{"figure_eight_reference", ComponentKind::reference,
-                                         "figure-eight h1 sin(2 h2 (t+t0)), h1 sin(h2 (t+t0)) (paper 000 eq. (51))",
-                                         [](const ComponentConfig& c) { return std::make_unique<FigureEightComponent>(c); }};
+const ComponentRegistration kFigureEight{
+    "figure_eight_reference", ComponentKind::reference,
+    "figure-eight h1 sin(2 h2 (t+t0)), h1 sin(h2 (t+t0)) (paper 000 eq. (51))",
+    [](const ComponentConfig& c) { return std::make_unique<FigureEightComponent>(c); }};
 
 }  // namespace
 }  // namespace plexus::scenario

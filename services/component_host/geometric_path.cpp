@@ -28,7 +28,9 @@ namespace alg = plexus::algorithms;
 class GeometricPathComponent final : public Component {
  public:
   explicit GeometricPathComponent(const ComponentConfig& c)
-      : Component(c), path_(shape(c.params())), in_(add_input("position", {"x", "y"}, "PositionMeasurement")),
+      : Component(c),
+        path_(shape(c.params())),
+        in_(add_input("position", {"x", "y"}, "PositionMeasurement")),
         out_(add_output("path", {"x", "y", "h", "hx", "hy", "hxx", "hxy", "hyy"}, "PathSample")) {}
 
   void step(int64_t /*k*/, double /*t*/) override {
@@ -41,8 +43,8 @@ class GeometricPathComponent final : public Component {
       if (!(g2 > 1e-12)) break;
       q -= eq.h / g2 * eq.gradient;
     }
-    const double v[] = {q.x(), q.y(), e.h, e.gradient.x(), e.gradient.y(), e.hessian(0, 0), e.hessian(0, 1),
-                        e.hessian(1, 1)};
+    const double v[] = {q.x(),           q.y(),          e.h, e.gradient.x(), e.gradient.y(), e.hessian(0, 0),
+                        e.hessian(0, 1), e.hessian(1, 1)};
     for (std::size_t i = 0; i < 8; ++i) out_[i] = v[i];
   }
 
@@ -64,8 +66,10 @@ class GeometricPathComponent final : public Component {
         // Through number(), checked whole and in range before the conversion: yaml-cpp's
         // as<int>() threw its own exception for a word, and took 1e10.
         const double di = number(p, term[0], "terms"), dj = number(p, term[1], "terms");
-        if (di != std::floor(di) || dj != std::floor(dj) || di < 0 || dj < 0 || di + dj > alg::PolynomialPath::kMaxDegree)
-          p.fail("terms", "powers must be whole numbers >= 0 with i + j <= " + std::to_string(alg::PolynomialPath::kMaxDegree));
+        if (di != std::floor(di) || dj != std::floor(dj) || di < 0 || dj < 0 ||
+            di + dj > alg::PolynomialPath::kMaxDegree)
+          p.fail("terms",
+                 "powers must be whole numbers >= 0 with i + j <= " + std::to_string(alg::PolynomialPath::kMaxDegree));
         poly.c(static_cast<int>(di), static_cast<int>(dj)) += number(p, term[2], "terms");
       }
       return poly;
@@ -78,9 +82,9 @@ class GeometricPathComponent final : public Component {
   OutputPort& out_;
 };
 
-const ComponentRegistration kGeometricPath{"geometric_path", ComponentKind::reference,
-                                           "path h(x, y) = 0 and its derivatives at the position (paper 003)",
-                                           [](const ComponentConfig& c) { return std::make_unique<GeometricPathComponent>(c); }};
+const ComponentRegistration kGeometricPath{
+    "geometric_path", ComponentKind::reference, "path h(x, y) = 0 and its derivatives at the position (paper 003)",
+    [](const ComponentConfig& c) { return std::make_unique<GeometricPathComponent>(c); }};
 
 }  // namespace
 }  // namespace plexus::scenario

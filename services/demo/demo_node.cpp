@@ -115,7 +115,8 @@ int run_source(rt::Participant& p, const rt::QosProfile& qos, double rate, int c
     }
     // After the last ping, wait for the missing echoes until 5 s pass without one (a loaded
     // machine can stall a process for a while; a lost sample is reported, not waited for forever).
-    return !g_stop && (sent < count || (static_cast<int>(rtt.size()) < count && monotonic_ns() - last_rx < 5'000'000'000));
+    return !g_stop &&
+           (sent < count || (static_cast<int>(rtt.size()) < count && monotonic_ns() - last_rx < 5'000'000'000));
   });
   const double elapsed = static_cast<double>(last_rx - t0) * 1e-9;
   const auto ls = loop.stats();
@@ -172,7 +173,8 @@ int main(int argc, char** argv) {
     const auto profiles = rt::QosProfiles::load(qos_file.empty() ? rt::default_qos_file() : qos_file);
     const auto& qos = profiles.get(profile);
     auto participant = rt::Participant::create(po);
-    const int rc = role == "echo" ? run_echo(*participant, qos, duration) : run_source(*participant, qos, rate, count, timeout);
+    const int rc =
+        role == "echo" ? run_echo(*participant, qos, duration) : run_source(*participant, qos, rate, count, timeout);
     return exit_within(rc, kTeardownDeadlineS, "demo_node");
   } catch (const InputError& e) {
     std::fprintf(stderr, "demo_node: error: %s\n", e.what());

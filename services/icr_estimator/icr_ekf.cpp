@@ -53,7 +53,8 @@ namespace {
 namespace alg = plexus::algorithms;
 
 template <int N>
-Eigen::Matrix<double, N, 1> optional_vector(const YamlMap& p, const std::string& key, const Eigen::Matrix<double, N, 1>& fallback) {
+Eigen::Matrix<double, N, 1> optional_vector(const YamlMap& p, const std::string& key,
+                                            const Eigen::Matrix<double, N, 1>& fallback) {
   if (!p.has(key)) return fallback;
   const auto v = numbers(p, p.node(key), key, N);
   return Eigen::Map<const Eigen::Matrix<double, N, 1>>(v.data());
@@ -101,14 +102,20 @@ bool prior_mode(const YamlMap& p) {
 class IcrEkfComponent final : public Component {
  public:
   explicit IcrEkfComponent(const ComponentConfig& c)
-      : Component(c), ekf_(ekf_params(c.params())), adaptive_(c.params().optional<bool>("adaptive_reset", false)),
-        detector_(c.params().optional<int>("consecutive_windows", 2)), dt_(c.period()),
-        wheels_(add_input("wheels", {"v_l", "v_r"}, "TrackSpeeds")), gps_(add_input("gps", {"x", "y", "theta"}, "Pose2D")),
+      : Component(c),
+        ekf_(ekf_params(c.params())),
+        adaptive_(c.params().optional<bool>("adaptive_reset", false)),
+        detector_(c.params().optional<int>("consecutive_windows", 2)),
+        dt_(c.period()),
+        wheels_(add_input("wheels", {"v_l", "v_r"}, "TrackSpeeds")),
+        gps_(add_input("gps", {"x", "y", "theta"}, "Pose2D")),
         classes_(adaptive_ ? &add_input("terrain", {"class", "windows"}, "TerrainClass") : nullptr),
         out_(add_output("icr", {"x", "y", "theta", "y_l", "y_r", "x_G", "resets", "sd_y_l", "sd_y_r", "sd_x_G"},
                         "IcrEstimate")),
-        prior_(prior_mode(c.params())), library_(library_of(c, prior_)),
-        check_updates_(c.params().optional<int>("prior_check_updates", 60)), shadow_(ekf_) {
+        prior_(prior_mode(c.params())),
+        library_(library_of(c, prior_)),
+        check_updates_(c.params().optional<int>("prior_check_updates", 60)),
+        shadow_(ekf_) {
     if (prior_ && !adaptive_) c.params().fail("reset_mode", "prior needs adaptive_reset: true");
     if (check_updates_ < 1) c.params().fail("prior_check_updates", "must be >= 1");
     write();
@@ -204,8 +211,8 @@ class IcrEkfComponent final : public Component {
   bool prior_;
   alg::TerrainIcrLibrary library_;
   int check_updates_;
-  alg::IcrEkf shadow_;   ///< the paper's covariance reset, run beside a prior reset during its check
-  int checking_ = 0;     ///< updates left in the check of the last prior reset
+  alg::IcrEkf shadow_;  ///< the paper's covariance reset, run beside a prior reset during its check
+  int checking_ = 0;    ///< updates left in the check of the last prior reset
   double nis_prior_ = 0.0;
   double nis_paper_ = 0.0;
   long fallbacks_ = 0;

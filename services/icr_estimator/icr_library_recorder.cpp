@@ -29,9 +29,12 @@ namespace alg = plexus::algorithms;
 class IcrLibraryRecorderComponent final : public Component {
  public:
   explicit IcrLibraryRecorderComponent(const ComponentConfig& c)
-      : Component(c), path_(scenario_relative_path(c, "output")), settle_s_(c.params().optional<double>("settle_s", 15.0)),
+      : Component(c),
+        path_(scenario_relative_path(c, "output")),
+        settle_s_(c.params().optional<double>("settle_s", 15.0)),
         icr_(add_input("icr", {"y_l", "y_r", "x_G", "sd_y_l", "sd_y_r", "sd_x_G"}, "IcrEstimate")),
-        truth_(add_input("truth/state", {"terrain"}, "SkidSteerTruth")), out_(add_output("recorder", {"samples"}, "")) {
+        truth_(add_input("truth/state", {"terrain"}, "SkidSteerTruth")),
+        out_(add_output("recorder", {"samples"}, "")) {
     if (!(settle_s_ >= 0.0)) c.params().fail("settle_s", "must be >= 0");
     if (c.params().has("class_names")) {
       int i = 0;
@@ -74,7 +77,8 @@ class IcrLibraryRecorderComponent final : public Component {
 };
 
 const ComponentRegistration kRecorder{
-    "icr_library_recorder", ComponentKind::estimator, "learns each terrain's converged ICRs into a terrain ICR library file",
+    "icr_library_recorder", ComponentKind::estimator,
+    "learns each terrain's converged ICRs into a terrain ICR library file",
     [](const ComponentConfig& c) { return std::make_unique<IcrLibraryRecorderComponent>(c); }};
 
 }  // namespace

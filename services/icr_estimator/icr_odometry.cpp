@@ -22,7 +22,10 @@ namespace alg = plexus::algorithms;
 class IcrOdometryComponent final : public Component {
  public:
   explicit IcrOdometryComponent(const ComponentConfig& c)
-      : Component(c), model_(model(c.params())), start_(c.params().optional<double>("start", 0.0)), h_(c.period()),
+      : Component(c),
+        model_(model(c.params())),
+        start_(c.params().optional<double>("start", 0.0)),
+        h_(c.period()),
         wheels_(add_input("wheels", {"v_l", "v_r"}, "TrackSpeeds")),
         truth_(add_input("truth/state", {"x", "y", "theta"}, "SkidSteerTruth")),
         estimate_(model_ == Model::kEstimated ? &add_input("icr", {"y_l", "y_r", "x_G"}, "IcrEstimate") : nullptr),
@@ -73,9 +76,9 @@ class IcrOdometryComponent final : public Component {
   OutputPort& out_;
 };
 
-const ComponentRegistration kOdometry{"icr_odometry", ComponentKind::estimator,
-                                      "dead reckoning with the no-slip, a fixed or the estimated ICR model",
-                                      [](const ComponentConfig& c) { return std::make_unique<IcrOdometryComponent>(c); }};
+const ComponentRegistration kOdometry{
+    "icr_odometry", ComponentKind::estimator, "dead reckoning with the no-slip, a fixed or the estimated ICR model",
+    [](const ComponentConfig& c) { return std::make_unique<IcrOdometryComponent>(c); }};
 
 }  // namespace
 }  // namespace plexus::scenario

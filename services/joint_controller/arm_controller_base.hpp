@@ -23,10 +23,12 @@ class ArmControllerBase : public Component {
   ArmControllerBase(const ComponentConfig& c, int n)
       : Component(c),
         n_(n),
-        ref_(add_input("reference", concat({names("q", n), names("dq", n), names("ddq", n), names("dddq", n)}), "JointReference")),
+        ref_(add_input("reference", concat({names("q", n), names("dq", n), names("ddq", n), names("dddq", n)}),
+                       "JointReference")),
         est_(add_input("estimate", estimate_fields(n), "LinkJointState")),
         cmd_(add_output("cmd", names("u", n), "JointCommand")) {
-    if (n > kMaxScenarioDof) c.params().fail("model", "has " + std::to_string(n) + " joints; at most " + std::to_string(kMaxScenarioDof));
+    if (n > kMaxScenarioDof)
+      c.params().fail("model", "has " + std::to_string(n) + " joints; at most " + std::to_string(kMaxScenarioDof));
     const Eigen::VectorXd z = Eigen::VectorXd::Zero(n);
     sample_ = {z, z, z, z};
     fb_ = algorithms::ArmFeedback::zero(n);
@@ -38,9 +40,11 @@ class ArmControllerBase : public Component {
     for (int i = 0; i < n_; ++i) {
       const auto a = static_cast<std::size_t>(i);
       const auto n = static_cast<std::size_t>(n_);
-      sample_.q(i) = ref_[a], sample_.qd(i) = ref_[n + a], sample_.qdd(i) = ref_[2 * n + a], sample_.qddd(i) = ref_[3 * n + a];
+      sample_.q(i) = ref_[a], sample_.qd(i) = ref_[n + a], sample_.qdd(i) = ref_[2 * n + a],
+      sample_.qddd(i) = ref_[3 * n + a];
       fb_.q(i) = est_[a], fb_.qd(i) = est_[n + a], fb_.qdd(i) = est_[2 * n + a], fb_.qddd(i) = est_[3 * n + a];
-      fb_.tau(i) = est_[4 * n + a], fb_.taud(i) = est_[5 * n + a], fb_.phi(i) = est_[6 * n + a], fb_.phid(i) = est_[7 * n + a];
+      fb_.tau(i) = est_[4 * n + a], fb_.taud(i) = est_[5 * n + a], fb_.phi(i) = est_[6 * n + a],
+      fb_.phid(i) = est_[7 * n + a];
     }
     return true;
   }

@@ -42,13 +42,14 @@ class ArmCtPdComponent final : public ArmControllerBase {
   }
 
  private:
-  ArmCtPdComponent(const ComponentConfig& c, const alg::CtPdParams& p) : ArmControllerBase(c, p.model.dof()), ctpd_(p) {}
+  ArmCtPdComponent(const ComponentConfig& c, const alg::CtPdParams& p)
+      : ArmControllerBase(c, p.model.dof()), ctpd_(p) {}
   alg::CtPdController ctpd_;
 };
 
-const ComponentRegistration kArmCtPd{
-    "arm_ct_pd", ComponentKind::controller, "computed torque + PD comparator (paper 004 eq. (60))",
-    [](const ComponentConfig& c) { return std::make_unique<ArmCtPdComponent>(c); }};
+const ComponentRegistration kArmCtPd{"arm_ct_pd", ComponentKind::controller,
+                                     "computed torque + PD comparator (paper 004 eq. (60))",
+                                     [](const ComponentConfig& c) { return std::make_unique<ArmCtPdComponent>(c); }};
 
 }  // namespace
 }  // namespace plexus::scenario

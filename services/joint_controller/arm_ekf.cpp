@@ -29,7 +29,8 @@ alg::FlexibleJointEkfParams read_ekf(const ComponentConfig& c) {
   const YamlMap& p = c.params();
   const std::string tuning = p.optional<std::string>("tuning", "robust");
   if (tuning != "robust" && tuning != "paper") p.fail("tuning", "must be robust or paper");
-  alg::FlexibleJointEkfParams e = tuning == "robust" ? alg::FlexibleJointEkfParams::robust() : alg::FlexibleJointEkfParams::paper();
+  alg::FlexibleJointEkfParams e =
+      tuning == "robust" ? alg::FlexibleJointEkfParams::robust() : alg::FlexibleJointEkfParams::paper();
   e.model = read_model(p);
   e.disturbance = p.optional<bool>("disturbance", e.disturbance);
   e.q_disturbance = p.optional<double>("q_disturbance", e.q_disturbance);
@@ -69,7 +70,8 @@ class ArmEkfComponent final : public Component {
         enc_(add_input("joint_states", concat({names("phi", n_), names("dphi", n_)}), "JointState")),
         cmd_(add_input("cmd", names("u", n_), "JointCommand")),
         estimate_(add_output("estimate", estimate_fields(n_), "LinkJointState")) {
-    if (n_ > kMaxScenarioDof) c.params().fail("model", "has " + std::to_string(n_) + " joints; at most " + std::to_string(kMaxScenarioDof));
+    if (n_ > kMaxScenarioDof)
+      c.params().fail("model", "has " + std::to_string(n_) + " joints; at most " + std::to_string(kMaxScenarioDof));
   }
 
   void step(int64_t /*k*/, double /*t*/) override {
@@ -94,7 +96,8 @@ class ArmEkfComponent final : public Component {
     for (int i = 0; i < n_; ++i) {
       const auto a = static_cast<std::size_t>(i);
       const auto n = static_cast<std::size_t>(n_);
-      estimate_[a] = fb.q(i), estimate_[n + a] = fb.qd(i), estimate_[2 * n + a] = fb.qdd(i), estimate_[3 * n + a] = fb.qddd(i);
+      estimate_[a] = fb.q(i), estimate_[n + a] = fb.qd(i), estimate_[2 * n + a] = fb.qdd(i),
+      estimate_[3 * n + a] = fb.qddd(i);
       estimate_[4 * n + a] = fb.tau(i), estimate_[5 * n + a] = fb.taud(i), estimate_[6 * n + a] = fb.phi(i),
                         estimate_[7 * n + a] = fb.phid(i);
     }
@@ -117,9 +120,9 @@ class ArmEkfComponent final : public Component {
   OutputPort& estimate_;
 };
 
-const ComponentRegistration kArmEkf{
-    "arm_ekf", ComponentKind::estimator, "indirect continuous EKF [tau, tau', phi, phi'] (paper 004 section 4.2)",
-    [](const ComponentConfig& c) { return std::make_unique<ArmEkfComponent>(c); }};
+const ComponentRegistration kArmEkf{"arm_ekf", ComponentKind::estimator,
+                                    "indirect continuous EKF [tau, tau', phi, phi'] (paper 004 section 4.2)",
+                                    [](const ComponentConfig& c) { return std::make_unique<ArmEkfComponent>(c); }};
 
 }  // namespace
 }  // namespace plexus::scenario

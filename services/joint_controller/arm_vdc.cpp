@@ -27,16 +27,24 @@ alg::VdcParams read_vdc(const ComponentConfig& c) {
   const YamlMap& p = c.params();
   const alg::ArmModel model = read_model(p);
   alg::VdcParams v = p.optional<std::string>("model", "paper_2dof") == "paper_2dof" ? alg::VdcParams::paper_2dof()
-                                                                                     : alg::VdcParams::uniform(model);
+                                                                                    : alg::VdcParams::uniform(model);
   v.model = model;
   // tuning: robust (default; docs/algorithms/arm.md "Model error") feeds half of the
   // observer's model residual forward; paper is eqs. (18)-(23) as printed.
   const std::string tuning = p.optional<std::string>("tuning", "robust");
   if (tuning != "robust" && tuning != "paper") p.fail("tuning", "must be robust or paper");
   v.disturbance_compensation = tuning == "robust" ? alg::VdcParams::kRobustDisturbanceCompensation : 0.0;
-  for (auto [key, vec] : {std::pair{"k_b", &v.k_b}, {"rho", &v.rho}, {"lambda", &v.lambda}, {"k_p", &v.k_p},
-                          {"k_i", &v.k_i}, {"ts_min", &v.ts_min}, {"ts_max", &v.ts_max}, {"lambda_q", &v.lambda_q},
-                          {"lambda_phi", &v.lambda_phi}, {"lambda_tau", &v.lambda_tau}, {"k_phi", &v.k_phi},
+  for (auto [key, vec] : {std::pair{"k_b", &v.k_b},
+                          {"rho", &v.rho},
+                          {"lambda", &v.lambda},
+                          {"k_p", &v.k_p},
+                          {"k_i", &v.k_i},
+                          {"ts_min", &v.ts_min},
+                          {"ts_max", &v.ts_max},
+                          {"lambda_q", &v.lambda_q},
+                          {"lambda_phi", &v.lambda_phi},
+                          {"lambda_tau", &v.lambda_tau},
+                          {"k_phi", &v.k_phi},
                           {"k_tau", &v.k_tau}}) {
     read_into(p, key, *vec);
   }
@@ -64,9 +72,9 @@ class ArmVdcComponent final : public ArmControllerBase {
   alg::VdcController vdc_;
 };
 
-const ComponentRegistration kArmVdc{
-    "arm_vdc", ComponentKind::controller, "virtual decomposition control (paper 004 eqs. (9)-(23))",
-    [](const ComponentConfig& c) { return std::make_unique<ArmVdcComponent>(c); }};
+const ComponentRegistration kArmVdc{"arm_vdc", ComponentKind::controller,
+                                    "virtual decomposition control (paper 004 eqs. (9)-(23))",
+                                    [](const ComponentConfig& c) { return std::make_unique<ArmVdcComponent>(c); }};
 
 }  // namespace
 }  // namespace plexus::scenario

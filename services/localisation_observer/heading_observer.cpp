@@ -57,9 +57,9 @@ class HeadingObserverComponent final : public Component {
   OutputPort& out_;
 };
 
-const ComponentRegistration kHeadingObserver{"heading_observer", ComponentKind::estimator,
-                                             "reduced-order heading observer from positions (paper 000 Thm 1)",
-                                             [](const ComponentConfig& c) { return std::make_unique<HeadingObserverComponent>(c); }};
+const ComponentRegistration kHeadingObserver{
+    "heading_observer", ComponentKind::estimator, "reduced-order heading observer from positions (paper 000 Thm 1)",
+    [](const ComponentConfig& c) { return std::make_unique<HeadingObserverComponent>(c); }};
 
 }  // namespace
 }  // namespace plexus::scenario

@@ -56,9 +56,10 @@ class VelocityHeadingObserverComponent final : public Component {
   OutputPort& out_;
 };
 
-const ComponentRegistration kVelocityObserver{"velocity_heading_observer", ComponentKind::estimator,
-                                              "velocity and heading observer from positions (paper 003 Thm 1)",
-                                              [](const ComponentConfig& c) { return std::make_unique<VelocityHeadingObserverComponent>(c); }};
+const ComponentRegistration kVelocityObserver{
+    "velocity_heading_observer", ComponentKind::estimator,
+    "velocity and heading observer from positions (paper 003 Thm 1)",
+    [](const ComponentConfig& c) { return std::make_unique<VelocityHeadingObserverComponent>(c); }};
 
 }  // namespace
 }  // namespace plexus::scenario

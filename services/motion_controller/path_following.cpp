@@ -33,7 +33,8 @@ class PathFollowingComponent final : public Component {
         u1_(c.params().required<double>("u1")),
         ctl_(params(c.params())),
         path_(add_input("path", {"h", "hx", "hy", "hxx", "hxy", "hyy"}, "PathSample")),
-        vel_(observer_ ? add_input("heading", {"z2", "z4"}, "HeadingEstimate") : add_input("truth/state", {"theta"}, "Pose2D")),
+        vel_(observer_ ? add_input("heading", {"z2", "z4"}, "HeadingEstimate")
+                       : add_input("truth/state", {"theta"}, "Pose2D")),
         out_(add_output("cmd", {"v", "omega"}, "UnicycleCommand")) {
     if (!(std::isfinite(u1_) && u1_ != 0.0)) c.params().fail("u1", "must be finite and != 0 m/s");
   }
@@ -73,9 +74,10 @@ class PathFollowingComponent final : public Component {
   OutputPort& out_;
 };
 
-const ComponentRegistration kPathFollowing{"path_following", ComponentKind::controller,
-                                           "state-feedback / observer-based path following (paper 003 eqs. (5), (15))",
-                                           [](const ComponentConfig& c) { return std::make_unique<PathFollowingComponent>(c); }};
+const ComponentRegistration kPathFollowing{
+    "path_following", ComponentKind::controller,
+    "state-feedback / observer-based path following (paper 003 eqs. (5), (15))",
+    [](const ComponentConfig& c) { return std::make_unique<PathFollowingComponent>(c); }};
 
 }  // namespace
 }  // namespace plexus::scenario

@@ -21,7 +21,9 @@ namespace alg = plexus::algorithms;
 class ReferenceFeedforward final : public Component {
  public:
   explicit ReferenceFeedforward(const ComponentConfig& c)
-      : Component(c), ref_(add_input("reference", kReferenceFields, "PlanarReference")), out_(add_output("cmd", {"v", "omega"}, "UnicycleCommand")) {}
+      : Component(c),
+        ref_(add_input("reference", kReferenceFields, "PlanarReference")),
+        out_(add_output("cmd", {"v", "omega"}, "UnicycleCommand")) {}
 
   void step(int64_t /*k*/, double /*t*/) override {
     const alg::ReferenceSample r = reference_sample(ref_);
@@ -35,9 +37,10 @@ class ReferenceFeedforward final : public Component {
   OutputPort& out_;
 };
 
-const ComponentRegistration kFeedforward{"reference_feedforward", ComponentKind::controller,
-                                         "open loop along the reference: v = |p_r'|, omega = its heading rate",
-                                         [](const ComponentConfig& c) { return std::make_unique<ReferenceFeedforward>(c); }};
+const ComponentRegistration kFeedforward{
+    "reference_feedforward", ComponentKind::controller,
+    "open loop along the reference: v = |p_r'|, omega = its heading rate",
+    [](const ComponentConfig& c) { return std::make_unique<ReferenceFeedforward>(c); }};
 
 }  // namespace
 }  // namespace plexus::scenario

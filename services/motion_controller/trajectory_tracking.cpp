@@ -43,10 +43,10 @@ class TrajectoryTrackingComponent final : public Component {
         output_feedback_(is_second(c.params(), "feedback", "state", "output")),
         ctl_(params(c.params())),
         ref_(add_input("reference", kReferenceFields, "PlanarReference")),
-        pos_(add_input(output_feedback_ ? "position" : "truth/state",
-                       output_feedback_ ? std::vector<std::string>{"x", "y"}
-                                        : std::vector<std::string>{"x", "y", "theta"},
-                       output_feedback_ ? "PositionMeasurement" : "Pose2D")),
+        pos_(add_input(
+            output_feedback_ ? "position" : "truth/state",
+            output_feedback_ ? std::vector<std::string>{"x", "y"} : std::vector<std::string>{"x", "y", "theta"},
+            output_feedback_ ? "PositionMeasurement" : "Pose2D")),
         est_(output_feedback_ ? &add_input("heading", {"z3", "z4"}, "HeadingEstimate") : nullptr),
         out_(add_output("cmd", {"v", "omega"}, "UnicycleCommand")) {
     check_gain_condition(c);
@@ -56,7 +56,7 @@ class TrajectoryTrackingComponent final : public Component {
     alg::UnicycleInput u;
     if (ref_.valid() && pos_.valid() && (!est_ || est_->valid())) {
       const alg::ReferenceSample r = reference_sample(ref_);
-      u = output_feedback_ ? ctl_.output_feedback(r, vec2(pos_), vec2(*est_)).input  // 000 eqs. (27)-(28)
+      u = output_feedback_ ? ctl_.output_feedback(r, vec2(pos_), vec2(*est_)).input      // 000 eqs. (27)-(28)
                            : ctl_.state_feedback(r, {pos_[0], pos_[1], pos_[2]}).input;  // 000 eq. (14)
     }
     out_[0] = u.v;
@@ -82,9 +82,10 @@ class TrajectoryTrackingComponent final : public Component {
       if (!(*v_rm > 0.0)) c.params().fail("reference_min_speed", "must be > 0 m/s");
     }
     if (!v_rm) {
-      unicycle_log().info("{}: gain condition (15) of paper 000 not checked: set reference_min_speed (m/s), the "
-                          "lowest speed of the reference {} (a figure-eight's: h1 h2 sqrt(31) / 8)",
-                          c.name, ref_.signal());
+      unicycle_log().info(
+          "{}: gain condition (15) of paper 000 not checked: set reference_min_speed (m/s), the "
+          "lowest speed of the reference {} (a figure-eight's: h1 h2 sqrt(31) / 8)",
+          c.name, ref_.signal());
       return;
     }
     if (const auto warning = alg::check_gain_condition(ctl_.params(), *v_rm))
@@ -100,9 +101,10 @@ class TrajectoryTrackingComponent final : public Component {
   OutputPort& out_;
 };
 
-const ComponentRegistration kTracking{"trajectory_tracking", ComponentKind::controller,
-                                      "state / output-feedback trajectory tracking (paper 000 eqs. (14), (27)-(28))",
-                                      [](const ComponentConfig& c) { return std::make_unique<TrajectoryTrackingComponent>(c); }};
+const ComponentRegistration kTracking{
+    "trajectory_tracking", ComponentKind::controller,
+    "state / output-feedback trajectory tracking (paper 000 eqs. (14), (27)-(28))",
+    [](const ComponentConfig& c) { return std::make_unique<TrajectoryTrackingComponent>(c); }};
 
 }  // namespace
 }  // namespace plexus::scenario

@@ -41,10 +41,12 @@ class FlexibleJointArmComponent final : public Component {
         u_(Eigen::VectorXd::Zero(n_)),
         tau_(Eigen::VectorXd::Zero(n_)),
         cmd_(add_input("cmd", names("u", n_), "JointCommand")),
-        state_(add_output("truth/state",
-                          concat({names("q", n_), names("dq", n_), names("phi", n_), names("dphi", n_), names("tau", n_)}),
-                          "FlexibleJointTruth")) {
-    if (n_ > kMaxScenarioDof) c.params().fail("model", "has " + std::to_string(n_) + " joints; at most " + std::to_string(kMaxScenarioDof));
+        state_(
+            add_output("truth/state",
+                       concat({names("q", n_), names("dq", n_), names("phi", n_), names("dphi", n_), names("tau", n_)}),
+                       "FlexibleJointTruth")) {
+    if (n_ > kMaxScenarioDof)
+      c.params().fail("model", "has " + std::to_string(n_) + " joints; at most " + std::to_string(kMaxScenarioDof));
     const Eigen::VectorXd zero = Eigen::VectorXd::Zero(n_);
     plant_.reset_in_motion(number_list(c.params(), "q0", n_, zero), number_list(c.params(), "dq0", n_, zero));
   }

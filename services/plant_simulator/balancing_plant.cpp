@@ -65,7 +65,8 @@ class PendulumPlantComponent final : public Component {
 
 const ComponentRegistration kPlant{
     "wheeled_inverted_pendulum", ComponentKind::plant,
-    "two-wheeled balancing robot (paper 002 eq. (10)); in cmd {torque}, out truth/state {x, v, theta, theta_dot, x_ddot, theta_ddot}",
+    "two-wheeled balancing robot (paper 002 eq. (10)); in cmd {torque}, out truth/state {x, v, theta, theta_dot, "
+    "x_ddot, theta_ddot}",
     [](const ComponentConfig& c) { return std::make_unique<PendulumPlantComponent>(c); }};
 
 }  // namespace

@@ -48,7 +48,8 @@ class BalancingImuComponent final : public Component {
   explicit BalancingImuComponent(const ComponentConfig& c)
       : Component(c),
         info_(imu_params(c.params())),
-        imu_(info_.gyro, info_.acc, c.params().optional<double>("gravity", alg::WheeledPendulumParams{}.gravity), c.seed),
+        imu_(info_.gyro, info_.acc, c.params().optional<double>("gravity", alg::WheeledPendulumParams{}.gravity),
+             c.seed),
         dt_(c.period()),
         in_(add_input("truth/state", {"theta", "theta_dot", "x_ddot", "theta_ddot"}, "BalancingTruth")),
         out_(add_output(c.key, {"gyro", "acc_x", "acc_z"}, "Imu")) {}

@@ -25,7 +25,8 @@ class Measurement final : public Component {
         noise_std_(optional_non_negative(c.params(), "noise_std")),
         quantum_(optional_non_negative(c.params(), "quantum")),
         rng_(c.seed),
-        in_(add_input(c.params().optional<std::string>("source", "truth/state"), required_names(c.params(), "fields", kMaxSignalFields),
+        in_(add_input(c.params().optional<std::string>("source", "truth/state"),
+                      required_names(c.params(), "fields", kMaxSignalFields),
                       "")),  // any signal of its own robot: read in its process
         out_(add_output(c.key, in_.fields(), c.params().optional<std::string>("message", ""))) {}
 
@@ -46,9 +47,9 @@ class Measurement final : public Component {
   OutputPort& out_;
 };
 
-const ComponentRegistration kMeasurement{
-    "measurement", ComponentKind::sensor, "fields of a signal with Gaussian noise and quantisation",
-    [](const ComponentConfig& c) { return std::make_unique<Measurement>(c); }};
+const ComponentRegistration kMeasurement{"measurement", ComponentKind::sensor,
+                                         "fields of a signal with Gaussian noise and quantisation",
+                                         [](const ComponentConfig& c) { return std::make_unique<Measurement>(c); }};
 
 }  // namespace
 }  // namespace plexus::scenario

@@ -22,8 +22,11 @@ namespace alg = plexus::algorithms;
 class PositionSensorComponent final : public Component {
  public:
   explicit PositionSensorComponent(const ComponentConfig& c)
-      : Component(c), sensor_(params(c)), rng_(sensor_.make_rng()),
-        in_(add_input("truth/state", {"x", "y"}, "Pose2D")), out_(add_output(c.key, {"x", "y"}, "PositionMeasurement")) {}
+      : Component(c),
+        sensor_(params(c)),
+        rng_(sensor_.make_rng()),
+        in_(add_input("truth/state", {"x", "y"}, "Pose2D")),
+        out_(add_output(c.key, {"x", "y"}, "PositionMeasurement")) {}
 
   void step(int64_t /*k*/, double /*t*/) override {
     const Eigen::Vector2d m = sensor_.measure(vec2(in_), rng_);
@@ -57,9 +60,9 @@ class PositionSensorComponent final : public Component {
   OutputPort& out_;
 };
 
-const ComponentRegistration kPositionSensor{"position_sensor", ComponentKind::sensor,
-                                            "position {x, y}: exact, Gaussian or RFID grid (paper 000 6.3.2)",
-                                            [](const ComponentConfig& c) { return std::make_unique<PositionSensorComponent>(c); }};
+const ComponentRegistration kPositionSensor{
+    "position_sensor", ComponentKind::sensor, "position {x, y}: exact, Gaussian or RFID grid (paper 000 6.3.2)",
+    [](const ComponentConfig& c) { return std::make_unique<PositionSensorComponent>(c); }};
 
 }  // namespace
 }  // namespace plexus::scenario

@@ -82,8 +82,12 @@ alg::SkidSteerPlantParams plant_params(const ComponentConfig& c) {
 class SkidSteerPlantComponent final : public Component {
  public:
   explicit SkidSteerPlantComponent(const ComponentConfig& c)
-      : Component(c), plant_(plant_params(c)), rng_(c.seed), cmd_(add_input("cmd", {"v_l", "v_r"}, "TrackCommand")),
-        out_(add_output("truth/state", {"x", "y", "theta", "y_l", "y_r", "x_G", "terrain", "a_z", "v_l", "v_r"}, "SkidSteerTruth")) {}
+      : Component(c),
+        plant_(plant_params(c)),
+        rng_(c.seed),
+        cmd_(add_input("cmd", {"v_l", "v_r"}, "TrackCommand")),
+        out_(add_output("truth/state", {"x", "y", "theta", "y_l", "y_r", "x_G", "terrain", "a_z", "v_l", "v_r"},
+                        "SkidSteerTruth")) {}
 
   void step(int64_t k, double t) override {
     if (k > 0) {
@@ -92,8 +96,9 @@ class SkidSteerPlantComponent final : public Component {
       plant_.step(t - plant_.params().step, u_, rng_);
     }
     const alg::SkidSteerState& s = plant_.state();
-    const double v[] = {s.pose.x, s.pose.y, s.pose.theta, s.icr.y_l, s.icr.y_r, s.icr.x_G,
-                        static_cast<double>(s.terrain), s.a_z, u_.v_l, u_.v_r};
+    const double v[] = {
+        s.pose.x, s.pose.y, s.pose.theta, s.icr.y_l, s.icr.y_r, s.icr.x_G, static_cast<double>(s.terrain),
+        s.a_z,    u_.v_l,   u_.v_r};
     for (std::size_t i = 0; i < std::size(v); ++i) out_[i] = v[i];
   }
 
@@ -105,10 +110,11 @@ class SkidSteerPlantComponent final : public Component {
   OutputPort& out_;
 };
 
-const ComponentRegistration kPlant{"skid_steer", ComponentKind::plant,
-                                   "skid-steer ICR kinematics with a terrain schedule and vibration (paper 001); "
-                                   "in cmd {v_l, v_r}, out state {x, y, theta, y_l, y_r, x_G, terrain, a_z, v_l, v_r}",
-                                   [](const ComponentConfig& c) { return std::make_unique<SkidSteerPlantComponent>(c); }};
+const ComponentRegistration kPlant{
+    "skid_steer", ComponentKind::plant,
+    "skid-steer ICR kinematics with a terrain schedule and vibration (paper 001); "
+    "in cmd {v_l, v_r}, out state {x, y, theta, y_l, y_r, x_G, terrain, a_z, v_l, v_r}",
+    [](const ComponentConfig& c) { return std::make_unique<SkidSteerPlantComponent>(c); }};
 
 }  // namespace
 }  // namespace plexus::scenario

@@ -26,7 +26,10 @@ namespace alg = plexus::algorithms;
 class PoseSensorComponent final : public Component {
  public:
   explicit PoseSensorComponent(const ComponentConfig& c)
-      : Component(c), sensor_(params(c.params())), rng_(c.seed), in_(add_input("truth/state", {"x", "y", "theta"}, "SkidSteerTruth")),
+      : Component(c),
+        sensor_(params(c.params())),
+        rng_(c.seed),
+        in_(add_input("truth/state", {"x", "y", "theta"}, "SkidSteerTruth")),
         out_(add_output(c.key, {"x", "y", "theta"}, "Pose2D")) {}
   void step(int64_t /*k*/, double /*t*/) override {
     const alg::Pose2 m = sensor_.measure(pose_of(in_), rng_);
@@ -52,8 +55,11 @@ class PoseSensorComponent final : public Component {
 class TrackSpeedSensorComponent final : public Component {
  public:
   explicit TrackSpeedSensorComponent(const ComponentConfig& c)
-      : Component(c), sensor_(optional_non_negative(c.params(), "noise_std")), rng_(c.seed),
-        in_(add_input("truth/state", {"v_l", "v_r"}, "SkidSteerTruth")), out_(add_output(c.key, {"v_l", "v_r"}, "TrackSpeeds")) {}
+      : Component(c),
+        sensor_(optional_non_negative(c.params(), "noise_std")),
+        rng_(c.seed),
+        in_(add_input("truth/state", {"v_l", "v_r"}, "SkidSteerTruth")),
+        out_(add_output(c.key, {"v_l", "v_r"}, "TrackSpeeds")) {}
   void step(int64_t /*k*/, double /*t*/) override {
     const alg::TrackSpeeds m = sensor_.measure({in_[0], in_[1]}, rng_);
     out_[0] = m.v_l;
@@ -70,8 +76,11 @@ class TrackSpeedSensorComponent final : public Component {
 class ImuZSensorComponent final : public Component {
  public:
   explicit ImuZSensorComponent(const ComponentConfig& c)
-      : Component(c), sensor_(optional_non_negative(c.params(), "noise_std", 0.02), c.params().optional<double>("bias", 0.0)),
-        rng_(c.seed), in_(add_input("truth/state", {"a_z"}, "SkidSteerTruth")), out_(add_output(c.key, {"a_z"}, "Imu")) {}
+      : Component(c),
+        sensor_(optional_non_negative(c.params(), "noise_std", 0.02), c.params().optional<double>("bias", 0.0)),
+        rng_(c.seed),
+        in_(add_input("truth/state", {"a_z"}, "SkidSteerTruth")),
+        out_(add_output(c.key, {"a_z"}, "Imu")) {}
   void step(int64_t /*k*/, double /*t*/) override { out_[0] = sensor_.measure(in_[0], rng_); }
 
  private:

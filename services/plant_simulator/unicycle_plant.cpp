@@ -56,7 +56,8 @@ class UnicyclePlantComponent final : public Component {
 };
 
 const ComponentRegistration kUnicycle{
-    "unicycle", ComponentKind::plant, "unicycle kinematics, exact integration; in cmd {v, omega}, out truth/state {x, y, theta}",
+    "unicycle", ComponentKind::plant,
+    "unicycle kinematics, exact integration; in cmd {v, omega}, out truth/state {x, y, theta}",
     [](const ComponentConfig& c) { return std::make_unique<UnicyclePlantComponent>(c); }};
 
 }  // namespace

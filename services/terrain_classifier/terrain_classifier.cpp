@@ -36,8 +36,8 @@ alg::KnnClassifier make_classifier(const ComponentConfig& c, const alg::PsdFeatu
   }
   const std::string diff = set.layout.difference(alg::FeatureLayout::of(extractor));
   if (!diff.empty()) {
-    p.fail("training_file", path + ": its features were computed differently from this classifier's (" + diff +
-                                ": file vs classifier)");
+    p.fail("training_file",
+           path + ": its features were computed differently from this classifier's (" + diff + ": file vs classifier)");
   }
   alg::KnnParams k;
   k.k = p.optional<int>("k", k.k);
@@ -63,7 +63,10 @@ alg::KnnClassifier make_classifier(const ComponentConfig& c, const alg::PsdFeatu
 class TerrainClassifierComponent final : public Component {
  public:
   explicit TerrainClassifierComponent(const ComponentConfig& c)
-      : Component(c), windows_(c), knn_(make_classifier(c, windows_.extractor)), in_(add_input("imu", {"a_z"}, "Imu")),
+      : Component(c),
+        windows_(c),
+        knn_(make_classifier(c, windows_.extractor)),
+        in_(add_input("imu", {"a_z"}, "Imu")),
         out_(add_output("terrain", {"class", "confidence", "windows", "votes"}, "TerrainClass")) {
     out_[0] = -1.0;  // no decision yet
   }
@@ -88,9 +91,10 @@ class TerrainClassifierComponent final : public Component {
   OutputPort& out_;
 };
 
-const ComponentRegistration kClassifier{"terrain_classifier", ComponentKind::estimator,
-                                        "PSD features (FFTW) + kNN terrain class per window (paper 001 section 3.2)",
-                                        [](const ComponentConfig& c) { return std::make_unique<TerrainClassifierComponent>(c); }};
+const ComponentRegistration kClassifier{
+    "terrain_classifier", ComponentKind::estimator,
+    "PSD features (FFTW) + kNN terrain class per window (paper 001 section 3.2)",
+    [](const ComponentConfig& c) { return std::make_unique<TerrainClassifierComponent>(c); }};
 
 }  // namespace
 }  // namespace plexus::scenario

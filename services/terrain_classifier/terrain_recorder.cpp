@@ -28,9 +28,12 @@ namespace alg = plexus::algorithms;
 class TerrainRecorderComponent final : public Component {
  public:
   explicit TerrainRecorderComponent(const ComponentConfig& c)
-      : Component(c), windows_(c), label_(c.params().optional<int>("label", -1)),
+      : Component(c),
+        windows_(c),
+        label_(c.params().optional<int>("label", -1)),
         per_class_(c.params().optional<int>("windows_per_class", 15)),
-        writer_(open(c, windows_.extractor)), in_(add_input("imu", {"a_z"}, "Imu")),
+        writer_(open(c, windows_.extractor)),
+        in_(add_input("imu", {"a_z"}, "Imu")),
         truth_(add_input("truth/state", {"terrain"}, "SkidSteerTruth")),
         out_(add_output("recorder", {"written"}, "")) {  // writes a file: `plexus sim` only
     if (c.params().has("label") && label_ < 0) c.params().fail("label", "must be >= 0");
@@ -86,9 +89,9 @@ class TerrainRecorderComponent final : public Component {
   OutputPort& out_;
 };
 
-const ComponentRegistration kRecorder{"terrain_recorder", ComponentKind::estimator,
-                                      "records labelled PSD feature windows into a training file",
-                                      [](const ComponentConfig& c) { return std::make_unique<TerrainRecorderComponent>(c); }};
+const ComponentRegistration kRecorder{
+    "terrain_recorder", ComponentKind::estimator, "records labelled PSD feature windows into a training file",
+    [](const ComponentConfig& c) { return std::make_unique<TerrainRecorderComponent>(c); }};
 
 }  // namespace
 }  // namespace plexus::scenario

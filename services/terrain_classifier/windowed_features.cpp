@@ -8,8 +8,11 @@ namespace plexus::scenario {
 namespace alg = plexus::algorithms;
 
 WindowedFeatures::WindowedFeatures(const ComponentConfig& c)
-    : extractor(feature_params(c)), window(samples(c, "window_s", 1.0), hop(c)), features(extractor.size()),
-      period_steps_(c.period_steps), max_fill_(samples(c, "window_s", 1.0) / 10) {}
+    : extractor(feature_params(c)),
+      window(samples(c, "window_s", 1.0), hop(c)),
+      features(extractor.size()),
+      period_steps_(c.period_steps),
+      max_fill_(samples(c, "window_s", 1.0) / 10) {}
 
 bool WindowedFeatures::push(const InputPort& in) {
   const int64_t due_before = due_;
@@ -44,8 +47,8 @@ std::size_t WindowedFeatures::samples(const ComponentConfig& c, const std::strin
   const double s = c.params().optional<double>(key, fallback);
   const double n = s / c.period();
   if (!(s > 0.0) || std::abs(n - std::round(n)) > 1e-6 || std::round(n) < 1) {
-    c.params().fail(key, "must be a positive whole number of the component's periods (" +
-                             std::to_string(c.period()) + " s)");
+    c.params().fail(
+        key, "must be a positive whole number of the component's periods (" + std::to_string(c.period()) + " s)");
   }
   return static_cast<std::size_t>(std::round(n));
 }

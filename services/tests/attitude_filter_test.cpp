@@ -140,11 +140,13 @@ TEST(AttitudeFilter, BadSamplesAreRefusedAndLeaveTheEstimateAlone) {
       {
           {"acc_x NaN", [](ServiceUnderTest& s, int64_t k) { return s.deliver("r3/imu", imu(s, k, kNaN, 9.81, 0)); },
            Rejection::non_finite},
-          {"gyro 2e4 rad/s", [](ServiceUnderTest& s, int64_t k) { return s.deliver("r3/imu", imu(s, k, 0, 9.81, 2e4)); },
+          {"gyro 2e4 rad/s",
+           [](ServiceUnderTest& s, int64_t k) { return s.deliver("r3/imu", imu(s, k, 0, 9.81, 2e4)); },
            Rejection::out_of_range},
           {"acc_z -inf", [](ServiceUnderTest& s, int64_t k) { return s.deliver("r3/imu", imu(s, k, 0, -kInf, 0)); },
            Rejection::non_finite},
-          {"IMU before the epoch", [](ServiceUnderTest& s, int64_t) { return s.deliver("r3/imu", imu(s, -1, 0, 9.81, 0)); },
+          {"IMU before the epoch",
+           [](ServiceUnderTest& s, int64_t) { return s.deliver("r3/imu", imu(s, -1, 0, 9.81, 0)); },
            Rejection::negative_time},
           {"torque NaN", [](ServiceUnderTest& s, int64_t k) { return s.deliver("r3/cmd", torque(s, k, kNaN)); },
            Rejection::non_finite},
@@ -229,7 +231,8 @@ TEST(BalancingController, BadSamplesAreRefusedAndLeaveTheTorqueAlone) {
       {
           {"speed NaN", [](ServiceUnderTest& s, int64_t k) { return s.deliver("r3/odometry", travel(s, k, 0, kNaN)); },
            Rejection::non_finite},
-          {"tilt 2e6 rad", [](ServiceUnderTest& s, int64_t k) { return s.deliver("r3/attitude", attitude(s, k, 2e6, 0)); },
+          {"tilt 2e6 rad",
+           [](ServiceUnderTest& s, int64_t k) { return s.deliver("r3/attitude", attitude(s, k, 2e6, 0)); },
            Rejection::out_of_range},
           {"reference before the epoch",
            [](ServiceUnderTest& s, int64_t) { return s.deliver("r3/reference", travel(s, -2, 5, 5)); },
@@ -243,7 +246,8 @@ TEST(BalancingController, BadParametersAreConfigurationErrors) {
                                         {"services.ctl.poles=[-2, -3, -9, 1]", {"services.ctl", "pole"}},
                                         // Found by fuzzing: a pole that is not a number threw yaml-cpp's
                                         // own exception out of the loader; .nan was taken.
-                                        {"services.ctl.poles=[-2, -3, -9, x]", {"services.ctl.poles", "expected a finite number, got 'x'"}},
+                                        {"services.ctl.poles=[-2, -3, -9, x]",
+                                         {"services.ctl.poles", "expected a finite number, got 'x'"}},
                                         {"services.ctl.poles=[-2, -3, -9, .nan]", {"services.ctl.poles", "finite"}},
                                         {"services.ctl.max_torque=0", {"services.ctl", "max_torque"}},
                                         {"services.ctl.gain=1", {"services.ctl.gain", "unknown key"}},

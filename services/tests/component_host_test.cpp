@@ -156,7 +156,8 @@ TEST(GeometricPath, BadSamplesAreRefusedAndLeaveThePathAlone) {
            Rejection::non_finite},
           {"y 1e7 m", [](ServiceUnderTest& s, int64_t k) { return s.deliver("r1/position", position(s, k, 0, 1e7)); },
            Rejection::out_of_range},
-          {"before the epoch", [](ServiceUnderTest& s, int64_t) { return s.deliver("r1/position", position(s, -3, 0, 0)); },
+          {"before the epoch",
+           [](ServiceUnderTest& s, int64_t) { return s.deliver("r1/position", position(s, -3, 0, 0)); },
            Rejection::negative_time},
       });
 }
@@ -167,12 +168,14 @@ TEST(GeometricPath, BadParametersAreConfigurationErrors) {
                                   {"services.path.radius=-1", {"services.path", "radius"}},
                                   {"services.path.radius=[1, 2]", {"services.path.radius"}},
                               });
-  EXPECT_NE(config_error(kPath, {"services.path.shape=polynomial", "services.path.terms=[[1, 2]]"}).find("services.path.terms"),
+  EXPECT_NE(config_error(kPath, {"services.path.shape=polynomial", "services.path.terms=[[1, 2]]"})
+                .find("services.path.terms"),
             std::string::npos);
   // Read through number(): a word as a power threw yaml-cpp's own exception; 1e10 was taken.
   for (const char* terms : {"services.path.terms=[[x, 0, 1]]", "services.path.terms=[[0.5, 0, 1]]",
                             "services.path.terms=[[1e10, 0, 1]]", "services.path.terms=[[1, 0, .inf]]"})
-    EXPECT_NE(config_error(kPath, {"services.path.shape=polynomial", terms}).find("services.path.terms"), std::string::npos)
+    EXPECT_NE(config_error(kPath, {"services.path.shape=polynomial", terms}).find("services.path.terms"),
+              std::string::npos)
         << terms;
   EXPECT_NE(config_error(kPath, {"services.path.shape=ellipse", "services.path.a=2"}).find("services.path.b"),
             std::string::npos);
@@ -204,8 +207,9 @@ TEST(ArmSineReference, PaperReferenceByHand) {
 }
 
 TEST(ArmSineReference, OwnSinusoidByHand) {
-  ServiceUnderTest s(kArmReference, {}, {"services.ref.dof=1", "services.ref.amplitude=[0.5]", "services.ref.frequency_hz=[2]",
-                                         "services.ref.offset=[0.1]", "services.ref.phase=[0.3]"});
+  ServiceUnderTest s(kArmReference, {},
+                     {"services.ref.dof=1", "services.ref.amplitude=[0.5]", "services.ref.frequency_hz=[2]",
+                      "services.ref.offset=[0.1]", "services.ref.phase=[0.3]"});
   s.step(10);  // t = 0.1 s: a = 2 pi 2 0.1 + 0.3
   const double a = 0.4 * kPi + 0.3, w = 4 * kPi;
   EXPECT_EQ(s.fields("r4/reference"), (std::vector<std::string>{"q1", "dq1", "ddq1", "dddq1"}));
@@ -252,7 +256,9 @@ TEST(ConstantCommand, BadParametersAreConfigurationErrors) {
 step: 0.01
 services:
   driver: {type: constant_command, robot: r1, v: 1}
-)", {}).find("services.driver.omega: required key is missing"),
+)",
+                         {})
+                .find("services.driver.omega: required key is missing"),
             std::string::npos);
 }
 
@@ -262,8 +268,8 @@ TEST(ComponentHostOutputs, PassTheConsumersEdgeCheckAndATamperedOneDoesNot) {
   struct Row {
     std::string doc, signal;
   };
-  for (const Row& r : {Row{kFigureEight, "r1/reference"}, Row{kCircle, "r1/reference"}, Row{kArmReference, "r4/reference"},
-                       Row{kConstant, "r1/cmd"}}) {
+  for (const Row& r : {Row{kFigureEight, "r1/reference"}, Row{kCircle, "r1/reference"},
+                       Row{kArmReference, "r4/reference"}, Row{kConstant, "r1/cmd"}}) {
     ServiceUnderTest s(r.doc);
     s.step(3);
     EXPECT_EQ(s.check_output(r.signal), Rejection::none) << r.signal;
@@ -291,30 +297,48 @@ TEST(ServicesTests, CoverEveryRegisteredComponentType) {
   // The types of services/<executable>/ and the file of services/tests/ that tests each.
   // A new component type fails here until it gets its test.
   const std::map<std::string, std::string> covered{
-      {"heading_observer", "localisation_observer"},     {"velocity_heading_observer", "localisation_observer"},
-      {"trajectory_tracking", "motion_controller"},      {"path_following", "motion_controller"},
-      {"reference_feedforward", "motion_controller"},    {"skid_steer_driver", "motion_controller"},
-      {"figure_eight_reference", "component_host"},      {"circle_reference", "component_host"},
-      {"geometric_path", "component_host"},              {"arm_sine_reference", "component_host"},
-      {"constant_command", "component_host"},            {"arm_ct_pd", "joint_controller"},
-      {"arm_vdc", "joint_controller"},                   {"arm_ekf", "joint_controller"},
-      {"unicycle", "plant_simulator"},                   {"skid_steer", "plant_simulator"},
-      {"flexible_joint_arm", "plant_simulator"},         {"wheeled_inverted_pendulum", "plant_simulator"},
-      {"position_sensor", "plant_simulator"},            {"measurement", "plant_simulator"},
-      {"pose_sensor", "plant_simulator"},                {"track_speed_sensor", "plant_simulator"},
-      {"imu_z_sensor", "plant_simulator"},               {"balancing_imu", "plant_simulator"},
-      {"wheel_odometry", "plant_simulator"},             {"joint_encoders", "plant_simulator"},
-      {"attitude_filter", "attitude_filter"},            {"balancing_controller", "attitude_filter"},
-      {"motion_profile", "attitude_filter"},             {"icr_ekf", "icr_estimator"},
-      {"icr_odometry", "icr_estimator"},                 {"terrain_classifier", "terrain_classifier"},
-      {"terrain_recorder", "terrain_classifier"},         {"icr_library_recorder", "icr_estimator"},
+      {"heading_observer", "localisation_observer"},
+      {"velocity_heading_observer", "localisation_observer"},
+      {"trajectory_tracking", "motion_controller"},
+      {"path_following", "motion_controller"},
+      {"reference_feedforward", "motion_controller"},
+      {"skid_steer_driver", "motion_controller"},
+      {"figure_eight_reference", "component_host"},
+      {"circle_reference", "component_host"},
+      {"geometric_path", "component_host"},
+      {"arm_sine_reference", "component_host"},
+      {"constant_command", "component_host"},
+      {"arm_ct_pd", "joint_controller"},
+      {"arm_vdc", "joint_controller"},
+      {"arm_ekf", "joint_controller"},
+      {"unicycle", "plant_simulator"},
+      {"skid_steer", "plant_simulator"},
+      {"flexible_joint_arm", "plant_simulator"},
+      {"wheeled_inverted_pendulum", "plant_simulator"},
+      {"position_sensor", "plant_simulator"},
+      {"measurement", "plant_simulator"},
+      {"pose_sensor", "plant_simulator"},
+      {"track_speed_sensor", "plant_simulator"},
+      {"imu_z_sensor", "plant_simulator"},
+      {"balancing_imu", "plant_simulator"},
+      {"wheel_odometry", "plant_simulator"},
+      {"joint_encoders", "plant_simulator"},
+      {"attitude_filter", "attitude_filter"},
+      {"balancing_controller", "attitude_filter"},
+      {"motion_profile", "attitude_filter"},
+      {"icr_ekf", "icr_estimator"},
+      {"icr_odometry", "icr_estimator"},
+      {"terrain_classifier", "terrain_classifier"},
+      {"terrain_recorder", "terrain_classifier"},
+      {"icr_library_recorder", "icr_estimator"},
   };
   std::set<std::string> registered;
   for (const auto* t : scenario::component_types()) {
     registered.insert(t->name);
     EXPECT_TRUE(covered.count(t->name)) << t->name << " has no test in services/tests/";
   }
-  for (const auto& [type, file] : covered) EXPECT_TRUE(registered.count(type)) << type << " (" << file << "_test.cpp) is not registered";
+  for (const auto& [type, file] : covered)
+    EXPECT_TRUE(registered.count(type)) << type << " (" << file << "_test.cpp) is not registered";
 }
 
 }  // namespace

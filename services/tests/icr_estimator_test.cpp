@@ -87,9 +87,12 @@ TEST(IcrEkf, PredictsAndUpdatesLikeTheAlgorithm) {
     s.step(k);
     const double t = 0.01 * static_cast<double>(k);
     if (k > 0) ref.predict({0.3, 0.5 + 0.2 * std::sin(t)}, 0.01);
-    if (k == 0) ref.reset({0, 0, 0});
-    else if (k % 5 == 0) ref.update({0.4 * t, 0.1 * t * t, 0.2 * t});
-    for (int i = 0; i < 6; ++i) ASSERT_NEAR(s.sample("r2/icr").values[static_cast<std::size_t>(i)], ref.state()(i), 1e-12) << k;
+    if (k == 0)
+      ref.reset({0, 0, 0});
+    else if (k % 5 == 0)
+      ref.update({0.4 * t, 0.1 * t * t, 0.2 * t});
+    for (int i = 0; i < 6; ++i)
+      ASSERT_NEAR(s.sample("r2/icr").values[static_cast<std::size_t>(i)], ref.state()(i), 1e-12) << k;
     ASSERT_NEAR(s.out("r2/icr", "sd_x_G"), std::sqrt(ref.covariance()(5, 5)), 1e-12) << k;
   }
   EXPECT_LT(s.out("r2/icr", "sd_y_l"), 0.5);  // the GPS updates tightened the ICRs
@@ -112,9 +115,12 @@ TEST(IcrEkf, AGpsSampleReadAfterItsStepIsDropped) {
       s.step(k);
     }
     if (k > 0) ref.predict({0.3, 0.5 + 0.2 * std::sin(t)}, 0.01);
-    if (k == 0) ref.reset({0, 0, 0});
-    else if (k % 5 == 0 && k != 10) ref.update({0.4 * t, 0.1 * t * t, 0.2 * t});
-    for (int i = 0; i < 6; ++i) ASSERT_NEAR(s.sample("r2/icr").values[static_cast<std::size_t>(i)], ref.state()(i), 1e-12) << k;
+    if (k == 0)
+      ref.reset({0, 0, 0});
+    else if (k % 5 == 0 && k != 10)
+      ref.update({0.4 * t, 0.1 * t * t, 0.2 * t});
+    for (int i = 0; i < 6; ++i)
+      ASSERT_NEAR(s.sample("r2/icr").values[static_cast<std::size_t>(i)], ref.state()(i), 1e-12) << k;
   }
   EXPECT_EQ(s.scenario().components[0].component->dropped_late_samples(), 1u);
 }
@@ -165,11 +171,13 @@ services:
            Rejection::non_finite},
           {"gps x 3e6 m", [](ServiceUnderTest& s, int64_t k) { return s.deliver("r2/gps", gps(s, k, 3e6, 0, 0)); },
            Rejection::out_of_range},
-          {"gps before the epoch", [](ServiceUnderTest& s, int64_t) { return s.deliver("r2/gps", gps(s, -1, 1, 1, 1)); },
+          {"gps before the epoch",
+           [](ServiceUnderTest& s, int64_t) { return s.deliver("r2/gps", gps(s, -1, 1, 1, 1)); },
            Rejection::negative_time},
           {"wheels inf", [](ServiceUnderTest& s, int64_t k) { return s.deliver("r2/wheels", wheels(s, k, kInf, 0)); },
            Rejection::non_finite},
-          {"terrain class -2", [](ServiceUnderTest& s, int64_t k) { return s.deliver("r2/terrain", terrain(s, k, -2, 99)); },
+          {"terrain class -2",
+           [](ServiceUnderTest& s, int64_t k) { return s.deliver("r2/terrain", terrain(s, k, -2, 99)); },
            Rejection::out_of_range},
       });
 }
@@ -189,8 +197,9 @@ TEST(IcrEkf, PriorResetStartsFromTheLearnedIcrsOfTheConfirmedTerrain) {
   // tile values and their sd the library's (deploy/training/icr_terrain_library.txt).
   const std::string library = std::string(PLEXUS_SOURCE_DIR) + "/deploy/training/icr_terrain_library.txt";
   const alg::TerrainIcrPrior tile = *alg::load_terrain_icr_library(library).find(1);
-  ServiceUnderTest s(kEkf, {}, {"services.ekf.adaptive_reset=true", "services.ekf.reset_mode=prior",
-                                "services.ekf.icr_library=" + library});
+  ServiceUnderTest s(
+      kEkf, {},
+      {"services.ekf.adaptive_reset=true", "services.ekf.reset_mode=prior", "services.ekf.icr_library=" + library});
   int64_t k = 0;
   auto run = [&](int steps) {
     for (int i = 0; i < steps; ++i, ++k) {
@@ -230,9 +239,12 @@ TEST(IcrEkf, PriorResetParametersAreConfigurationErrors) {
 // --- icr_library_recorder ----------------------------------------------------------------
 
 TEST(IcrLibraryRecorder, LearnsTheMeanOfTheSettledEstimatePerTerrain) {
-  const std::string path = std::filesystem::temp_directory_path() / ("plexus_icr_library_" + std::to_string(::getpid()) + ".txt");
-  const std::string part = "name: lib_part\nstep: 0.01\nservices:\n  rec: {type: icr_library_recorder, robot: r2, "
-                           "settle_s: 0.5, class_names: [a, b], output: " + path + "}\n";
+  const std::string path =
+      std::filesystem::temp_directory_path() / ("plexus_icr_library_" + std::to_string(::getpid()) + ".txt");
+  const std::string part =
+      "name: lib_part\nstep: 0.01\nservices:\n  rec: {type: icr_library_recorder, robot: r2, "
+      "settle_s: 0.5, class_names: [a, b], output: " +
+      path + "}\n";
   ServiceUnderTest s(part);
   EXPECT_EQ(s.message_type("r2/icr"), "IcrEstimate");
   EXPECT_EQ(s.message_type("r2/truth/state"), "SkidSteerTruth");
@@ -293,7 +305,7 @@ TEST(IcrOdometry, DeadReckoningByHand) {
   s.step(0);  // starts at the truth
   EXPECT_EQ(s.published<msg::Pose2D>("r2/odo").x(), 1.0);
   s.deliver("r2/truth/state", truth(s, 1, 50.0, 50.0, 1.0));  // read once, at the start only
-  s.step(1);  // straight at 1 m/s
+  s.step(1);                                                  // straight at 1 m/s
   auto m = s.published<msg::Pose2D>("r2/odo");
   EXPECT_DOUBLE_EQ(m.x(), 1.01);
   EXPECT_DOUBLE_EQ(m.y(), 2.0);
@@ -348,9 +360,11 @@ services:
       {
           {"wheels NaN", [](ServiceUnderTest& s, int64_t k) { return s.deliver("r2/wheels", wheels(s, k, 0, kNaN)); },
            Rejection::non_finite},
-          {"icr y_l 2e6 m", [](ServiceUnderTest& s, int64_t k) { return s.deliver("r2/icr", icr_estimate(s, k, 2e6, -0.3, 0)); },
+          {"icr y_l 2e6 m",
+           [](ServiceUnderTest& s, int64_t k) { return s.deliver("r2/icr", icr_estimate(s, k, 2e6, -0.3, 0)); },
            Rejection::out_of_range},
-          {"icr x_G NaN", [](ServiceUnderTest& s, int64_t k) { return s.deliver("r2/icr", icr_estimate(s, k, 0.3, -0.3, kNaN)); },
+          {"icr x_G NaN",
+           [](ServiceUnderTest& s, int64_t k) { return s.deliver("r2/icr", icr_estimate(s, k, 0.3, -0.3, kNaN)); },
            Rejection::non_finite},
       });
 }
@@ -366,7 +380,9 @@ TEST(IcrOdometry, BadParametersAreConfigurationErrors) {
 step: 0.01
 services:
   odo: {type: icr_odometry, robot: r2, model: no_slip, track_width: 0}
-)", {}).find("track_width"),
+)",
+                         {})
+                .find("track_width"),
             std::string::npos);
 }
 

@@ -42,11 +42,11 @@ msg::LinkJointState link_state(const ServiceUnderTest& s, int64_t k, const Estim
   return m;
 }
 
-alg::ArmFeedback feedback_of(const Estimate& e) {
-  return {e.q, e.dq, e.ddq, e.tau, e.dtau, e.phi, e.dphi, e.dddq};
-}
+alg::ArmFeedback feedback_of(const Estimate& e) { return {e.q, e.dq, e.ddq, e.tau, e.dtau, e.phi, e.dphi, e.dddq}; }
 
-alg::ArmReferenceSample reference_of(Vector2d q, Vector2d dq, Vector2d ddq, Vector2d dddq) { return {q, dq, ddq, dddq}; }
+alg::ArmReferenceSample reference_of(Vector2d q, Vector2d dq, Vector2d ddq, Vector2d dddq) {
+  return {q, dq, ddq, dddq};
+}
 
 // A reference and an estimate that move with k (the controllers' inputs of one run).
 Estimate estimate_at(int64_t k) {
@@ -64,8 +64,7 @@ Estimate estimate_at(int64_t k) {
 
 void feed_controller(ServiceUnderTest& s, int64_t k) {
   const double t = 0.001 * static_cast<double>(k);
-  ASSERT_EQ(s.deliver("r4/reference",
-                      joint_reference(s, k, {0.12 + t, -0.08}, {0.3, 0.9}, {0.1, -0.4}, {0.0, 0.2})),
+  ASSERT_EQ(s.deliver("r4/reference", joint_reference(s, k, {0.12 + t, -0.08}, {0.3, 0.9}, {0.1, -0.4}, {0.0, 0.2})),
             Rejection::none);
   ASSERT_EQ(s.deliver("r4/estimate", link_state(s, k, estimate_at(k))), Rejection::none);
 }
@@ -148,7 +147,8 @@ TEST(ArmCtPd, MatchesTheAlgorithm) {
     feed_controller(s, k);
     s.step(k);
     const double t = 0.001 * static_cast<double>(k);
-    const auto& u = ref.step(reference_of({0.12 + t, -0.08}, {0.3, 0.9}, {0.1, -0.4}, {0.0, 0.2}), feedback_of(estimate_at(k)));
+    const auto& u =
+        ref.step(reference_of({0.12 + t, -0.08}, {0.3, 0.9}, {0.1, -0.4}, {0.0, 0.2}), feedback_of(estimate_at(k)));
     EXPECT_NEAR(s.out("r4/cmd", "u1"), u(0), 1e-9 * std::abs(u(0)) + 1e-12) << k;
     EXPECT_NEAR(s.out("r4/cmd", "u2"), u(1), 1e-9 * std::abs(u(1)) + 1e-12) << k;
   }
@@ -189,7 +189,8 @@ TEST(ArmVdc, MatchesTheAlgorithmStepByStep) {
     feed_controller(s, k);
     s.step(k);
     const double t = 0.001 * static_cast<double>(k);
-    const auto& u = ref.step(reference_of({0.12 + t, -0.08}, {0.3, 0.9}, {0.1, -0.4}, {0.0, 0.2}), feedback_of(estimate_at(k)));
+    const auto& u =
+        ref.step(reference_of({0.12 + t, -0.08}, {0.3, 0.9}, {0.1, -0.4}, {0.0, 0.2}), feedback_of(estimate_at(k)));
     const auto m = s.published<msg::JointCommand>("r4/cmd");
     EXPECT_NEAR(m.effort()[0], u(0), 1e-9 * std::abs(u(0)) + 1e-12) << k;
     EXPECT_NEAR(m.effort()[1], u(1), 1e-9 * std::abs(u(1)) + 1e-12) << k;
@@ -395,33 +396,38 @@ services:
 }
 
 TEST(ArmEkf, BadSamplesAreRefusedAndLeaveTheEstimateAlone) {
-  expect_refused_without_effect(
-      kEkf, {}, {"r4/estimate"}, 6, 3, feed_ekf,
-      {
-          {"encoders for 3 joints",
-           [](ServiceUnderTest& s, int64_t k) {
-             auto m = encoders(s, k, phi_at(k), dphi_at(k));
-             m.count(3);
-             return s.deliver("r4/joint_states", m);
-           },
-           Rejection::wrong_count},
-          {"encoder velocity NaN",
-           [](ServiceUnderTest& s, int64_t k) { return s.deliver("r4/joint_states", encoders(s, k, phi_at(k), {kNaN, 0})); },
-           Rejection::non_finite},
-          {"encoder angle 1e7 rad",
-           [](ServiceUnderTest& s, int64_t k) { return s.deliver("r4/joint_states", encoders(s, k, {1e7, 0}, dphi_at(k))); },
-           Rejection::out_of_range},
-          {"command 1e8 N m",
-           [](ServiceUnderTest& s, int64_t k) { return s.deliver("r4/cmd", joint_command(s, k, {1e8, 0})); },
-           Rejection::out_of_range},
-          {"command for 1 joint",
-           [](ServiceUnderTest& s, int64_t k) {
-             auto m = joint_command(s, k, kU);
-             m.count(1);
-             return s.deliver("r4/cmd", m);
-           },
-           Rejection::wrong_count},
-      });
+  expect_refused_without_effect(kEkf, {}, {"r4/estimate"}, 6, 3, feed_ekf,
+                                {
+                                    {"encoders for 3 joints",
+                                     [](ServiceUnderTest& s, int64_t k) {
+                                       auto m = encoders(s, k, phi_at(k), dphi_at(k));
+                                       m.count(3);
+                                       return s.deliver("r4/joint_states", m);
+                                     },
+                                     Rejection::wrong_count},
+                                    {"encoder velocity NaN",
+                                     [](ServiceUnderTest& s, int64_t k) {
+                                       return s.deliver("r4/joint_states", encoders(s, k, phi_at(k), {kNaN, 0}));
+                                     },
+                                     Rejection::non_finite},
+                                    {"encoder angle 1e7 rad",
+                                     [](ServiceUnderTest& s, int64_t k) {
+                                       return s.deliver("r4/joint_states", encoders(s, k, {1e7, 0}, dphi_at(k)));
+                                     },
+                                     Rejection::out_of_range},
+                                    {"command 1e8 N m",
+                                     [](ServiceUnderTest& s, int64_t k) {
+                                       return s.deliver("r4/cmd", joint_command(s, k, {1e8, 0}));
+                                     },
+                                     Rejection::out_of_range},
+                                    {"command for 1 joint",
+                                     [](ServiceUnderTest& s, int64_t k) {
+                                       auto m = joint_command(s, k, kU);
+                                       m.count(1);
+                                       return s.deliver("r4/cmd", m);
+                                     },
+                                     Rejection::wrong_count},
+                                });
 }
 
 TEST(ArmEkf, BadParametersAreConfigurationErrors) {

@@ -87,8 +87,10 @@ TEST(HeadingObserver, MatchesTheAlgorithmAlongAnArc) {
   for (int64_t k = 0; k < 20; ++k) {
     feed_track(s, k);
     s.step(k);
-    if (k == 0) ref.reset({0.0, 0.0}, track(0));
-    else ref.update(0.01, track(k), {1.0, 0.5});
+    if (k == 0)
+      ref.reset({0.0, 0.0}, track(0));
+    else
+      ref.update(0.01, track(k), {1.0, 0.5});
     const auto m = s.published<msg::HeadingEstimate>("r1/heading");
     ASSERT_NEAR(m.direction()[0], ref.state().z_hat.x(), 1e-12) << k;
     ASSERT_NEAR(m.direction()[1], ref.state().z_hat.y(), 1e-12) << k;
@@ -102,18 +104,22 @@ TEST(HeadingObserver, MatchesTheAlgorithmAlongAnArc) {
 // omega, so a bad v is not a member it reads and passes (its own edge check is per field).
 std::vector<BadSample> bad_inputs(bool reads_v) {
   std::vector<BadSample> t{
-      {"position x NaN", [](ServiceUnderTest& s, int64_t k) { return s.deliver("r1/position", position(s, k, kNaN, 0.0)); },
+      {"position x NaN",
+       [](ServiceUnderTest& s, int64_t k) { return s.deliver("r1/position", position(s, k, kNaN, 0.0)); },
        Rejection::non_finite},
-      {"position y 2000 km", [](ServiceUnderTest& s, int64_t k) { return s.deliver("r1/position", position(s, k, 0.0, 2e6)); },
+      {"position y 2000 km",
+       [](ServiceUnderTest& s, int64_t k) { return s.deliver("r1/position", position(s, k, 0.0, 2e6)); },
        Rejection::out_of_range},
       {"position from before the epoch",
        [](ServiceUnderTest& s, int64_t) { return s.deliver("r1/position", position(s, -5, 0.5, 0.5)); },
        Rejection::negative_time},
-      {"command omega inf", [](ServiceUnderTest& s, int64_t k) { return s.deliver("r1/cmd", command(s, k, 1.0, kInf)); },
+      {"command omega inf",
+       [](ServiceUnderTest& s, int64_t k) { return s.deliver("r1/cmd", command(s, k, 1.0, kInf)); },
        Rejection::non_finite},
   };
   if (reads_v)
-    t.push_back({"command v 1e5 m/s", [](ServiceUnderTest& s, int64_t k) { return s.deliver("r1/cmd", command(s, k, 1e5, 0.0)); },
+    t.push_back({"command v 1e5 m/s",
+                 [](ServiceUnderTest& s, int64_t k) { return s.deliver("r1/cmd", command(s, k, 1e5, 0.0)); },
                  Rejection::out_of_range});
   return t;
 }
@@ -134,7 +140,9 @@ TEST(HeadingObserver, BadParametersAreConfigurationErrors) {
 step: 0.01
 services:
   obs: {type: heading_observer, robot: r1}
-)", {}).find("services.obs.L: required key is missing"),
+)",
+                         {})
+                .find("services.obs.L: required key is missing"),
             std::string::npos);
 }
 
@@ -160,8 +168,10 @@ TEST(VelocityHeadingObserver, MatchesTheAlgorithmAlongAnArc) {
   for (int64_t k = 0; k < 20; ++k) {
     feed_track(s, k);
     s.step(k);
-    if (k == 0) ref.reset({0.0, 0.0}, track(0));
-    else ref.update(0.01, track(k), 0.5);
+    if (k == 0)
+      ref.reset({0.0, 0.0}, track(0));
+    else
+      ref.update(0.01, track(k), 0.5);
     ASSERT_NEAR(s.out("r1/heading", "z2"), ref.state().z_hat.x(), 1e-12) << k;
     ASSERT_NEAR(s.out("r1/heading", "z4"), ref.state().z_hat.y(), 1e-12) << k;
     ASSERT_NEAR(s.out("r1/heading", "speed"), ref.speed(), 1e-12) << k;

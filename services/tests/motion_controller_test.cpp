@@ -137,10 +137,14 @@ TEST(TrajectoryTracking, BadSamplesAreRefusedAndLeaveTheCommandAlone) {
       kTrackingState, {}, {"r1/cmd"}, 8, 4, feed_tracking,
       {
           {"reference ddy NaN",
-           [](ServiceUnderTest& s, int64_t k) { return s.deliver("r1/reference", reference(s, k, {0, 0}, {1, 0}, {0, kNaN})); },
+           [](ServiceUnderTest& s, int64_t k) {
+             return s.deliver("r1/reference", reference(s, k, {0, 0}, {1, 0}, {0, kNaN}));
+           },
            Rejection::non_finite},
           {"reference dx 1e5 m/s",
-           [](ServiceUnderTest& s, int64_t k) { return s.deliver("r1/reference", reference(s, k, {0, 0}, {1e5, 0}, {0, 0})); },
+           [](ServiceUnderTest& s, int64_t k) {
+             return s.deliver("r1/reference", reference(s, k, {0, 0}, {1e5, 0}, {0, 0}));
+           },
            Rejection::out_of_range},
           {"state theta 2e6 rad",
            [](ServiceUnderTest& s, int64_t k) { return s.deliver("r1/truth/state", pose(s, k, 0, 0, 2e6)); },
@@ -231,11 +235,14 @@ TEST(PathFollowing, BadSamplesAreRefusedAndLeaveTheCommandAlone) {
   expect_refused_without_effect(
       kPathState, {}, {"r1/cmd"}, 8, 4, feed_path,
       {
-          {"path h 1e13", [](ServiceUnderTest& s, int64_t k) { return s.deliver("r1/path", path(s, k, 1e13, 1, 0, 2, 0, 2)); },
+          {"path h 1e13",
+           [](ServiceUnderTest& s, int64_t k) { return s.deliver("r1/path", path(s, k, 1e13, 1, 0, 2, 0, 2)); },
            Rejection::out_of_range},
-          {"path hxy NaN", [](ServiceUnderTest& s, int64_t k) { return s.deliver("r1/path", path(s, k, 0, 1, 0, 2, kNaN, 2)); },
+          {"path hxy NaN",
+           [](ServiceUnderTest& s, int64_t k) { return s.deliver("r1/path", path(s, k, 0, 1, 0, 2, kNaN, 2)); },
            Rejection::non_finite},
-          {"heading inf", [](ServiceUnderTest& s, int64_t k) { return s.deliver("r1/truth/state", pose(s, k, 0, 0, kInf)); },
+          {"heading inf",
+           [](ServiceUnderTest& s, int64_t k) { return s.deliver("r1/truth/state", pose(s, k, 0, 0, kInf)); },
            Rejection::non_finite},
       });
 }
@@ -272,16 +279,19 @@ TEST(ReferenceFeedforward, BadSamplesAreRefusedAndLeaveTheCommandAlone) {
     const auto r = ref_at(k);
     ASSERT_EQ(s.deliver("r1/reference", reference(s, k, r.p, r.dp, r.ddp)), Rejection::none);
   };
-  expect_refused_without_effect(
-      kFeedforward, {}, {"r1/cmd"}, 6, 3, feed,
-      {
-          {"velocity NaN",
-           [](ServiceUnderTest& s, int64_t k) { return s.deliver("r1/reference", reference(s, k, {0, 0}, {kNaN, 1}, {0, 0})); },
-           Rejection::non_finite},
-          {"acceleration 1e8",
-           [](ServiceUnderTest& s, int64_t k) { return s.deliver("r1/reference", reference(s, k, {0, 0}, {1, 1}, {1e8, 0})); },
-           Rejection::out_of_range},
-      });
+  expect_refused_without_effect(kFeedforward, {}, {"r1/cmd"}, 6, 3, feed,
+                                {
+                                    {"velocity NaN",
+                                     [](ServiceUnderTest& s, int64_t k) {
+                                       return s.deliver("r1/reference", reference(s, k, {0, 0}, {kNaN, 1}, {0, 0}));
+                                     },
+                                     Rejection::non_finite},
+                                    {"acceleration 1e8",
+                                     [](ServiceUnderTest& s, int64_t k) {
+                                       return s.deliver("r1/reference", reference(s, k, {0, 0}, {1, 1}, {1e8, 0}));
+                                     },
+                                     Rejection::out_of_range},
+                                });
 }
 
 TEST(ReferenceFeedforward, BadParametersAreConfigurationErrors) {
@@ -314,7 +324,8 @@ TEST(SkidSteerDriver, CircleTrackSpeedsByHand) {
 }
 
 TEST(SkidSteerDriver, PatternsFollowTheClock) {
-  ServiceUnderTest seg(kDriver, {}, {"services.driver.pattern=segments", "services.driver.segments=[[1.0, 0.1, 0.2], [1.0, 0.3, 0.4]]"});
+  ServiceUnderTest seg(
+      kDriver, {}, {"services.driver.pattern=segments", "services.driver.segments=[[1.0, 0.1, 0.2], [1.0, 0.3, 0.4]]"});
   seg.step(50);  // t = 0.5 s: first segment
   EXPECT_EQ(seg.out("r1/cmd", "v_l"), 0.1);
   seg.step(150);  // t = 1.5 s: second

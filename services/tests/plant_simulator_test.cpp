@@ -76,9 +76,11 @@ TEST(UnicyclePlant, BadCommandsAreRefusedAndLeaveTheStateAlone) {
       {
           {"v NaN", [](ServiceUnderTest& s, int64_t k) { return s.deliver("r1/cmd", unicycle_command(s, k, kNaN, 0)); },
            Rejection::non_finite},
-          {"omega -1e5", [](ServiceUnderTest& s, int64_t k) { return s.deliver("r1/cmd", unicycle_command(s, k, 0, -1e5)); },
+          {"omega -1e5",
+           [](ServiceUnderTest& s, int64_t k) { return s.deliver("r1/cmd", unicycle_command(s, k, 0, -1e5)); },
            Rejection::out_of_range},
-          {"before the epoch", [](ServiceUnderTest& s, int64_t) { return s.deliver("r1/cmd", unicycle_command(s, -1, 5, 5)); },
+          {"before the epoch",
+           [](ServiceUnderTest& s, int64_t) { return s.deliver("r1/cmd", unicycle_command(s, -1, 5, 5)); },
            Rejection::negative_time},
       });
 }
@@ -144,14 +146,15 @@ TEST(UnicycleSensors, BadTruthIsRefusedAndLeavesTheMeasurementAlone) {
 }
 
 TEST(UnicycleSensors, BadParametersAreConfigurationErrors) {
-  expect_config_errors(kUnicycle, {
-                                      {"robots.r1.sensors.position.kind=laser", {"robots.r1.sensors.position.kind"}},
-                                      {"robots.r1.sensors.position.kind=gaussian", {"robots.r1.sensors.position.sigma"}},
-                                      {"robots.r1.sensors.position.grid_spacing=0", {"robots.r1.sensors.position", "grid_spacing"}},
-                                      {"robots.r1.sensors.gps.quantum=-0.5", {"robots.r1.sensors.gps.quantum"}},
-                                      {"robots.r1.sensors.gps.fields=[]", {"robots.r1.sensors.gps.fields"}},
-                                      {"robots.r1.sensors.gps.fields=[x, w]", {"robots.r1.sensors.gps", "w"}},
-                                  });
+  expect_config_errors(
+      kUnicycle, {
+                     {"robots.r1.sensors.position.kind=laser", {"robots.r1.sensors.position.kind"}},
+                     {"robots.r1.sensors.position.kind=gaussian", {"robots.r1.sensors.position.sigma"}},
+                     {"robots.r1.sensors.position.grid_spacing=0", {"robots.r1.sensors.position", "grid_spacing"}},
+                     {"robots.r1.sensors.gps.quantum=-0.5", {"robots.r1.sensors.gps.quantum"}},
+                     {"robots.r1.sensors.gps.fields=[]", {"robots.r1.sensors.gps.fields"}},
+                     {"robots.r1.sensors.gps.fields=[x, w]", {"robots.r1.sensors.gps", "w"}},
+                 });
 }
 
 // --- skid_steer and its sensors ---------------------------------------------------------
@@ -207,18 +210,20 @@ TEST(SkidSteerPlant, BadCommandsAreRefusedAndLeaveTheStateAlone) {
       {
           {"left NaN", [](ServiceUnderTest& s, int64_t k) { return s.deliver("r2/cmd", track_command(s, k, kNaN, 0)); },
            Rejection::non_finite},
-          {"right 2e4 m/s", [](ServiceUnderTest& s, int64_t k) { return s.deliver("r2/cmd", track_command(s, k, 0, 2e4)); },
+          {"right 2e4 m/s",
+           [](ServiceUnderTest& s, int64_t k) { return s.deliver("r2/cmd", track_command(s, k, 0, 2e4)); },
            Rejection::out_of_range},
       });
 }
 
 TEST(SkidSteerPlant, BadParametersAreConfigurationErrors) {
-  expect_config_errors(kSkidSteer, {
-                                       {"robots.r2.plant.schedule=[[0, mud]]", {"robots.r2.plant.schedule", "mud"}},
-                                       {"robots.r2.plant.schedule=[[0]]", {"robots.r2.plant.schedule"}},
-                                       {"robots.r2.plant.terrains={ice: {y_l: -1, y_r: 1, x_G: 0}}", {"robots.r2.plant", "y_l"}},
-                                       {"robots.r2.plant.vibration_speed_exponent=-1", {"robots.r2.plant", "speed_exponent"}},
-                                   });
+  expect_config_errors(kSkidSteer,
+                       {
+                           {"robots.r2.plant.schedule=[[0, mud]]", {"robots.r2.plant.schedule", "mud"}},
+                           {"robots.r2.plant.schedule=[[0]]", {"robots.r2.plant.schedule"}},
+                           {"robots.r2.plant.terrains={ice: {y_l: -1, y_r: 1, x_G: 0}}", {"robots.r2.plant", "y_l"}},
+                           {"robots.r2.plant.vibration_speed_exponent=-1", {"robots.r2.plant", "speed_exponent"}},
+                       });
 }
 
 msg::SkidSteerTruth skid_truth(const ServiceUnderTest& s, int64_t k, double x, double y, double theta, double v_l,
@@ -276,7 +281,10 @@ TEST(SkidSteerSensors, BadTruthIsRefusedAndLeavesTheMeasurementAlone) {
     ASSERT_EQ(s.deliver("r2/truth/state", skid_truth(s, k, t, -t, 3.0 + t, 0.3, 0.5, 9.81 + t)), Rejection::none);
   };
   const std::vector<BadSample> bad{
-      {"a_z NaN", [](ServiceUnderTest& s, int64_t k) { return s.deliver("r2/truth/state", skid_truth(s, k, 0, 0, 0, 0, 0, kNaN)); },
+      {"a_z NaN",
+       [](ServiceUnderTest& s, int64_t k) {
+         return s.deliver("r2/truth/state", skid_truth(s, k, 0, 0, 0, 0, 0, kNaN));
+       },
        Rejection::non_finite},
       {"terrain id -2",
        [](ServiceUnderTest& s, int64_t k) {
@@ -285,7 +293,10 @@ TEST(SkidSteerSensors, BadTruthIsRefusedAndLeavesTheMeasurementAlone) {
          return s.deliver("r2/truth/state", m);
        },
        Rejection::out_of_range},
-      {"v_l inf", [](ServiceUnderTest& s, int64_t k) { return s.deliver("r2/truth/state", skid_truth(s, k, 0, 0, 0, kInf, 0, 9.81)); },
+      {"v_l inf",
+       [](ServiceUnderTest& s, int64_t k) {
+         return s.deliver("r2/truth/state", skid_truth(s, k, 0, 0, 0, kInf, 0, 9.81));
+       },
        Rejection::non_finite},
   };
   for (const char* sensor : {"r2/gps", "r2/wheels", "r2/imu"})
@@ -293,12 +304,13 @@ TEST(SkidSteerSensors, BadTruthIsRefusedAndLeavesTheMeasurementAlone) {
 }
 
 TEST(SkidSteerSensors, BadParametersAreConfigurationErrors) {
-  expect_config_errors(kSkidSteer, {
-                                       {"robots.r2.sensors.gps.position_std=-0.01", {"robots.r2.sensors.gps.position_std"}},
-                                       {"robots.r2.sensors.wheels.noise_std=-1", {"robots.r2.sensors.wheels.noise_std"}},
-                                       {"robots.r2.sensors.imu.bias=.inf", {"robots.r2.sensors.imu", "bias"}},
-                                       {"robots.r2.sensors.gps.wrap_heading=sometimes", {"robots.r2.sensors.gps.wrap_heading"}},
-                                   });
+  expect_config_errors(kSkidSteer,
+                       {
+                           {"robots.r2.sensors.gps.position_std=-0.01", {"robots.r2.sensors.gps.position_std"}},
+                           {"robots.r2.sensors.wheels.noise_std=-1", {"robots.r2.sensors.wheels.noise_std"}},
+                           {"robots.r2.sensors.imu.bias=.inf", {"robots.r2.sensors.imu", "bias"}},
+                           {"robots.r2.sensors.gps.wrap_heading=sometimes", {"robots.r2.sensors.gps.wrap_heading"}},
+                       });
 }
 
 // --- flexible_joint_arm and joint_encoders ----------------------------------------------
@@ -413,7 +425,8 @@ TEST(JointEncoders, BadTruthIsRefusedAndLeavesTheMeasurementAlone) {
              return s.deliver("r4/truth/state", m);
            },
            Rejection::wrong_count},
-          {"dphi NaN", [](ServiceUnderTest& s, int64_t k) { return s.deliver("r4/truth/state", arm_truth(s, k, 0, 0, kNaN, 0)); },
+          {"dphi NaN",
+           [](ServiceUnderTest& s, int64_t k) { return s.deliver("r4/truth/state", arm_truth(s, k, 0, 0, kNaN, 0)); },
            Rejection::non_finite},
       });
 }
@@ -484,7 +497,8 @@ TEST(WheeledInvertedPendulum, BadCommandsAreRefusedAndLeaveTheStateAlone) {
       {
           {"torque NaN", [](ServiceUnderTest& s, int64_t k) { return s.deliver("r3/cmd", torque_command(s, k, kNaN)); },
            Rejection::non_finite},
-          {"torque 2e7 N m", [](ServiceUnderTest& s, int64_t k) { return s.deliver("r3/cmd", torque_command(s, k, 2e7)); },
+          {"torque 2e7 N m",
+           [](ServiceUnderTest& s, int64_t k) { return s.deliver("r3/cmd", torque_command(s, k, 2e7)); },
            Rejection::out_of_range},
       });
 }
@@ -501,7 +515,8 @@ TEST(WheeledInvertedPendulum, BadParametersAreConfigurationErrors) {
 msg::BalancingTruth balancing_truth(const ServiceUnderTest& s, int64_t k, double x, double v, double theta,
                                     double theta_dot, double x_ddot, double theta_ddot) {
   auto m = s.stamped<msg::BalancingTruth>(k);
-  m.distance(x), m.speed(v), m.tilt(theta), m.tilt_rate(theta_dot), m.acceleration(x_ddot), m.tilt_acceleration(theta_ddot);
+  m.distance(x), m.speed(v), m.tilt(theta), m.tilt_rate(theta_dot), m.acceleration(x_ddot),
+      m.tilt_acceleration(theta_ddot);
   return m;
 }
 
@@ -546,13 +561,20 @@ TEST(BalancingSensors, BadTruthIsRefusedAndLeavesTheMeasurementAlone) {
     ASSERT_EQ(s.deliver("r3/truth/state", balancing_truth(s, k, t, 1.0, 0.05 - t, -0.2, 0.3, -1.0)), Rejection::none);
   };
   const std::vector<BadSample> bad{
-      {"tilt NaN", [](ServiceUnderTest& s, int64_t k) { return s.deliver("r3/truth/state", balancing_truth(s, k, 0, 0, kNaN, 0, 0, 0)); },
+      {"tilt NaN",
+       [](ServiceUnderTest& s, int64_t k) {
+         return s.deliver("r3/truth/state", balancing_truth(s, k, 0, 0, kNaN, 0, 0, 0));
+       },
        Rejection::non_finite},
       {"tilt acceleration 1e9",
-       [](ServiceUnderTest& s, int64_t k) { return s.deliver("r3/truth/state", balancing_truth(s, k, 0, 0, 0, 0, 0, 1e9)); },
+       [](ServiceUnderTest& s, int64_t k) {
+         return s.deliver("r3/truth/state", balancing_truth(s, k, 0, 0, 0, 0, 0, 1e9));
+       },
        Rejection::out_of_range},
       {"before the epoch",
-       [](ServiceUnderTest& s, int64_t) { return s.deliver("r3/truth/state", balancing_truth(s, -4, 0, 0, 0, 0, 0, 0)); },
+       [](ServiceUnderTest& s, int64_t) {
+         return s.deliver("r3/truth/state", balancing_truth(s, -4, 0, 0, 0, 0, 0, 0));
+       },
        Rejection::negative_time},
   };
   // With noise: its random draws must not be consumed by a refused sample either.
@@ -570,12 +592,13 @@ robots:
 }
 
 TEST(BalancingSensors, BadParametersAreConfigurationErrors) {
-  expect_config_errors(kPendulum, {
-                                      {"robots.r3.sensors.imu.gyro_range_degps=0", {"robots.r3.sensors.imu.gyro_range_degps"}},
-                                      {"robots.r3.sensors.imu.gyro_noise_degps=-1", {"robots.r3.sensors.imu.gyro_noise_degps"}},
-                                      {"robots.r3.sensors.imu.accel_range=0", {"robots.r3.sensors.imu", "range"}},
-                                      {"robots.r3.sensors.odometry.noise_std=-1", {"robots.r3.sensors.odometry.noise_std"}},
-                                  });
+  expect_config_errors(kPendulum,
+                       {
+                           {"robots.r3.sensors.imu.gyro_range_degps=0", {"robots.r3.sensors.imu.gyro_range_degps"}},
+                           {"robots.r3.sensors.imu.gyro_noise_degps=-1", {"robots.r3.sensors.imu.gyro_noise_degps"}},
+                           {"robots.r3.sensors.imu.accel_range=0", {"robots.r3.sensors.imu", "range"}},
+                           {"robots.r3.sensors.odometry.noise_std=-1", {"robots.r3.sensors.odometry.noise_std"}},
+                       });
 }
 
 }  // namespace

@@ -156,7 +156,9 @@ class ServiceUnderTest {
     return kNaN;
   }
   /// The fields of a signal, in order.
-  const std::vector<std::string>& fields(const std::string& signal) const { return exec_->signals()[index(signal)].fields; }
+  const std::vector<std::string>& fields(const std::string& signal) const {
+    return exec_->signals()[index(signal)].fields;
+  }
   /// The IDL message type a signal travels as.
   const std::string& message_type(const std::string& signal) const { return exec_->signals()[index(signal)].message; }
 

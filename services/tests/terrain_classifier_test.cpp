@@ -135,7 +135,8 @@ TEST(TerrainClassifier, AMissingSampleIsInterpolatedInItsSlot) {
   for (int64_t k = 0; k < 100; ++k) {
     if (k != 50) ASSERT_EQ(s.deliver("r2/imu", imu(s, k, vibration(20.0, k))), Rejection::none);
     s.step(k);
-    window.push_back(k == 50 ? vibration(20.0, 49) + (vibration(20.0, 51) - vibration(20.0, 49)) * 0.5 : vibration(20.0, k));
+    window.push_back(k == 50 ? vibration(20.0, 49) + (vibration(20.0, 51) - vibration(20.0, 49)) * 0.5
+                             : vibration(20.0, k));
   }
   const auto m = s.published<msg::TerrainClass>("r2/terrain");
   EXPECT_EQ(m.terrain_id(), 1);
@@ -176,8 +177,10 @@ TEST(TerrainClassifier, BadSamplesAreRefusedAndLeaveTheWindowAlone) {
   expect_refused_without_effect(
       doc, {}, {"r2/terrain"}, 100, 60, feed,
       {
-          {"a_z NaN", [](ServiceUnderTest& s, int64_t k) { return s.deliver("r2/imu", imu(s, k, kNaN)); }, Rejection::non_finite},
-          {"a_z 2e7", [](ServiceUnderTest& s, int64_t k) { return s.deliver("r2/imu", imu(s, k, 2e7)); }, Rejection::out_of_range},
+          {"a_z NaN", [](ServiceUnderTest& s, int64_t k) { return s.deliver("r2/imu", imu(s, k, kNaN)); },
+           Rejection::non_finite},
+          {"a_z 2e7", [](ServiceUnderTest& s, int64_t k) { return s.deliver("r2/imu", imu(s, k, 2e7)); },
+           Rejection::out_of_range},
           {"before the epoch", [](ServiceUnderTest& s, int64_t) { return s.deliver("r2/imu", imu(s, -1, 5.0)); },
            Rejection::negative_time},
       });
@@ -186,21 +189,23 @@ TEST(TerrainClassifier, BadSamplesAreRefusedAndLeaveTheWindowAlone) {
 TEST(TerrainClassifier, BadParametersAreConfigurationErrors) {
   const TempDir dir;
   const std::string doc = classifier_doc(write_training(dir));
-  expect_config_errors(doc, {
-                                {"services.cls.training_file=" + dir.file("missing.txt"), {"services.cls.training_file"}},
-                                {"services.cls.k=0", {"services.cls.k"}},
-                                {"services.cls.tie_rule=coin", {"services.cls.tie_rule"}},
-                                {"services.cls.scaling=log", {"services.cls.scaling"}},
-                                {"services.cls.window_s=0.015", {"services.cls.window_s"}},
-                                {"services.cls.min_hz=2", {"services.cls.training_file", "differently"}},
-                                {"services.cls.taper=triangle", {"services.cls.taper"}},
-                            });
+  expect_config_errors(doc,
+                       {
+                           {"services.cls.training_file=" + dir.file("missing.txt"), {"services.cls.training_file"}},
+                           {"services.cls.k=0", {"services.cls.k"}},
+                           {"services.cls.tie_rule=coin", {"services.cls.tie_rule"}},
+                           {"services.cls.scaling=log", {"services.cls.scaling"}},
+                           {"services.cls.window_s=0.015", {"services.cls.window_s"}},
+                           {"services.cls.min_hz=2", {"services.cls.training_file", "differently"}},
+                           {"services.cls.taper=triangle", {"services.cls.taper"}},
+                       });
 }
 
 // --- terrain_recorder -------------------------------------------------------------------
 
 std::string recorder_doc(const std::string& output) {
-  return "name: rec_part\nstep: 0.01\nservices:\n  rec: {type: terrain_recorder, robot: r2, windows_per_class: 1, output: " +
+  return "name: rec_part\nstep: 0.01\nservices:\n  rec: {type: terrain_recorder, robot: r2, windows_per_class: 1, "
+         "output: " +
          output + "}\n";
 }
 
@@ -263,7 +268,8 @@ TEST(TerrainRecorder, BadSamplesAreRefusedAndLeaveTheRecordingAlone) {
   const auto clean = record(nullptr);
   EXPECT_EQ(clean.first, 1.0);
   const std::vector<BadSample> table{
-      {"a_z inf", [](ServiceUnderTest& s, int64_t k) { return s.deliver("r2/imu", imu(s, k, kInf)); }, Rejection::non_finite},
+      {"a_z inf", [](ServiceUnderTest& s, int64_t k) { return s.deliver("r2/imu", imu(s, k, kInf)); },
+       Rejection::non_finite},
       {"terrain -5", [](ServiceUnderTest& s, int64_t k) { return s.deliver("r2/truth/state", truth(s, k, -5)); },
        Rejection::out_of_range},
       {"truth x NaN",

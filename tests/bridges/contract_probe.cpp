@@ -29,9 +29,9 @@
 // Exit 0 if every check passed, 1 if one failed, 2 for bad arguments.
 #include <time.h>
 
+#include <yaml-cpp/yaml.h>
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
-#include <yaml-cpp/yaml.h>
 
 #include <algorithm>
 #include <atomic>
@@ -123,9 +123,10 @@ std::map<std::string, std::string> qos_fields(const rt::EndpointQos& q) {
 
 /// The contract's QoS map, normalised like qos_fields (numbers through %g).
 std::map<std::string, std::string> contract_qos(const YAML::Node& n, const std::string& where) {
-  static const std::set<std::string> known = {"reliability", "durability", "deadline_s", "liveliness",
-                                              "liveliness_lease_s", "lifespan_s", "latency_budget_s", "ownership",
-                                              "data_representation", "history", "depth"};
+  static const std::set<std::string> known = {
+      "reliability", "durability",       "deadline_s", "liveliness",          "liveliness_lease_s",
+      "lifespan_s",  "latency_budget_s", "ownership",  "data_representation", "history",
+      "depth"};
   if (!n || !n.IsMap()) throw InputError(where + ": qos: expected a map");
   std::map<std::string, std::string> m;
   for (const auto& kv : n) {
@@ -254,7 +255,8 @@ void scan_values(const json& j, const std::string& path, double bound, uint64_t&
     for (const auto& [k, v] : j.items())
       if (!(path.empty() && k == "header")) scan_values(v, path.empty() ? k : path + "." + k, bound, bad, first_bad);
   } else if (j.is_array()) {
-    for (std::size_t i = 0; i < j.size(); ++i) scan_values(j[i], path + "[" + std::to_string(i) + "]", bound, bad, first_bad);
+    for (std::size_t i = 0; i < j.size(); ++i)
+      scan_values(j[i], path + "[" + std::to_string(i) + "]", bound, bad, first_bad);
   } else if (j.is_number_float()) {
     const double v = j.get<double>();
     if (!std::isfinite(v) || std::fabs(v) >= bound) {
@@ -315,8 +317,10 @@ struct TopicReader {
           continue;
         }
         if (rx > win_end) continue;
-        if (count == 0) first = rx;
-        else max_gap = std::max(max_gap, rx - last);
+        if (count == 0)
+          first = rx;
+        else
+          max_gap = std::max(max_gap, rx - last);
         last = rx;
         ++count;
         if (any_seq && h.seq_num() <= last_seq) {
@@ -329,12 +333,13 @@ struct TopicReader {
         if (h.data_time_ns() > 0) max_age_seen_s = std::max(max_age_seen_s, std::fabs(age));
         if (h.data_time_ns() <= 0 || std::fabs(age) > max_age_s) {
           if (data_time_errors++ == 0)
-            first_time_error = "seq " + std::to_string(h.seq_num()) + ": data_time_ns " + std::to_string(h.data_time_ns()) +
-                               " is " + num("%.3f", age) + " s before its receipt";
+            first_time_error = "seq " + std::to_string(h.seq_num()) + ": data_time_ns " +
+                               std::to_string(h.data_time_ns()) + " is " + num("%.3f", age) + " s before its receipt";
         }
         if (h.origin_time_ns() <= 0) {
-          if (origin_errors++ == 0) first_time_error += (first_time_error.empty() ? "" : "; ") +
-                                                        std::string("origin_time_ns ") + std::to_string(h.origin_time_ns());
+          if (origin_errors++ == 0)
+            first_time_error += (first_time_error.empty() ? "" : "; ") + std::string("origin_time_ns ") +
+                                std::to_string(h.origin_time_ns());
         }
         scan_values(j, "", value_bound, bad_values, first_bad_value);
         if (wire) {
@@ -406,16 +411,22 @@ struct HealthReader {
 };
 
 json link_json(const msg::LinkStatus& s) {
-  return {{"up", s.state() == plexus::msg::LINK_UP}, {"frames_in", s.frames_in()}, {"frames_out", s.frames_out()}, {"crc_errors", s.crc_errors()},
-          {"framing_errors", s.framing_errors()}, {"oversize", s.oversize()}, {"resyncs", s.resyncs()},
-          {"rejected_frames", s.rejected_frames()}, {"stale_commands", s.stale_commands()},
-          {"stop_frames", s.stop_frames()}, {"tx_errors", s.tx_errors()}};
+  return {{"up", s.state() == plexus::msg::LINK_UP},
+          {"frames_in", s.frames_in()},
+          {"frames_out", s.frames_out()},
+          {"crc_errors", s.crc_errors()},
+          {"framing_errors", s.framing_errors()},
+          {"oversize", s.oversize()},
+          {"resyncs", s.resyncs()},
+          {"rejected_frames", s.rejected_frames()},
+          {"stale_commands", s.stale_commands()},
+          {"stop_frames", s.stop_frames()},
+          {"tx_errors", s.tx_errors()}};
 }
 
 void sleep_until_mono(int64_t t) {
   timespec ts{static_cast<time_t>(t / kSecond), static_cast<long>(t % kSecond)};
-  while (clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &ts, nullptr) == EINTR && !g_stop) {
-  }
+  while (clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &ts, nullptr) == EINTR && !g_stop) {}
 }
 
 }  // namespace
@@ -432,7 +443,8 @@ int main(int argc, char** argv) {
   app.add_option("--contract", contract_file, "contract YAML (tests/bridges/unicycle_contract.yaml)")->required();
   app.add_option("--discover", discover_s, "seconds of discovery before the comparison")->check(CLI::Range(0.1, 60.0));
   app.add_option("--discover-timeout", discover_timeout_s,
-                 "then at most this many more seconds for contract topics not yet seen")->check(CLI::Range(0.0, 60.0));
+                 "then at most this many more seconds for contract topics not yet seen")
+      ->check(CLI::Range(0.0, 60.0));
   app.add_option("--measure", measure_s, "seconds of measurement")->check(CLI::Range(1.0, 600.0));
   app.add_flag("--drive", drive, "step command, then a stale command (not for replay)");
   app.add_flag("--no-command-reader", no_command_reader, "the source reads no command (replay): not compared");
@@ -505,11 +517,11 @@ int main(int argc, char** argv) {
 
     json disc{{"seconds", discovery_took}, {"writers", json::array()}, {"command_readers", json::array()}};
     for (const auto& e : writers)
-      disc["writers"].push_back({{"topic", e.topic}, {"type", e.type_name}, {"participant", e.participant},
-                                 {"qos", rt::describe(e.qos)}});
+      disc["writers"].push_back(
+          {{"topic", e.topic}, {"type", e.type_name}, {"participant", e.participant}, {"qos", rt::describe(e.qos)}});
     for (const auto& e : readers)
-      disc["command_readers"].push_back({{"topic", e.topic}, {"type", e.type_name}, {"participant", e.participant},
-                                         {"qos", rt::describe(e.qos)}});
+      disc["command_readers"].push_back(
+          {{"topic", e.topic}, {"type", e.type_name}, {"participant", e.participant}, {"qos", rt::describe(e.qos)}});
     result["discovery"] = disc;
 
     if (!write_contract.empty()) {
@@ -602,7 +614,8 @@ int main(int argc, char** argv) {
       std::string bad;
       for (const auto& e : readers) {
         if (type_key(e.type_name) != type_key(contract.command.type))
-          bad += (bad.empty() ? "" : "; ") + std::string("type ") + e.type_name + " (contract " + contract.command.type + ")";
+          bad += (bad.empty() ? "" : "; ") + std::string("type ") + e.type_name + " (contract " +
+                 contract.command.type + ")";
         if (const auto d = qos_diff(contract.command.qos, qos_fields(e.qos)); !d.empty())
           bad += (bad.empty() ? "" : "; ") + d;
       }
@@ -667,8 +680,9 @@ int main(int argc, char** argv) {
 
     // Window: starts once every reader matched its writers (at most 3 s).
     const int64_t match_end = monotonic_ns() + 3 * kSecond;
-    while (!g_stop && monotonic_ns() < match_end &&
-           std::any_of(readers_m.begin(), readers_m.end(), [](const auto& r) { return r->reader->matched_count() == 0; }))
+    while (!g_stop && monotonic_ns() < match_end && std::any_of(readers_m.begin(), readers_m.end(), [](const auto& r) {
+      return r->reader->matched_count() == 0;
+    }))
       std::this_thread::sleep_for(std::chrono::milliseconds(10));
     const int64_t win_start = wall_time_ns() + 100'000'000;  // 100 ms for matching to settle both ways
     const int64_t win_end = win_start + ns_of(measure_s);
@@ -679,7 +693,8 @@ int main(int argc, char** argv) {
     }
     for (auto& r : readers_m) r->thread = std::thread([rp = r.get()] { rp->run(); });
     result["window"] = {{"start_wall_s", static_cast<double>(win_start) * 1e-9},
-                        {"end_wall_s", static_cast<double>(win_end) * 1e-9}, {"measure_s", measure_s}};
+                        {"end_wall_s", static_cast<double>(win_end) * 1e-9},
+                        {"measure_s", measure_s}};
     while (!g_stop && wall_time_ns() < win_end + 50'000'000) {
       if (health.sub) health.poll();
       std::this_thread::sleep_for(std::chrono::milliseconds(20));
@@ -710,18 +725,19 @@ int main(int argc, char** argv) {
         const bool covered = span >= contract.min_coverage * measure_s;
         const bool in_rate = std::fabs(rate - r->nominal_hz) <= contract.rate_tolerance * r->nominal_hz;
         std::string d = num("%.2f Hz", rate) + " (nominal " + num("%g", r->nominal_hz) + " Hz +- " +
-                        num("%g", contract.rate_tolerance * 100) + " %), " + std::to_string(r->count) + " samples over " +
-                        num("%.2f", span) + " s of the " + num("%g", measure_s) + " s window, max gap " +
-                        num("%.1f", static_cast<double>(r->max_gap) * 1e-6) + " ms";
+                        num("%g", contract.rate_tolerance * 100) + " %), " + std::to_string(r->count) +
+                        " samples over " + num("%.2f", span) + " s of the " + num("%g", measure_s) +
+                        " s window, max gap " + num("%.1f", static_cast<double>(r->max_gap) * 1e-6) + " ms";
         if (!covered) d += "; the samples do not cover " + num("%g", contract.min_coverage * 100) + " % of the window";
         checks.add("rate." + name, in_rate && covered && r->count > 1, d);
       } else {
-        checks.add("rate." + name, false, "not in the contract: no nominal rate (" + std::to_string(r->count) + " samples)");
+        checks.add("rate." + name, false,
+                   "not in the contract: no nominal rate (" + std::to_string(r->count) + " samples)");
       }
       const bool headers_ok = r->count > 0 && r->seq_errors == 0 && r->data_time_errors == 0 && r->origin_errors == 0;
       std::string hd = std::to_string(r->count) + " samples: seq strictly increasing, data time within " +
-                       num("%g", contract.max_data_age_s) + " s of receipt (max " + num("%.1f", r->max_age_seen_s * 1e3) +
-                       " ms), origin > 0";
+                       num("%g", contract.max_data_age_s) + " s of receipt (max " +
+                       num("%.1f", r->max_age_seen_s * 1e3) + " ms), origin > 0";
       if (!headers_ok)
         hd = std::to_string(r->seq_errors) + " seq error(s) " + r->first_seq_error + "; " +
              std::to_string(r->data_time_errors) + " data time error(s), " + std::to_string(r->origin_errors) +
@@ -729,8 +745,8 @@ int main(int argc, char** argv) {
       checks.add("headers." + name, headers_ok, hd);
       const bool values_ok = r->count > 0 && r->bad_values == 0 && r->refused == 0;
       checks.add("values." + name, values_ok,
-                 values_ok ? std::to_string(r->count) + " samples: every value finite, |v| < " + num("%g", contract.value_bound) +
-                                 (r->wire ? ", edge check passed" : "")
+                 values_ok ? std::to_string(r->count) + " samples: every value finite, |v| < " +
+                                 num("%g", contract.value_bound) + (r->wire ? ", edge check passed" : "")
                            : std::to_string(r->bad_values) + " bad value(s) (first " + r->first_bad_value + "), " +
                                  std::to_string(r->refused) + " edge-check refusal(s) " + r->first_refusal +
                                  (r->count == 0 ? "; no sample" : ""));
@@ -781,15 +797,16 @@ int main(int argc, char** argv) {
         const double forward = dx * c0 + dy * s0, sideways = std::fabs(-dx * s0 + dy * c0);
         const bool step_ok = p0.ok() && p1.ok() && cmd_pub.matched_count() > 0 && forward > contract.min_forward_m &&
                              sideways < contract.max_sideways_m;
-        std::string sd = std::to_string(sent) + " commands v=" + num("%g", contract.v) + " omega=" + num("%g", contract.omega) +
-                         " in " + num("%.2f", drive_took) + " s: truth " + pose_text(p0) + " -> " + pose_text(p1) +
-                         ", forward " + num("%.3f", forward) + " m (> " + num("%g", contract.min_forward_m) + "), sideways " +
-                         num("%.4f", sideways) + " m (< " + num("%g", contract.max_sideways_m) + ")";
+        std::string sd = std::to_string(sent) + " commands v=" + num("%g", contract.v) +
+                         " omega=" + num("%g", contract.omega) + " in " + num("%.2f", drive_took) + " s: truth " +
+                         pose_text(p0) + " -> " + pose_text(p1) + ", forward " + num("%.3f", forward) + " m (> " +
+                         num("%g", contract.min_forward_m) + "), sideways " + num("%.4f", sideways) + " m (< " +
+                         num("%g", contract.max_sideways_m) + ")";
         if (cmd_pub.matched_count() == 0) sd += "; the command writer matched no reader";
         if (!p0.ok() || !p1.ok()) sd += "; no fresh truth sample";
         checks.add("drive.step", step_ok, sd);
-        dj = {{"commands_sent", sent}, {"writes_refused", refused_writes}, {"forward_m", forward},
-              {"sideways_m", sideways}, {"start", pose_text(p0)}, {"end", pose_text(p1)}};
+        dj = {{"commands_sent", sent},  {"writes_refused", refused_writes}, {"forward_m", forward},
+              {"sideways_m", sideways}, {"start", pose_text(p0)},           {"end", pose_text(p1)}};
 
         // Silence: after the grace period the robot must stand still, its truth still live.
         sleep_for_s(contract.stale_grace_s);
@@ -814,19 +831,21 @@ int main(int argc, char** argv) {
         const bool still_ok = pa.ok() && pb.ok() && moved < contract.max_still_m && live_ok;
         std::string td = "commands stopped; " + num("%g", contract.stale_grace_s) + " s later truth " + pose_text(pa) +
                          ", " + num("%g", contract.still_window_s) + " s after that " + pose_text(pb) + ": moved " +
-                         num("%.5f", moved) + " m (< " + num("%g", contract.max_still_m) + "), " + std::to_string(live) +
-                         " truth samples meanwhile";
+                         num("%.5f", moved) + " m (< " + num("%g", contract.max_still_m) + "), " +
+                         std::to_string(live) + " truth samples meanwhile";
         if (!live_ok) td += " (too few: the truth is not live, so standing still proves nothing)";
         if (health.sub) {
           health.poll();
           const auto& before = hb_drive.link();
           const auto& after = health.latest.link();
-          const bool stops = hb_drive_count > 0 && health.count > hb_drive_count && after.stop_frames() > before.stop_frames();
-          td += "; " + health_topic + ": stop_frames " + std::to_string(before.stop_frames()) + " at the end of the drive -> " +
-                std::to_string(after.stop_frames()) + " " + num("%g", contract.stale_grace_s + contract.still_window_s) +
-                " s later";
-          if (!stops) td += " (no STOP frame sent after the commands stopped" +
-                            std::string(health.count == 0 ? ", no heartbeat received)" : ")");
+          const bool stops =
+              hb_drive_count > 0 && health.count > hb_drive_count && after.stop_frames() > before.stop_frames();
+          td += "; " + health_topic + ": stop_frames " + std::to_string(before.stop_frames()) +
+                " at the end of the drive -> " + std::to_string(after.stop_frames()) + " " +
+                num("%g", contract.stale_grace_s + contract.still_window_s) + " s later";
+          if (!stops)
+            td += " (no STOP frame sent after the commands stopped" +
+                  std::string(health.count == 0 ? ", no heartbeat received)" : ")");
           dj["link_at_drive_end"] = link_json(before);
           dj["link_after_stale"] = link_json(after);
           dj["heartbeats"] = health.count;

@@ -17,11 +17,11 @@
 // decode them to the same sample; a decoded sample serializes again within the type's
 // largest size, to bytes that decode to the same sample; its JSON (plexus topic echo) prints.
 // A sample the edge check accepts has every field finite and within its range.
-#include <fastdds/dds/topic/TopicDataType.hpp>
 #include <fastdds/rtps/common/SerializedPayload.h>
+#include <fastdds/dds/topic/TopicDataType.hpp>
 
-#include <nlohmann/json.hpp>
 #include <spdlog/spdlog.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -58,7 +58,8 @@ struct Sample {
 std::vector<unsigned char> serialize(const msg::TypeSupport& ts, const void* sample) {
   std::vector<unsigned char> buf(ts.max_cdr_size);
   const std::size_t n = ts.serialize(sample, buf.data(), buf.size());
-  if (n == 0) finding(std::string(ts.type_name) + ": a decoded sample does not serialize within the type's largest size");
+  if (n == 0)
+    finding(std::string(ts.type_name) + ": a decoded sample does not serialize within the type's largest size");
   buf.resize(n);
   return buf;
 }
@@ -158,8 +159,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
   const bool ok_cyc = decode_cyclone(ts, data, size, cyc.p);
   const bool ok_fast = decode_fast(ts, data, size, fast.p);
   if (ok_cyc != ok_fast)
-    finding(std::string(ts.type_name) + ": the vendors' decode paths disagree: Cyclone " + (ok_cyc ? "accepts" : "refuses") +
-            ", Fast DDS " + (ok_fast ? "accepts" : "refuses"));
+    finding(std::string(ts.type_name) + ": the vendors' decode paths disagree: Cyclone " +
+            (ok_cyc ? "accepts" : "refuses") + ", Fast DDS " + (ok_fast ? "accepts" : "refuses"));
   if (!ok_cyc) return 0;
 
   const auto bytes = serialize(ts, cyc.p);

@@ -102,10 +102,11 @@ void recording_seed(const fs::path& dir) {
     plexus::cli::RecordingWriter w(file.string());
     const auto& pos = msg::type_support<msg::PositionMeasurement>();
     const auto& beat = msg::type_support<msg::Heartbeat>();
-    const int64_t a = w.add_topic("r1/position", pos.type_name,
-                                  R"({"reliability":"best_effort","durability":"volatile","history":"keep_last","depth":1,)"
-                                  R"("deadline_s":0.0,"liveliness":"automatic","liveliness_lease_s":0.0,"lifespan_s":0.0,)"
-                                  R"("latency_budget_s":0.0,"ownership":"shared","data_representation":[0]})");
+    const int64_t a =
+        w.add_topic("r1/position", pos.type_name,
+                    R"({"reliability":"best_effort","durability":"volatile","history":"keep_last","depth":1,)"
+                    R"("deadline_s":0.0,"liveliness":"automatic","liveliness_lease_s":0.0,"lifespan_s":0.0,)"
+                    R"("latency_budget_s":0.0,"ownership":"shared","data_representation":[0]})");
     const int64_t b = w.add_topic("health/observer", beat.type_name, "");
     std::vector<plexus::cli::RecordedMessage> batch;
     for (int k = 0; k < 3; ++k)

@@ -61,7 +61,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
     }
   } catch (const plexus::InputError& e) {
     plexus::fuzz::check_one_line(e.what());
-    if (std::string(e.what()).rfind(origin, 0) != 0) finding(std::string("the refusal does not name the file: ") + e.what());
+    if (std::string(e.what()).rfind(origin, 0) != 0)
+      finding(std::string("the refusal does not name the file: ") + e.what());
   } catch (const std::exception& e) {
     finding(std::string("an exception other than InputError escaped the QoS parser: ") + typeid(e).name() + ": " +
             e.what());

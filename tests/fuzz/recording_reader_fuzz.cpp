@@ -71,7 +71,8 @@ std::string qos_json(FuzzedDataProvider& in) {
     case 1:  // the shape plexus record writes, with fuzzed values
       return std::string("{\"reliability\":\"") + (in.ConsumeBool() ? "reliable" : "best_effort") +
              "\",\"durability\":\"" + (in.ConsumeBool() ? "volatile" : "transient") + "\",\"history\":\"" +
-             (in.ConsumeBool() ? "keep_last" : "keep_all") + "\",\"depth\":" + std::to_string(in.ConsumeIntegral<int64_t>()) +
+             (in.ConsumeBool() ? "keep_last" : "keep_all") +
+             "\",\"depth\":" + std::to_string(in.ConsumeIntegral<int64_t>()) +
              ",\"deadline_s\":" + std::to_string(in.ConsumeFloatingPoint<double>()) + ",\"liveliness\":\"automatic\"," +
              "\"liveliness_lease_s\":" + std::to_string(in.ConsumeIntegral<int32_t>()) + ",\"lifespan_s\":0," +
              "\"latency_budget_s\":1e9,\"ownership\":\"shared\",\"data_representation\":[0]}";
@@ -144,7 +145,8 @@ void bind_any(FuzzedDataProvider& in, sqlite3_stmt* st, int column) {
 void write_with_sql(FuzzedDataProvider& in) {
   sqlite3* db = nullptr;
   if (sqlite3_open(recording_path().c_str(), &db) != SQLITE_OK) finding("cannot create " + recording_path());
-  const bool topics_table = in.ConsumeProbability<float>() < 0.95f, messages_table = in.ConsumeProbability<float>() < 0.95f;
+  const bool topics_table = in.ConsumeProbability<float>() < 0.95f,
+             messages_table = in.ConsumeProbability<float>() < 0.95f;
   if (topics_table) sqlite3_exec(db, "CREATE TABLE topics(id, name, type, qos)", nullptr, nullptr, nullptr);
   if (messages_table)
     sqlite3_exec(db,
@@ -155,10 +157,22 @@ void write_with_sql(FuzzedDataProvider& in) {
   const int topics = in.ConsumeIntegralInRange(0, 4);
   if (topics_table && sqlite3_prepare_v2(db, "INSERT INTO topics VALUES(?,?,?,?)", -1, &st, nullptr) == SQLITE_OK) {
     for (int i = 0; i < topics; ++i) {
-      if (in.ConsumeBool()) sqlite3_bind_int64(st, 1, i + 1); else bind_any(in, st, 1);
-      if (in.ConsumeBool()) sqlite3_bind_text(st, 2, ("t" + std::to_string(i)).c_str(), -1, SQLITE_TRANSIENT); else bind_any(in, st, 2);
-      if (in.ConsumeBool()) sqlite3_bind_text(st, 3, type_name(in).c_str(), -1, SQLITE_TRANSIENT); else bind_any(in, st, 3);
-      if (in.ConsumeBool()) sqlite3_bind_text(st, 4, qos_json(in).c_str(), -1, SQLITE_TRANSIENT); else bind_any(in, st, 4);
+      if (in.ConsumeBool())
+        sqlite3_bind_int64(st, 1, i + 1);
+      else
+        bind_any(in, st, 1);
+      if (in.ConsumeBool())
+        sqlite3_bind_text(st, 2, ("t" + std::to_string(i)).c_str(), -1, SQLITE_TRANSIENT);
+      else
+        bind_any(in, st, 2);
+      if (in.ConsumeBool())
+        sqlite3_bind_text(st, 3, type_name(in).c_str(), -1, SQLITE_TRANSIENT);
+      else
+        bind_any(in, st, 3);
+      if (in.ConsumeBool())
+        sqlite3_bind_text(st, 4, qos_json(in).c_str(), -1, SQLITE_TRANSIENT);
+      else
+        bind_any(in, st, 4);
       sqlite3_step(st);
       sqlite3_reset(st);
     }
@@ -167,11 +181,16 @@ void write_with_sql(FuzzedDataProvider& in) {
   st = nullptr;
   const int messages = in.ConsumeIntegralInRange(0, 16);
   if (messages_table &&
-      sqlite3_prepare_v2(db, "INSERT INTO messages(topic_id, receive_time_ns, seq_num, data_time_ns, origin_time_ns,"
-                             " publish_time_ns, cdr) VALUES(?,?,?,?,?,?,?)", -1, &st, nullptr) == SQLITE_OK) {
+      sqlite3_prepare_v2(db,
+                         "INSERT INTO messages(topic_id, receive_time_ns, seq_num, data_time_ns, origin_time_ns,"
+                         " publish_time_ns, cdr) VALUES(?,?,?,?,?,?,?)",
+                         -1, &st, nullptr) == SQLITE_OK) {
     for (int i = 0; i < messages; ++i) {
       for (int c = 1; c <= 6; ++c)
-        if (in.ConsumeBool()) sqlite3_bind_int64(st, c, c == 1 ? in.ConsumeIntegralInRange(1, 4) : time_ns(in)); else bind_any(in, st, c);
+        if (in.ConsumeBool())
+          sqlite3_bind_int64(st, c, c == 1 ? in.ConsumeIntegralInRange(1, 4) : time_ns(in));
+        else
+          bind_any(in, st, c);
       if (in.ConsumeBool()) {
         const auto b = cdr(in);
         sqlite3_bind_blob(st, 7, b.data(), static_cast<int>(b.size()), SQLITE_TRANSIENT);

@@ -39,7 +39,8 @@ void load(const YAML::Node& root, bool partial) {
     if (std::string(e.what()).find(origin) == std::string::npos)
       finding(std::string("the refusal does not name the file: ") + e.what());
   } catch (const std::exception& e) {
-    finding(std::string("an exception other than InputError escaped the loader: ") + typeid(e).name() + ": " + e.what());
+    finding(std::string("an exception other than InputError escaped the loader: ") + typeid(e).name() + ": " +
+            e.what());
   }
 }
 

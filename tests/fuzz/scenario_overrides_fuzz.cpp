@@ -112,7 +112,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
     if (what.find(origin) == std::string::npos && what.find("--set ") == std::string::npos)
       finding("the refusal names neither the file nor the --set argument: " + what);
   } catch (const std::exception& e) {
-    finding(std::string("an exception other than InputError escaped the loader: ") + typeid(e).name() + ": " + e.what());
+    finding(std::string("an exception other than InputError escaped the loader: ") + typeid(e).name() + ": " +
+            e.what());
   }
   return 0;
 }

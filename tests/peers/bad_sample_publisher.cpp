@@ -61,7 +61,8 @@ int main(int argc, char** argv) {
       // writer (the writer saw it first, under load) still gets every sample, since the one
       // kept (keep_last 1) is resent until acknowledged; and the 20 ms spacing lets a 100 Hz
       // reader take each one before the next replaces it.
-      if (!pub.wait_for_acks(5'000'000'000)) throw std::runtime_error("sample " + std::to_string(i + 1) + " of " + topic + " not acknowledged within 5 s");
+      if (!pub.wait_for_acks(5'000'000'000))
+        throw std::runtime_error("sample " + std::to_string(i + 1) + " of " + topic + " not acknowledged within 5 s");
       std::this_thread::sleep_for(std::chrono::milliseconds(20));
     }
     std::printf("published %d samples of %s with %s = %s\n", count, topic.c_str(), field.c_str(), value.c_str());

@@ -31,10 +31,10 @@ inline void fill_pattern(const msg::TypeSupport& ts, void* sample, uint64_t seq)
   std::vector<unsigned char> buf(ts.max_cdr_size);
   const std::size_t n = ts.serialize(sample, buf.data(), buf.size());
   const int64_t now = wall_time_ns();
-  std::memcpy(buf.data() + 4, &seq, 8);        // seq_num
-  std::memcpy(buf.data() + 4 + 8, &now, 8);    // data_time_ns
-  std::memcpy(buf.data() + 4 + 16, &now, 8);   // origin_time_ns
-  std::memcpy(buf.data() + 4 + 24, &now, 8);   // publish_time_ns
+  std::memcpy(buf.data() + 4, &seq, 8);       // seq_num
+  std::memcpy(buf.data() + 4 + 8, &now, 8);   // data_time_ns
+  std::memcpy(buf.data() + 4 + 16, &now, 8);  // origin_time_ns
+  std::memcpy(buf.data() + 4 + 24, &now, 8);  // publish_time_ns
   const std::size_t salt = type_salt(ts.type_name);
   for (std::size_t i = kHeaderEnd; i < n; ++i) buf[i] = pattern_byte(i, seq, salt);
   ts.deserialize(buf.data(), n, sample);

@@ -14,6 +14,8 @@
 // Every endpoint: reliable, keep-last 1, volatile, no data sharing, XCDR1. Network and
 // discovery exactly as native_fast_peer.cpp: UDPv4 on 127.0.0.1 only (no shared memory),
 // unicast discovery to the 32 well-known ports of the domain, no multicast.
+#include <fastdds/rtps/transport/UDPv4TransportDescriptor.h>
+#include <fastrtps/utils/IPLocator.h>
 #include <fastdds/dds/domain/DomainParticipant.hpp>
 #include <fastdds/dds/domain/DomainParticipantFactory.hpp>
 #include <fastdds/dds/publisher/DataWriter.hpp>
@@ -23,8 +25,6 @@
 #include <fastdds/dds/subscriber/SampleInfo.hpp>
 #include <fastdds/dds/subscriber/Subscriber.hpp>
 #include <fastdds/dds/topic/Topic.hpp>
-#include <fastdds/rtps/transport/UDPv4TransportDescriptor.h>
-#include <fastrtps/utils/IPLocator.h>
 
 #include <cerrno>
 #include <cmath>
@@ -247,7 +247,8 @@ int main(int argc, char** argv) {
   CommandListener listener;
   DataWriter* w_pos = (t_pos && pub) ? pub->create_datawriter(t_pos, wq) : nullptr;
   DataWriter* w_truth = (t_truth && pub) ? pub->create_datawriter(t_truth, wq) : nullptr;
-  DataReader* r_cmd = (t_cmd && sub) ? sub->create_datareader(t_cmd, rq, &listener, StatusMask::data_available()) : nullptr;
+  DataReader* r_cmd =
+      (t_cmd && sub) ? sub->create_datareader(t_cmd, rq, &listener, StatusMask::data_available()) : nullptr;
   if (!w_pos || !w_truth || !r_cmd) {
     std::fprintf(stderr, "%s: cannot create endpoints\n", kProg);
     if (r_cmd) r_cmd->set_listener(nullptr);
@@ -260,7 +261,9 @@ int main(int argc, char** argv) {
   // published at the first step ending at or after that time.
   const double h = 1.0 / o.rate;
   const int64_t last_step = o.duration > 0.0 ? static_cast<int64_t>(std::llround(o.duration * o.rate)) : INT64_MAX;
-  const auto step_offset = [&](int64_t k) { return static_cast<int64_t>(std::llround(static_cast<double>(k) * 1e9 / o.rate)); };
+  const auto step_offset = [&](int64_t k) {
+    return static_cast<int64_t>(std::llround(static_cast<double>(k) * 1e9 / o.rate));
+  };
   const auto sensor_offset = [&](int64_t j) {
     return static_cast<int64_t>(std::llround(static_cast<double>(j) * 1e9 / o.sensor_rate));
   };
@@ -298,8 +301,7 @@ int main(int argc, char** argv) {
 
     const int64_t deadline = t0 + step_offset(k + 1);
     const timespec ts{static_cast<time_t>(deadline / 1'000'000'000LL), static_cast<long>(deadline % 1'000'000'000LL)};
-    while (clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &ts, nullptr) == EINTR && !g_stop) {
-    }
+    while (clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &ts, nullptr) == EINTR && !g_stop) {}
     if (g_stop) break;
 
     double v = 0.0, w = 0.0;

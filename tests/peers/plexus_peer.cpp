@@ -17,11 +17,11 @@
 #include <vector>
 
 #include "message_pattern.hpp"
-#include "simple_values.hpp"
 #include "plexus/base/clock.hpp"
 #include "plexus/base/input_error.hpp"
 #include "plexus/base/logging.hpp"
 #include "plexus/runtime/participant.hpp"
+#include "simple_values.hpp"
 
 namespace {
 
@@ -98,7 +98,8 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
 
   try {
-    init_logging("peer-" + role + "-" + dds, "", std::getenv("PLEXUS_LOG_LEVEL") ? std::getenv("PLEXUS_LOG_LEVEL") : "warn");
+    init_logging("peer-" + role + "-" + dds, "",
+                 std::getenv("PLEXUS_LOG_LEVEL") ? std::getenv("PLEXUS_LOG_LEVEL") : "warn");
     rt::ParticipantOptions po;
     po.vendor = rt::parse_vendor(dds);
     po.domain_id = domain;
@@ -117,7 +118,8 @@ int main(int argc, char** argv) {
     qos.durability = rt::QosProfile::Durability::transient_local;
 
     std::vector<Endpoints> eps;
-    std::apply([&](auto... t) { (add<decltype(t)>(eps, types, prefix, values == "simple"), ...); }, msg::AllTopicTypes{});
+    std::apply([&](auto... t) { (add<decltype(t)>(eps, types, prefix, values == "simple"), ...); },
+               msg::AllTopicTypes{});
     if (eps.empty()) throw InputError("--types: unknown type '" + types + "'");
     const int64_t deadline = monotonic_ns() + static_cast<int64_t>(timeout_s * 1e9);
 

@@ -28,7 +28,8 @@ int main(int argc, char** argv) {
   using namespace plexus;
   CLI::App app{"security_probe: one topic, with or without DDS Security"};
   app.require_subcommand(1);
-  std::string dds = "fast", topic = "secure/probe", label = "plexus-probe", pki, identity, governance, transport = "auto";
+  std::string dds = "fast", topic = "secure/probe", label = "plexus-probe", pki, identity, governance,
+              transport = "auto";
   int domain = 100, expect = 1;
   double duration = 10, min_duration = 0;
   for (auto* sub : {app.add_subcommand("pub", "publish"), app.add_subcommand("sub", "subscribe")}) {
@@ -43,7 +44,8 @@ int main(int argc, char** argv) {
     sub->add_option("--transport", transport, "auto, udp or shm (a capture sees only udp)");
   }
   app.get_subcommand("sub")->add_option("--expect", expect, "samples with the label to wait for (0: none may arrive)");
-  app.get_subcommand("sub")->add_option("--min-duration", min_duration, "seconds to read at least (intruders publish too)");
+  app.get_subcommand("sub")->add_option("--min-duration", min_duration,
+                                        "seconds to read at least (intruders publish too)");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

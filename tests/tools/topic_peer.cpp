@@ -64,7 +64,8 @@ int main(int argc, char** argv) {
           while (sub.take(m)) ++received;
       }
       if (received < expect) {
-        std::fprintf(stderr, "topic_peer sub: %d samples on %s, expected at least %d\n", received, topic.c_str(), expect);
+        std::fprintf(stderr, "topic_peer sub: %d samples on %s, expected at least %d\n", received, topic.c_str(),
+                     expect);
         return 1;
       }
       return 0;

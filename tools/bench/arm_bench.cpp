@@ -12,8 +12,8 @@
 #include <cmath>
 #include <vector>
 
-#include "plexus/algorithms/arm/ct_pd_controller.hpp"
 #include "plexus/algorithms/arm/chain_dynamics.hpp"
+#include "plexus/algorithms/arm/ct_pd_controller.hpp"
 #include "plexus/algorithms/arm/flexible_joint_ekf.hpp"
 #include "plexus/algorithms/arm/flexible_joint_plant.hpp"
 #include "plexus/algorithms/arm/vdc_controller.hpp"

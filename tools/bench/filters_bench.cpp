@@ -28,9 +28,9 @@ AttitudeModel make_model() {
   return AttitudeModel(p);
 }
 
-const Eigen::Matrix3d kQ = Eigen::Vector3d(std::pow(0.2 * M_PI / 180, 2), std::pow(0.05 * M_PI / 180, 2),
-                                           std::pow(0.3 * M_PI / 180, 2))
-                               .asDiagonal();
+const Eigen::Matrix3d kQ =
+    Eigen::Vector3d(std::pow(0.2 * M_PI / 180, 2), std::pow(0.05 * M_PI / 180, 2), std::pow(0.3 * M_PI / 180, 2))
+        .asDiagonal();
 const V1 kR(std::pow(0.2 * M_PI / 180, 2));
 
 /// A deterministic measurement sequence (a slow tilt oscillation), no RNG in the loop.
@@ -43,8 +43,9 @@ void BM_UkfAugmentedStep(benchmark::State& state) {
   int k = 0;
   for (auto _ : state) {
     const double T = 0.1 * std::sin(0.01 * k);
-    ukf.predict([&](const Eigen::Vector3d& x, const Eigen::Vector3d& w) -> Eigen::Vector3d { return m.predict(x, T) + w; },
-                kQ, kR);
+    ukf.predict(
+        [&](const Eigen::Vector3d& x, const Eigen::Vector3d& w) -> Eigen::Vector3d { return m.predict(x, T) + w; }, kQ,
+        kR);
     ukf.update<1>(V1(measurement(k++)), [](const Eigen::Vector3d& x, const V1& v) -> V1 { return V1(x(0) + v(0)); });
     benchmark::DoNotOptimize(ukf.state());
   }
@@ -59,7 +60,8 @@ void BM_UkfAdditiveStep(benchmark::State& state) {
   for (auto _ : state) {
     const double T = 0.1 * std::sin(0.01 * k);
     ukf.predict([&](const Eigen::Vector3d& x) -> Eigen::Vector3d { return m.predict(x, T); }, kQ);
-    ukf.update<1>(V1(measurement(k++)), [](const Eigen::Vector3d& x) -> V1 { return V1(x(0)); }, kR);
+    ukf.update<1>(
+        V1(measurement(k++)), [](const Eigen::Vector3d& x) -> V1 { return V1(x(0)); }, kR);
     benchmark::DoNotOptimize(ukf.state());
   }
 }

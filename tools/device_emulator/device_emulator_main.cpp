@@ -83,10 +83,11 @@ nlohmann::ordered_json rx_json(const link::DecoderCounters& d, uint64_t bytes) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{std::string(kName) +
-               ": a robot's device (plant and sensors, as plant_simulator runs them) on the far end of a bridge's link: "
-               "bridge-protocol frames on a pty or UDP, with a command watchdog, line-rate pacing and scripted faults "
-               "(tools/device_emulator/README.md)"};
+  CLI::App app{
+      std::string(kName) +
+      ": a robot's device (plant and sensors, as plant_simulator runs them) on the far end of a bridge's link: "
+      "bridge-protocol frames on a pty or UDP, with a command watchdog, line-rate pacing and scripted faults "
+      "(tools/device_emulator/README.md)"};
   app.set_version_flag("--version", std::string(kName) + " " + PLEXUS_VERSION);
   scenario::StandaloneSpec alone;
   alone.program = kName;
@@ -98,18 +99,23 @@ int main(int argc, char** argv) {
   double duration = 0.0;
   int64_t seed = 1;
   std::size_t tx_buffer = 64 * 1024;
-  app.add_option("--params", alone.params_file, "YAML robot section: plant and sensors (e.g. deploy/params/unicycle_robot.yaml)");
+  app.add_option("--params", alone.params_file,
+                 "YAML robot section: plant and sensors (e.g. deploy/params/unicycle_robot.yaml)");
   app.add_option("--robot", alone.robot, "Robot name with --params (default r1)");
   app.add_option("--step", alone.step, "Base step in s with --params (default 0.001)");
-  app.add_option("--set", sets, "Override key=value (--params: a key of the robot section; --part: a dotted key of the part)");
+  app.add_option("--set", sets,
+                 "Override key=value (--params: a key of the robot section; --part: a dotted key of the part)");
   app.add_option("--part", part_file, "A robot's part of a scenario, written by plexus launch (in place of --params)");
-  app.add_option("--pty", pty, "Create a pseudo-terminal; LINKPATH becomes a symlink to its slave (the bridge's device)");
+  app.add_option("--pty", pty,
+                 "Create a pseudo-terminal; LINKPATH becomes a symlink to its slave (the bridge's device)");
   app.add_option("--udp-bind", udp_bind, "ADDR:PORT the emulator receives on (with --udp-peer)");
   app.add_option("--udp-peer", udp_peer, "ADDR:PORT of the bridge (with --udp-bind)");
-  app.add_option("--baud", baud, "Line rate the output is paced at, 8N1: 115200 .. 1000000; 0: unpaced (default 1000000)");
+  app.add_option("--baud", baud,
+                 "Line rate the output is paced at, 8N1: 115200 .. 1000000; 0: unpaced (default 1000000)");
   app.add_option("--tx-buffer", tx_buffer, "TX ring in bytes: frames that find it full are dropped (default 65536)");
   app.add_option("--watchdog-ms", watchdog_ms, "No valid command for this long: zero command (default 100)");
-  app.add_option("--fault", fault_specs, "KIND@T[:key=value,...] (flip, drop, garbage, oversize, poison, stall, unplug); repeatable");
+  app.add_option("--fault", fault_specs,
+                 "KIND@T[:key=value,...] (flip, drop, garbage, oversize, poison, stall, unplug); repeatable");
   app.add_option("--faults", faults_file, "YAML list of faults: - {kind: flip, at: 1.5, count: 3}");
   app.add_option("--seed", seed, "Seed of the faults' random choices (default 1)");
   app.add_option("--duration", duration, "Run this many seconds (default: until SIGINT/SIGTERM)");
@@ -127,10 +133,12 @@ int main(int argc, char** argv) {
   try {
     // --- options
     const bool udp = !udp_bind.empty() || !udp_peer.empty();
-    if (pty.empty() == !udp) throw InputError("expected exactly one link: --pty LINKPATH, or --udp-bind and --udp-peer");
+    if (pty.empty() == !udp)
+      throw InputError("expected exactly one link: --pty LINKPATH, or --udp-bind and --udp-peer");
     emulator::LinkOptions lo;
     if (udp) {
-      if (udp_bind.empty() || udp_peer.empty()) throw InputError("--udp-bind and --udp-peer: both are required (ADDR:PORT each)");
+      if (udp_bind.empty() || udp_peer.empty())
+        throw InputError("--udp-bind and --udp-peer: both are required (ADDR:PORT each)");
       std::string error;
       if (!link::parse_endpoint(udp_bind, "--udp-bind", lo.bind, error) ||
           !link::parse_endpoint(udp_peer, "--udp-peer", lo.peer, error))
@@ -143,7 +151,8 @@ int main(int argc, char** argv) {
       throw InputError("--baud " + std::to_string(baud) + ": expected 115200 .. 1000000, or 0 (unpaced)");
     lo.baud = baud;
     if (watchdog_ms <= 0 || watchdog_ms > 3'600'000)
-      throw InputError("--watchdog-ms " + std::to_string(watchdog_ms) + ": expected milliseconds > 0 (at most an hour)");
+      throw InputError("--watchdog-ms " + std::to_string(watchdog_ms) +
+                       ": expected milliseconds > 0 (at most an hour)");
     if (duration < 0.0 || duration > 1e7 || !std::isfinite(duration))
       throw InputError("--duration " + app["--duration"]->as<std::string>() + ": expected seconds > 0 (at most 1e7)");
     if (app.count("--duration") && duration == 0.0) throw InputError("--duration 0: expected seconds > 0");
@@ -156,7 +165,8 @@ int main(int argc, char** argv) {
     if (!faults_file.empty())
       for (auto& f : emulator::load_fault_file(faults_file)) faults.push_back(std::move(f));
     for (const auto& f : faults)
-      if ((f.kind == emulator::FaultKind::garbage || f.kind == emulator::FaultKind::oversize) && f.bytes + 1 > tx_buffer)
+      if ((f.kind == emulator::FaultKind::garbage || f.kind == emulator::FaultKind::oversize) &&
+          f.bytes + 1 > tx_buffer)
         throw InputError(f.origin + ": " + std::to_string(f.bytes) + " bytes do not fit the TX ring (--tx-buffer " +
                          std::to_string(tx_buffer) + ")");
 
@@ -164,22 +174,26 @@ int main(int argc, char** argv) {
     init_logging(kName, "", log_level);
     scenario::Scenario sc;
     if (!part_file.empty()) {
-      if (!alone.params_file.empty()) throw InputError("--part and --params: give one (a part holds its robot section)");
+      if (!alone.params_file.empty())
+        throw InputError("--part and --params: give one (a part holds its robot section)");
       if (app.count("--robot") || app.count("--step"))
         throw InputError("--part: the robot and the step come from the part; drop --robot and --step");
       std::vector<scenario::Override> overrides;
       for (const auto& s : sets) overrides.push_back(scenario::parse_override(s));
       sc = scenario::load_scenario(part_file, overrides, {.partial = true});
     } else {
-      if (alone.params_file.empty()) throw InputError("--params ROBOT.yaml or --part FILE: required (the robot to emulate)");
+      if (alone.params_file.empty())
+        throw InputError("--params ROBOT.yaml or --part FILE: required (the robot to emulate)");
       if (app.count("--step") && !(alone.step >= kMinStep && std::isfinite(alone.step)))
-        throw InputError("--step " + app["--step"]->as<std::string>() + ": expected seconds >= 0.00001 (at most 100 kHz)");
+        throw InputError("--step " + app["--step"]->as<std::string>() +
+                         ": expected seconds >= 0.00001 (at most 100 kHz)");
       sc = scenario::load_standalone(alone, sets, true);
     }
     // A launched process keeps quiet about the scenario's warnings: `plexus launch` said them once.
     scenario::log_warnings(sc, {}, !part_file.empty());
     if (!(sc.step >= kMinStep))
-      throw InputError(sc.file + ": step " + std::to_string(sc.step) + ": expected seconds >= 0.00001 (at most 100 kHz)");
+      throw InputError(sc.file + ": step " + std::to_string(sc.step) +
+                       ": expected seconds >= 0.00001 (at most 100 kHz)");
     const int64_t watchdog_ns = watchdog_ms * 1'000'000;
     emulator::EmulatedDevice device(sc, watchdog_ns);
 

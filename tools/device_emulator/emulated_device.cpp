@@ -148,7 +148,8 @@ nlohmann::ordered_json EmulatedDevice::state() const {
   nlohmann::ordered_json j = nlohmann::ordered_json::object();
   if (truth_signal_ == SIZE_MAX) return j;
   const auto& spec = exec_.signals()[truth_signal_];
-  for (std::size_t i = 0; i < spec.fields.size() && i < scenario::kMaxSignalFields; ++i) j[spec.fields[i]] = truth_.values[i];
+  for (std::size_t i = 0; i < spec.fields.size() && i < scenario::kMaxSignalFields; ++i)
+    j[spec.fields[i]] = truth_.values[i];
   return j;
 }
 

@@ -41,7 +41,7 @@ bool EmulatorLink::open(std::string& error) {
 
 bool EmulatorLink::open_pty(std::string& error) {
   const std::string& path = opt_.pty_path;
-  struct stat st{};
+  struct stat st {};
   if (::lstat(path.c_str(), &st) == 0 && !S_ISLNK(st.st_mode)) {
     error = "--pty " + path + ": exists and is not a symlink (refusing to replace it)";
     return false;
@@ -116,7 +116,8 @@ bool EmulatorLink::reopen() {
   }
   ++c_.link_errors;
   uint64_t held = 0;
-  if (log_limit_.allow(monotonic_ns(), held)) spdlog::warn("reopen failed: {} ({} more since the last line)", error, held);
+  if (log_limit_.allow(monotonic_ns(), held))
+    spdlog::warn("reopen failed: {} ({} more since the last line)", error, held);
   return false;
 }
 
@@ -129,7 +130,8 @@ void EmulatorLink::count_error(const char* what, int err) {
   ++c_.link_errors;
   uint64_t held = 0;
   if (log_limit_.allow(monotonic_ns(), held))
-    spdlog::warn("link {} error: {} ({} more since the last line; all counted in link_errors)", what, std::strerror(err), held);
+    spdlog::warn("link {} error: {} ({} more since the last line; all counted in link_errors)", what,
+                 std::strerror(err), held);
 }
 
 std::size_t EmulatorLink::read_some() {

@@ -26,16 +26,16 @@ namespace plexus::emulator {
 struct LinkOptions {
   enum class Kind { pty, udp };
   Kind kind = Kind::pty;
-  std::string pty_path;          ///< pty: the symlink the bridge opens
-  link::UdpEndpoint bind, peer;  ///< udp
-  long baud = 1000000;           ///< 0: unpaced
-  int64_t period_ns = 1'000'000; ///< the loop's period: the most idle line time a flush may use
+  std::string pty_path;           ///< pty: the symlink the bridge opens
+  link::UdpEndpoint bind, peer;   ///< udp
+  long baud = 1000000;            ///< 0: unpaced
+  int64_t period_ns = 1'000'000;  ///< the loop's period: the most idle line time a flush may use
   std::size_t ring_bytes = 64 * 1024;
 };
 
 struct LinkCounters {
-  uint64_t frames_sent = 0;        ///< frames written whole
-  uint64_t bytes_sent = 0;         ///< every byte written (frames, fault bytes, resync delimiters)
+  uint64_t frames_sent = 0;  ///< frames written whole
+  uint64_t bytes_sent = 0;   ///< every byte written (frames, fault bytes, resync delimiters)
   uint64_t bytes_received = 0;
   uint64_t frames_dropped_tx = 0;  ///< frames that found the TX ring full
   uint64_t bytes_dropped_tx = 0;   ///< fault bytes that found the TX ring full
@@ -104,9 +104,9 @@ class EmulatorLink {
   bool line_free(int64_t now_ns, std::size_t& allowed);
 
   LinkOptions opt_;
-  int fd_ = -1;        // pty master or the UDP socket
-  int slave_fd_ = -1;  // pty: held open so the pty persists while no bridge has it open
-  std::string tmp_link_;   // pty: symlink written here, then renamed over pty_path
+  int fd_ = -1;           // pty master or the UDP socket
+  int slave_fd_ = -1;     // pty: held open so the pty persists while no bridge has it open
+  std::string tmp_link_;  // pty: symlink written here, then renamed over pty_path
   char slave_name_[128] = {};
 
   std::vector<uint8_t> ring_;

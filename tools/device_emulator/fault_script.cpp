@@ -70,8 +70,7 @@ bool parse_int(const std::string& s, int64_t lo, int64_t hi, int64_t& v) {
 
 double parse_time(const std::string& s, const std::string& where) {
   double t = 0.0;
-  if (!parse_double(s, t) || t < 0.0)
-    throw InputError(where + ": expected a time in seconds >= 0, got '" + s + "'");
+  if (!parse_double(s, t) || t < 0.0) throw InputError(where + ": expected a time in seconds >= 0, got '" + s + "'");
   return t;
 }
 
@@ -85,13 +84,14 @@ void set_param(Fault& f, const std::string& key, const std::string& value, const
     case FaultKind::flip:
     case FaultKind::poison:
       if (!parse_int(value, 1, kMaxCount, n))
-        throw InputError(where + ": expected a frame count 1 .. " + std::to_string(kMaxCount) + ", got '" + value + "'");
+        throw InputError(where + ": expected a frame count 1 .. " + std::to_string(kMaxCount) + ", got '" + value +
+                         "'");
       f.count = n;
       break;
     case FaultKind::drop:
       if (!parse_int(value, 1, static_cast<int64_t>(link::kMaxEncodedFrame), n))
-        throw InputError(where + ": expected bytes 1 .. " + std::to_string(link::kMaxEncodedFrame) + ", got '" +
-                         value + "'");
+        throw InputError(where + ": expected bytes 1 .. " + std::to_string(link::kMaxEncodedFrame) + ", got '" + value +
+                         "'");
       f.bytes = static_cast<std::size_t>(n);
       break;
     case FaultKind::garbage:
@@ -102,8 +102,8 @@ void set_param(Fault& f, const std::string& key, const std::string& value, const
     case FaultKind::oversize:
       if (!parse_int(value, static_cast<int64_t>(link::kMaxEncodedFrame), kMaxFaultBytes, n))
         throw InputError(where + ": expected bytes " + std::to_string(link::kMaxEncodedFrame) + " .. " +
-                         std::to_string(kMaxFaultBytes) + " (an oversize frame is longer than kMaxEncodedFrame), got '" +
-                         value + "'");
+                         std::to_string(kMaxFaultBytes) +
+                         " (an oversize frame is longer than kMaxEncodedFrame), got '" + value + "'");
       f.bytes = static_cast<std::size_t>(n);
       break;
     case FaultKind::stall:
@@ -158,8 +158,7 @@ Fault parse_fault_spec(const std::string& spec) {
 
 std::vector<Fault> load_fault_file(const std::string& path) {
   const YAML::Node root = load_yaml_file(path);
-  if (!root.IsSequence())
-    throw InputError(path + ": expected a list of faults (- {kind: flip, at: 1.0, count: 3})");
+  if (!root.IsSequence()) throw InputError(path + ": expected a list of faults (- {kind: flip, at: 1.0, count: 3})");
   std::vector<Fault> out;
   for (std::size_t i = 0; i < root.size(); ++i) {
     const YAML::Node n = root[i];

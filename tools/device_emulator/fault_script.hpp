@@ -28,17 +28,17 @@ const char* to_string(FaultKind kind);
 
 struct Fault {
   FaultKind kind = FaultKind::flip;
-  double at = 0.0;          ///< s since the start
-  int64_t count = 1;        ///< flip, poison: frames
-  std::size_t bytes = 0;    ///< drop, garbage, oversize
-  double for_s = 0.0;       ///< stall, unplug
-  std::string origin;       ///< "--fault flip@1" or "faults.yaml:3", for the log
+  double at = 0.0;        ///< s since the start
+  int64_t count = 1;      ///< flip, poison: frames
+  std::size_t bytes = 0;  ///< drop, garbage, oversize
+  double for_s = 0.0;     ///< stall, unplug
+  std::string origin;     ///< "--fault flip@1" or "faults.yaml:3", for the log
 
   // Progress, set by FaultInjector.
   bool started = false;
-  bool applied = false;     ///< it has happened in full (every frame it names, the whole stall)
-  double started_at = -1.0; ///< s since the start
-  int64_t frames = 0;       ///< flip, poison, drop: frames changed so far
+  bool applied = false;      ///< it has happened in full (every frame it names, the whole stall)
+  double started_at = -1.0;  ///< s since the start
+  int64_t frames = 0;        ///< flip, poison, drop: frames changed so far
 };
 
 /// Parses one --fault SPEC. Throws InputError "--fault SPEC: ..." for an unknown kind or
@@ -74,8 +74,8 @@ class FaultInjector {
   Fault* active(FaultKind kind);
   void finish_frame(Fault& f);
 
-  std::vector<Fault> faults_;  // in time order (stable: script order within a time)
-  std::size_t next_ = 0;       // first fault not started
+  std::vector<Fault> faults_;         // in time order (stable: script order within a time)
+  std::size_t next_ = 0;              // first fault not started
   std::vector<std::size_t> waiting_;  // started, waiting to be done (frame faults; bytes while not sending)
   std::mt19937_64 rng_;
   std::vector<uint8_t> scratch_;  // garbage and oversize bytes

@@ -48,7 +48,8 @@ std::string g(double v) {
 }
 
 std::string range_text(const Member& m) {
-  if (!m.range_min) return m.type.primitive == Primitive::f32 || m.type.primitive == Primitive::f64 ? "finite" : "its type's";
+  if (!m.range_min)
+    return m.type.primitive == Primitive::f32 || m.type.primitive == Primitive::f64 ? "finite" : "its type's";
   if (*m.range_min == -*m.range_max) return "±" + g(*m.range_max);
   return g(*m.range_min) + " .. " + g(*m.range_max);
 }
@@ -99,7 +100,8 @@ std::string emit_docs(const Model& model, const Package& pkg) {
     for (const auto& s : f.structs) {
       o << "\n### " << s.name << "\n\n";
       if (!s.doc.empty()) o << s.doc << "\n\n";
-      o << "`" << s.scoped() << "`" << (s.nested || s.scoped() == "plexus::msg::StampHeader" ? ", nested in other types" : ", a topic type");
+      o << "`" << s.scoped() << "`"
+        << (s.nested || s.scoped() == "plexus::msg::StampHeader" ? ", nested in other types" : ", a topic type");
       if (const Member* c = count_member(s)) o << "; arrays hold `" << c->name << "` valid entries";
       o << ".\n\n| member | IDL type | signal fields | unit | range | description |\n|---|---|---|---|---|---|\n";
       for (const auto& m : s.members) {
@@ -111,7 +113,8 @@ std::string emit_docs(const Model& model, const Package& pkg) {
     }
     for (const auto& e : f.enums) {
       o << "\n### " << e.name << " (enum)\n\n";
-      for (std::size_t i = 0; i < e.enumerators.size(); ++i) o << (i ? ", " : "") << "`" << e.enumerators[i] << "` = " << i;
+      for (std::size_t i = 0; i < e.enumerators.size(); ++i)
+        o << (i ? ", " : "") << "`" << e.enumerators[i] << "` = " << i;
       o << "\n";
     }
   }

@@ -18,18 +18,16 @@ struct Location {
 };
 
 /// A primitive IDL type; `none` for constructed ones.
-enum class Primitive {
-  none, boolean, octet, char_, i8, u8, i16, u16, i32, u32, i64, u64, f32, f64
-};
+enum class Primitive { none, boolean, octet, char_, i8, u8, i16, u16, i32, u32, i64, u64, f32, f64 };
 
 /// The type of a member (before its array dimensions).
 struct TypeRef {
   enum class Kind { primitive, string, sequence, named };
   Kind kind = Kind::primitive;
   Primitive primitive = Primitive::none;
-  std::string name;                   ///< named: the scoped name it resolves to ("plexus::msg::StampHeader")
-  uint64_t bound = 0;                 ///< string / sequence bound (0: unbounded)
-  std::vector<TypeRef> element;       ///< sequence: its element type (one)
+  std::string name;              ///< named: the scoped name it resolves to ("plexus::msg::StampHeader")
+  uint64_t bound = 0;            ///< string / sequence bound (0: unbounded)
+  std::vector<TypeRef> element;  ///< sequence: its element type (one)
 };
 
 /// One `[fields: ...]` element: the signal field names of one array element (or of the scalar).
@@ -38,26 +36,26 @@ using FieldNames = std::vector<std::string>;
 struct Member {
   std::string name;
   TypeRef type;
-  std::vector<uint64_t> dims;         ///< fixed array dimensions (one at most for signal fields)
-  std::optional<std::string> unit;    ///< @unit("m")
+  std::vector<uint64_t> dims;                  ///< fixed array dimensions (one at most for signal fields)
+  std::optional<std::string> unit;             ///< @unit("m")
   std::optional<double> range_min, range_max;  ///< @range(min=..., max=...)
-  bool range_integral = true;         ///< both @range limits written as whole numbers
-  bool key = false, optional = false;  ///< @key, @optional (both refused by the checks)
-  std::vector<FieldNames> fields;     ///< the comment's [fields: ...]; '#' in a name: the 1-based index
-  bool count = false;                 ///< the comment's [count]: the number of valid array entries
-  std::string doc;                    ///< the comment without its tags
+  bool range_integral = true;                  ///< both @range limits written as whole numbers
+  bool key = false, optional = false;          ///< @key, @optional (both refused by the checks)
+  std::vector<FieldNames> fields;              ///< the comment's [fields: ...]; '#' in a name: the 1-based index
+  bool count = false;                          ///< the comment's [count]: the number of valid array entries
+  std::string doc;                             ///< the comment without its tags
   Location where;
 };
 
 struct Struct {
-  std::vector<std::string> scope;     ///< enclosing modules ({"plexus", "msg"})
+  std::vector<std::string> scope;  ///< enclosing modules ({"plexus", "msg"})
   std::string name;
   std::vector<Member> members;
-  std::string extensibility;          ///< "final", "appendable", "mutable" or "" (not given)
-  bool nested = false;                ///< @nested: not a topic type
-  std::string doc;                    ///< the comment block above it
+  std::string extensibility;  ///< "final", "appendable", "mutable" or "" (not given)
+  bool nested = false;        ///< @nested: not a topic type
+  std::string doc;            ///< the comment block above it
   Location where;
-  std::string scoped() const;         ///< "plexus::msg::Pose2D"
+  std::string scoped() const;  ///< "plexus::msg::Pose2D"
 };
 
 struct Enum {
@@ -72,7 +70,7 @@ struct Constant {
   std::vector<std::string> scope;
   std::string name;
   TypeRef type;
-  std::string value;                  ///< the literal as written
+  std::string value;  ///< the literal as written
   Location where;
 };
 
@@ -85,8 +83,8 @@ struct File {
   std::vector<Struct> structs;
   std::vector<Enum> enums;
   std::vector<Constant> constants;
-  std::string text;                   ///< the file's text
-  bool own = false;                   ///< given on the command line (not only included)
+  std::string text;  ///< the file's text
+  bool own = false;  ///< given on the command line (not only included)
 };
 
 /// Every file read: those given and those they include, each once, includes first.

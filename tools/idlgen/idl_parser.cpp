@@ -101,11 +101,11 @@ Lexed lex(const std::string& text, const std::string& file) {
       if (word == "include") {
         const auto q1 = directive.find_first_of("\"<");
         const auto q2 = directive.find_first_of("\">", q1 + 1);
-        if (q1 == std::string::npos || q2 == std::string::npos)
-          throw IdlError({file, line}, "malformed #include");
+        if (q1 == std::string::npos || q2 == std::string::npos) throw IdlError({file, line}, "malformed #include");
         out.includes.emplace_back(line, directive.substr(q1 + 1, q2 - q1 - 1));
       } else if (word != "ifndef" && word != "define" && word != "endif" && word != "pragma") {
-        throw IdlError({file, line}, "preprocessor directive '#" + word + "' is not supported (only #include and include guards)");
+        throw IdlError({file, line},
+                       "preprocessor directive '#" + word + "' is not supported (only #include and include guards)");
       }
       i = e;
       continue;
@@ -141,7 +141,8 @@ Lexed lex(const std::string& text, const std::string& file) {
       t.kind = Token::Kind::ident;
       t.text = text.substr(i, e - i);
       i = e;
-    } else if (std::isdigit(static_cast<unsigned char>(c)) || (c == '.' && std::isdigit(static_cast<unsigned char>(at(i + 1))))) {
+    } else if (std::isdigit(static_cast<unsigned char>(c)) ||
+               (c == '.' && std::isdigit(static_cast<unsigned char>(at(i + 1))))) {
       std::size_t e = i;
       while (e < text.size() && (std::isalnum(static_cast<unsigned char>(text[e])) || text[e] == '.' ||
                                  ((text[e] == '+' || text[e] == '-') && (text[e - 1] == 'e' || text[e - 1] == 'E'))))
@@ -196,7 +197,8 @@ class Parser {
   Location here() const { return {file_.path, peek().line}; }
   [[noreturn]] void fail(const std::string& what) const {
     const Token& t = peek();
-    throw IdlError(here(), what + (t.kind == Token::Kind::end ? " (at the end of the file)" : " (at '" + t.text + "')"));
+    throw IdlError(here(),
+                   what + (t.kind == Token::Kind::end ? " (at the end of the file)" : " (at '" + t.text + "')"));
   }
   bool accept(const std::string& p) {
     if (peek().kind != Token::Kind::string && peek().text == p) {
@@ -272,7 +274,8 @@ class Parser {
   // The scoped name `name` stands for, seen from the current scope (innermost first).
   std::string resolve(const std::string& name, bool absolute, Location where) const {
     if (absolute) {
-      if (model_.find_struct(name) || model_.find_enum(name) || model_.find_constant(name) || declared(name)) return name;
+      if (model_.find_struct(name) || model_.find_enum(name) || model_.find_constant(name) || declared(name))
+        return name;
       throw IdlError(where, "unknown type '::" + name + "'");
     }
     for (std::size_t n = scope_.size() + 1; n-- > 0;) {
@@ -329,25 +332,41 @@ class Parser {
       t.primitive = p;
     };
     if (accept("unsigned")) {
-      if (accept("short")) prim(Primitive::u16);
-      else if (accept("long")) prim(accept("long") ? Primitive::u64 : Primitive::u32);
-      else fail("expected 'short' or 'long' after 'unsigned'");
+      if (accept("short"))
+        prim(Primitive::u16);
+      else if (accept("long"))
+        prim(accept("long") ? Primitive::u64 : Primitive::u32);
+      else
+        fail("expected 'short' or 'long' after 'unsigned'");
     } else if (accept("long")) {
       if (accept("double")) throw IdlError(where, "'long double' has no portable CDR form; use double");
       prim(accept("long") ? Primitive::i64 : Primitive::i32);
-    } else if (accept("short")) prim(Primitive::i16);
-    else if (accept("double")) prim(Primitive::f64);
-    else if (accept("float")) prim(Primitive::f32);
-    else if (accept("boolean")) prim(Primitive::boolean);
-    else if (accept("octet") || accept("uint8")) prim(Primitive::u8);
-    else if (accept("int8")) prim(Primitive::i8);
-    else if (accept("char")) prim(Primitive::char_);
-    else if (accept("int16")) prim(Primitive::i16);
-    else if (accept("uint16")) prim(Primitive::u16);
-    else if (accept("int32")) prim(Primitive::i32);
-    else if (accept("uint32")) prim(Primitive::u32);
-    else if (accept("int64")) prim(Primitive::i64);
-    else if (accept("uint64")) prim(Primitive::u64);
+    } else if (accept("short"))
+      prim(Primitive::i16);
+    else if (accept("double"))
+      prim(Primitive::f64);
+    else if (accept("float"))
+      prim(Primitive::f32);
+    else if (accept("boolean"))
+      prim(Primitive::boolean);
+    else if (accept("octet") || accept("uint8"))
+      prim(Primitive::u8);
+    else if (accept("int8"))
+      prim(Primitive::i8);
+    else if (accept("char"))
+      prim(Primitive::char_);
+    else if (accept("int16"))
+      prim(Primitive::i16);
+    else if (accept("uint16"))
+      prim(Primitive::u16);
+    else if (accept("int32"))
+      prim(Primitive::i32);
+    else if (accept("uint32"))
+      prim(Primitive::u32);
+    else if (accept("int64"))
+      prim(Primitive::i64);
+    else if (accept("uint64"))
+      prim(Primitive::u64);
     else if (w == "wchar" || w == "wstring" || w == "any" || w == "map" || w == "fixed")
       throw IdlError(where, "'" + w + "' is not supported in plexus messages (docs/sdk.md)");
     else if (accept("string")) {
@@ -457,7 +476,8 @@ class Parser {
     if (it == a.params.end()) throw IdlError(where, "@" + a.name + " needs " + key + "=");
     char* end = nullptr;
     const double v = std::strtod(it->second.c_str(), &end);
-    if (end == it->second.c_str() || *end != '\0') throw IdlError(where, "@" + a.name + "(" + key + "=" + it->second + "): not a number");
+    if (end == it->second.c_str() || *end != '\0')
+      throw IdlError(where, "@" + a.name + "(" + key + "=" + it->second + "): not a number");
     return v;
   }
 
@@ -469,10 +489,14 @@ class Parser {
     s.name = ident();
     s.doc = doc_above(start_line);
     for (const auto& a : ann) {
-      if (a.name == "final" || a.name == "appendable" || a.name == "mutable") s.extensibility = a.name;
-      else if (a.name == "extensibility") s.extensibility = a.params.count("value") ? a.params.at("value") : "";
-      else if (a.name == "nested") s.nested = a.params.count("value") == 0 || a.params.at("value") != "FALSE";
-      else if (a.name != "topic") throw IdlError({file_.path, a.line}, "@" + a.name + " is not supported on a struct");
+      if (a.name == "final" || a.name == "appendable" || a.name == "mutable")
+        s.extensibility = a.name;
+      else if (a.name == "extensibility")
+        s.extensibility = a.params.count("value") ? a.params.at("value") : "";
+      else if (a.name == "nested")
+        s.nested = a.params.count("value") == 0 || a.params.at("value") != "FALSE";
+      else if (a.name != "topic")
+        throw IdlError({file_.path, a.line}, "@" + a.name + " is not supported on a struct");
     }
     if (accept(";")) throw IdlError(s.where, "forward declarations are not supported");
     if (accept(":")) throw IdlError(s.where, "struct inheritance is not supported in plexus messages");

@@ -35,7 +35,8 @@ void write_if_changed(const std::string& path, const std::string& text) {
       if (old == text) return;
     }
   }
-  if (const auto dir = std::filesystem::path(path).parent_path(); !dir.empty()) std::filesystem::create_directories(dir);
+  if (const auto dir = std::filesystem::path(path).parent_path(); !dir.empty())
+    std::filesystem::create_directories(dir);
   std::ofstream out(path, std::ios::binary);
   out << text;
   if (!out) throw std::runtime_error(path + ": cannot be written");
@@ -55,19 +56,29 @@ int main(int argc, char** argv) {
       return argv[++i];
     };
     try {
-      if (a == "--package") pkg.name = value();
-      else if (a == "--header-name") pkg.header = value();
-      else if (a == "--dependency-header") pkg.dependency_headers.push_back(value());
-      else if (a == "--header") header = value();
-      else if (a == "--source") source = value();
-      else if (a == "--docs") docs = value();
-      else if (a == "-I") dirs.push_back(value());
-      else if (a.rfind("-I", 0) == 0) dirs.push_back(a.substr(2));
-      else if (a == "--help" || a == "-h") return usage() - 2;
+      if (a == "--package")
+        pkg.name = value();
+      else if (a == "--header-name")
+        pkg.header = value();
+      else if (a == "--dependency-header")
+        pkg.dependency_headers.push_back(value());
+      else if (a == "--header")
+        header = value();
+      else if (a == "--source")
+        source = value();
+      else if (a == "--docs")
+        docs = value();
+      else if (a == "-I")
+        dirs.push_back(value());
+      else if (a.rfind("-I", 0) == 0)
+        dirs.push_back(a.substr(2));
+      else if (a == "--help" || a == "-h")
+        return usage() - 2;
       else if (a.rfind("-", 0) == 0) {
         std::fprintf(stderr, "plexus_idlgen: error: unknown option %s\n", a.c_str());
         return usage();
-      } else files.push_back(a);
+      } else
+        files.push_back(a);
     } catch (const std::exception& e) {
       std::fprintf(stderr, "plexus_idlgen: error: %s\n", e.what());
       return 2;

@@ -9,16 +9,46 @@ void limits(Primitive p, double& lo, double& hi) {
   constexpr double inf = std::numeric_limits<double>::infinity();
   switch (p) {
     case Primitive::f32:
-    case Primitive::f64: lo = -inf; hi = inf; return;
-    case Primitive::boolean: lo = 0; hi = 1; return;
-    case Primitive::i8: lo = -128; hi = 127; return;
-    case Primitive::u8: lo = 0; hi = 255; return;
-    case Primitive::i16: lo = -32768; hi = 32767; return;
-    case Primitive::u16: lo = 0; hi = 65535; return;
-    case Primitive::i32: lo = -2147483648.0; hi = 2147483647.0; return;
-    case Primitive::u32: lo = 0; hi = 4294967295.0; return;
-    case Primitive::i64: lo = -9223372036854775808.0; hi = 9223372036854775807.0; return;
-    case Primitive::u64: lo = 0; hi = 18446744073709551615.0; return;
+    case Primitive::f64:
+      lo = -inf;
+      hi = inf;
+      return;
+    case Primitive::boolean:
+      lo = 0;
+      hi = 1;
+      return;
+    case Primitive::i8:
+      lo = -128;
+      hi = 127;
+      return;
+    case Primitive::u8:
+      lo = 0;
+      hi = 255;
+      return;
+    case Primitive::i16:
+      lo = -32768;
+      hi = 32767;
+      return;
+    case Primitive::u16:
+      lo = 0;
+      hi = 65535;
+      return;
+    case Primitive::i32:
+      lo = -2147483648.0;
+      hi = 2147483647.0;
+      return;
+    case Primitive::u32:
+      lo = 0;
+      hi = 4294967295.0;
+      return;
+    case Primitive::i64:
+      lo = -9223372036854775808.0;
+      hi = 9223372036854775807.0;
+      return;
+    case Primitive::u64:
+      lo = 0;
+      hi = 18446744073709551615.0;
+      return;
     default: lo = hi = 0; return;
   }
 }

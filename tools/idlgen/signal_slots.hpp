@@ -12,14 +12,14 @@
 namespace plexus::idlgen {
 
 struct Slot {
-  std::string field;        ///< the field name
-  bool primary = false;     ///< the first name of its element (the others are aliases)
+  std::string field;     ///< the field name
+  bool primary = false;  ///< the first name of its element (the others are aliases)
   const Member* member = nullptr;
-  std::size_t index = 0;    ///< element of an array member (0 for a scalar)
+  std::size_t index = 0;  ///< element of an array member (0 for a scalar)
   bool array = false;
-  double min = 0, max = 0;  ///< accepted range (the type's limits, or +-inf for floating point)
-  std::string kind;         ///< f64, f32, i8, u8, i16, u16, i32, u32, i64, u64, boolean
-  std::string path() const; ///< "position[0]" or "x"
+  double min = 0, max = 0;   ///< accepted range (the type's limits, or +-inf for floating point)
+  std::string kind;          ///< f64, f32, i8, u8, i16, u16, i32, u32, i64, u64, boolean
+  std::string path() const;  ///< "position[0]" or "x"
 };
 
 /// True for a member that carries signal fields (numbers, scalar or one-dimensional array).

@@ -20,13 +20,13 @@ namespace plexus::latency {
 struct PingPongOptions {
   std::string role;
   int domain = 180;
-  int size = 0;           ///< payload bytes after the header
-  double rate = 1000;     ///< pings per second; 0: next ping as soon as the pong arrives
+  int size = 0;        ///< payload bytes after the header
+  double rate = 1000;  ///< pings per second; 0: next ping as soon as the pong arrives
   int count = 2000;
   int warmup = 100;
-  double timeout = 15;    ///< seconds to wait for the peer to match
-  double duration = 0;    ///< pong: seconds to run (0: until SIGTERM)
-  std::string samples;    ///< ping: write every round trip (us), one per line
+  double timeout = 15;  ///< seconds to wait for the peer to match
+  double duration = 0;  ///< pong: seconds to run (0: until SIGTERM)
+  std::string samples;  ///< ping: write every round trip (us), one per line
 };
 
 inline void add_pingpong_options(CLI::App& app, PingPongOptions& o) {

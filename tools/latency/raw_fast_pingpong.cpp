@@ -5,6 +5,9 @@
 // transport beside UDPv4, as plexus's transport auto/shm (LatencyProbe is not a plain type,
 // so plexus does not data-share it either). Same options, same measurement and the same
 // JSON line as pingpong_node.
+#include <fastdds/rtps/transport/UDPv4TransportDescriptor.h>
+#include <fastdds/rtps/transport/shared_mem/SharedMemTransportDescriptor.h>
+#include <fastrtps/utils/IPLocator.h>
 #include <fastdds/dds/domain/DomainParticipant.hpp>
 #include <fastdds/dds/domain/DomainParticipantFactory.hpp>
 #include <fastdds/dds/publisher/DataWriter.hpp>
@@ -14,9 +17,6 @@
 #include <fastdds/dds/subscriber/SampleInfo.hpp>
 #include <fastdds/dds/subscriber/Subscriber.hpp>
 #include <fastdds/dds/topic/Topic.hpp>
-#include <fastdds/rtps/transport/UDPv4TransportDescriptor.h>
-#include <fastdds/rtps/transport/shared_mem/SharedMemTransportDescriptor.h>
-#include <fastrtps/utils/IPLocator.h>
 
 #include <atomic>
 #include <csignal>
@@ -89,7 +89,8 @@ int main(int argc, char** argv) {
   DomainParticipantQos pq;
   pq.name(ping ? "raw_fast_ping" : "raw_fast_pong");
   pq.transport().use_builtin_transports = false;
-  if (shm) pq.transport().user_transports.push_back(std::make_shared<eprosima::fastdds::rtps::SharedMemTransportDescriptor>());
+  if (shm)
+    pq.transport().user_transports.push_back(std::make_shared<eprosima::fastdds::rtps::SharedMemTransportDescriptor>());
   auto udp = std::make_shared<eprosima::fastdds::rtps::UDPv4TransportDescriptor>();
   udp->interfaceWhiteList.push_back("127.0.0.1");
   pq.transport().user_transports.push_back(udp);
@@ -123,8 +124,8 @@ int main(int argc, char** argv) {
   Echo echo;
   echo.writer = w;
   echo.in.payload().reserve(65536);
-  DataReader* r = ping ? sub->create_datareader(tpong, rq)
-                       : sub->create_datareader(tping, rq, &echo, StatusMask::data_available());
+  DataReader* r =
+      ping ? sub->create_datareader(tpong, rq) : sub->create_datareader(tping, rq, &echo, StatusMask::data_available());
   if (!w || !r) {
     std::fprintf(stderr, "raw_fast_pingpong: cannot create endpoints\n");
     return 1;
@@ -160,8 +161,8 @@ int main(int argc, char** argv) {
           return w->write(&out);
         },
         [&](int64_t timeout_ns) {
-          return r->get_unread_count() > 0 ||
-                 r->wait_for_unread_message(eprosima::fastrtps::Duration_t(static_cast<long double>(timeout_ns) * 1e-9L));
+          return r->get_unread_count() > 0 || r->wait_for_unread_message(eprosima::fastrtps::Duration_t(
+                                                  static_cast<long double>(timeout_ns) * 1e-9L));
         },
         [&](int64_t& index) {
           if (!take_one(r, in)) return false;

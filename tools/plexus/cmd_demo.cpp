@@ -36,10 +36,11 @@ Command add_demo_command(CLI::App& root) {
         {"fast", "fast"}, {"cyclone", "cyclone"}, {"fast", "cyclone"}, {"cyclone", "fast"}};
     nlohmann::json all = nlohmann::json::object();
     if (!o->json)
-      std::printf("plexus demo: %d samples at %.0f Hz per pair, QoS profile '%s', loopback only\n\n"
-                  "%-18s %10s %10s %10s %10s %10s %10s\n",
-                  o->count, o->rate, o->profile.c_str(), "source -> echo", "recv/s", "rtt p50", "rtt p90", "rtt p99",
-                  "rtt max", "lost");
+      std::printf(
+          "plexus demo: %d samples at %.0f Hz per pair, QoS profile '%s', loopback only\n\n"
+          "%-18s %10s %10s %10s %10s %10s %10s\n",
+          o->count, o->rate, o->profile.c_str(), "source -> echo", "recv/s", "rtt p50", "rtt p90", "rtt p99", "rtt max",
+          "lost");
     int failures = 0;
     int domain = o->domain;
     for (const auto& [src, echo] : pairs) {
@@ -47,10 +48,11 @@ Command add_demo_command(CLI::App& root) {
       const pid_t echo_pid = spawn("demo_node", {"echo", "--dds", echo, "--domain", d, "--qos-file", qos_file,
                                                  "--profile", o->profile, "--log-level", "error"});
       std::string out;
-      const int rc = run_capture("demo_node", {"source", "--dds", src, "--domain", d, "--qos-file", qos_file, "--profile",
-                                               o->profile, "--rate", std::to_string(o->rate), "--count",
-                                               std::to_string(o->count), "--log-level", "error"},
-                                 out);
+      const int rc =
+          run_capture("demo_node",
+                      {"source", "--dds", src, "--domain", d, "--qos-file", qos_file, "--profile", o->profile, "--rate",
+                       std::to_string(o->rate), "--count", std::to_string(o->count), "--log-level", "error"},
+                      out);
       stop(echo_pid);
       const std::string name = std::string(src) + "->" + echo;
       nlohmann::json r;
@@ -65,16 +67,18 @@ Command add_demo_command(CLI::App& root) {
         if (r.contains("error")) {
           std::printf("%-18s %s\n", name.c_str(), r["error"].get<std::string>().c_str());
         } else {
-          std::printf("%-18s %10.1f %8.0fus %8.0fus %8.0fus %8.0fus %10d\n", name.c_str(), r["received_per_s"].get<double>(),
-                      r["rtt_p50_us"].get<double>(), r["rtt_p90_us"].get<double>(), r["rtt_p99_us"].get<double>(),
-                      r["rtt_max_us"].get<double>(), r["sent"].get<int>() - r["received"].get<int>());
+          std::printf("%-18s %10.1f %8.0fus %8.0fus %8.0fus %8.0fus %10d\n", name.c_str(),
+                      r["received_per_s"].get<double>(), r["rtt_p50_us"].get<double>(), r["rtt_p90_us"].get<double>(),
+                      r["rtt_p99_us"].get<double>(), r["rtt_max_us"].get<double>(),
+                      r["sent"].get<int>() - r["received"].get<int>());
         }
       }
     }
     if (o->json)
       std::printf("%s\n", all.dump().c_str());
     else
-      std::printf("\nround trip = source publish -> echo take + publish -> source take, header origin time to receipt.\n");
+      std::printf(
+          "\nround trip = source publish -> echo take + publish -> source take, header origin time to receipt.\n");
     return failures == 0 ? 0 : 1;
   };
   return c;

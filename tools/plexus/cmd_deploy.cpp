@@ -11,11 +11,11 @@
 
 #include "child_process.hpp"
 #include "command.hpp"
-#include "systemd_units.hpp"
 #include "plexus/base/input_error.hpp"
 #include "plexus/runtime/qos.hpp"
 #include "plexus/runtime/vendor.hpp"
 #include "plexus/scenario/scenario.hpp"
+#include "systemd_units.hpp"
 
 namespace plexus::cli {
 namespace {
@@ -65,10 +65,11 @@ int run_units(const DeployOptions& o) {
   for (const auto& f : set.config) write_file(fs::path(o.out) / "config" / f.name, f.text);
   fs::copy_file(qos_file, fs::path(o.out) / "config" / "qos.yaml", fs::copy_options::overwrite_existing, ec);
   if (ec) throw InputError(qos_file + ": cannot copy to " + o.out + "/config (" + ec.message() + ")");
-  std::printf("%s: %zu units for %s (%zu processes); install: copy %s/config/* to %s and the units to "
-              "/etc/systemd/system, then systemctl daemon-reload && systemctl enable --now %s (docs/deployment.md)\n",
-              o.out.c_str(), set.units.size(), o.host.empty() ? sc.name.c_str() : ("host " + o.host).c_str(),
-              set.units.size() - 1, o.out.c_str(), u.config_dir.c_str(), set.target.c_str());
+  std::printf(
+      "%s: %zu units for %s (%zu processes); install: copy %s/config/* to %s and the units to "
+      "/etc/systemd/system, then systemctl daemon-reload && systemctl enable --now %s (docs/deployment.md)\n",
+      o.out.c_str(), set.units.size(), o.host.empty() ? sc.name.c_str() : ("host " + o.host).c_str(),
+      set.units.size() - 1, o.out.c_str(), u.config_dir.c_str(), set.target.c_str());
   return 0;
 }
 
@@ -81,12 +82,14 @@ Command add_deploy_command(CLI::App& root) {
   c.app->require_subcommand(1);
   auto* units = c.app->add_subcommand("units", "systemd units for one host's processes, and a target grouping them");
   units->add_option("scenario", o->scenario, "Scenario file (YAML)")->required();
-  units->add_option("--host", o->host, "The host whose processes the units start (required when the scenario has hosts)");
+  units->add_option("--host", o->host,
+                    "The host whose processes the units start (required when the scenario has hosts)");
   units->add_option("--out", o->out, "Folder to write the units and their config/ folder to")->required();
   units->add_option("--bin", o->bin, "Folder of the plexus executables on the robot (default: this plexus's own)");
   units->add_option("--config-dir", o->config_dir, "Folder of config/ on the robot (default /etc/plexus/<scenario>)");
   units->add_option("--set", o->sets, "Override a scenario value: dotted.key=value (repeatable)");
-  units->add_option("--dds", o->dds, "DDS vendor of every process without a `dds` key (default: dds.vendor, else fast)");
+  units->add_option("--dds", o->dds,
+                    "DDS vendor of every process without a `dds` key (default: dds.vendor, else fast)");
   units->add_option("--vendor", o->vendors, "Vendor of one process: PROCESS=fast|cyclone (repeatable)");
   units->add_option("--domain", o->domain, "DDS domain id (default: the scenario's)")->check(CLI::Range(0, 232));
   units->add_option("--qos-file", o->qos_file, "QoS profiles to install with the units (default deploy/qos.yaml)");

@@ -33,7 +33,6 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-
 std::string temp_path(const std::string& stem) {
   return (fs::temp_directory_path() / ("plexus_" + stem + "_" + std::to_string(getpid()))).string();
 }
@@ -44,8 +43,6 @@ std::vector<double> read_numbers(const std::string& path) {
   for (double x; f >> x;) v.push_back(x);
   return v;
 }
-
-
 
 // ---------------------------------------------------------------------------------------
 // pingpong
@@ -95,9 +92,14 @@ Json parse_ddsperf(const std::string& out) {
   }
   if (n <= 0) throw std::runtime_error("ddsperf printed no latency lines");
   // Half round trips -> round trips (x2), to compare like with like.
-  return {{"implementation", "ddsperf"}, {"received", static_cast<int>(n)}, {"rtt_mean_us", 2 * mean / n},
-          {"rtt_p50_us", 2 * p50 / n},   {"rtt_p90_us", 2 * p90 / n},       {"rtt_p99_us", 2 * p99 / n},
-          {"rtt_max_us", 2 * mx},        {"note", "ddsperf reports half round trips per second; shown x2, count-weighted over its 1 s intervals"}};
+  return {{"implementation", "ddsperf"},
+          {"received", static_cast<int>(n)},
+          {"rtt_mean_us", 2 * mean / n},
+          {"rtt_p50_us", 2 * p50 / n},
+          {"rtt_p90_us", 2 * p90 / n},
+          {"rtt_p99_us", 2 * p99 / n},
+          {"rtt_max_us", 2 * mx},
+          {"note", "ddsperf reports half round trips per second; shown x2, count-weighted over its 1 s intervals"}};
 }
 
 int run_pingpong(const PingOpts& o) {
@@ -110,7 +112,8 @@ int run_pingpong(const PingOpts& o) {
   const bool shm = transport == rt::Transport::shm && vendor == rt::Vendor::fast && peer_vendor == rt::Vendor::fast;
   const std::string qos_file = o.qos_file.empty() ? rt::default_qos_file() : o.qos_file;
   const auto qos = rt::QosProfiles::load(qos_file).get(o.profile);
-  if (o.size < 0 || o.size > 65536) throw InputError("--size: must be in 0..65536 bytes, got " + std::to_string(o.size));
+  if (o.size < 0 || o.size > 65536)
+    throw InputError("--size: must be in 0..65536 bytes, got " + std::to_string(o.size));
   if (!(o.rate >= 0 && o.rate <= 100000)) throw InputError("--rate: must be in 0..100000 Hz (0: back to back)");
   if (o.count < 1 || o.count > 10'000'000) throw InputError("--count: must be in 1..10000000");
   if (o.domain < 0 || o.domain > 231) throw InputError("--domain: must be in 0..231 (the baseline uses domain + 1)");
@@ -118,14 +121,14 @@ int run_pingpong(const PingOpts& o) {
   const std::string d = std::to_string(o.domain), d2 = std::to_string(o.domain + 1);
   const double expected_s = o.rate > 0 ? (o.count + 100) / o.rate : o.count * 0.002;
   const std::string pong_duration = std::to_string(static_cast<int>(expected_s + 40));
-  std::vector<std::string> common = {"--size", std::to_string(o.size), "--rate", std::to_string(o.rate), "--count",
-                                     std::to_string(o.count)};
+  std::vector<std::string> common = {"--size",  std::to_string(o.size), "--rate", std::to_string(o.rate),
+                                     "--count", std::to_string(o.count)};
 
   // plexus: pingpong_node ping (--dds) against pingpong_node pong (--peer-dds).
   const std::string samples = temp_path("pingpong_samples");
   auto args = [&](const char* role, const std::string& vendor_name, const std::string& domain) {
-    std::vector<std::string> a = {role,      "--dds",      vendor_name, "--domain",    domain,
-                                  "--qos-file", qos_file, "--profile", o.profile, "--transport", o.transport};
+    std::vector<std::string> a = {role,     "--dds",     vendor_name, "--domain",    domain,     "--qos-file",
+                                  qos_file, "--profile", o.profile,   "--transport", o.transport};
     a.insert(a.end(), common.begin(), common.end());
     return a;
   };
@@ -167,11 +170,15 @@ int run_pingpong(const PingOpts& o) {
       vendor_name = "ddsperf";
       const std::string ddsperf = find_program("ddsperf");
       if (ddsperf.empty()) throw std::runtime_error("ddsperf not found (install cyclonedds-tools)");
-      const std::string uri = "CYCLONEDDS_URI=" + std::string(
-          "<CycloneDDS><Domain Id=\"any\"><General><Interfaces><NetworkInterface address=\"127.0.0.1\"/></Interfaces>"
-          "<AllowMulticast>false</AllowMulticast></General><Discovery><ParticipantIndex>auto</ParticipantIndex>"
-          "<MaxAutoParticipantIndex>31</MaxAutoParticipantIndex><Peers><Peer address=\"127.0.0.1\"/></Peers></Discovery>"
-          "</Domain></CycloneDDS>");
+      const std::string uri =
+          "CYCLONEDDS_URI=" +
+          std::string(
+              "<CycloneDDS><Domain Id=\"any\"><General><Interfaces><NetworkInterface "
+              "address=\"127.0.0.1\"/></Interfaces>"
+              "<AllowMulticast>false</AllowMulticast></General><Discovery><ParticipantIndex>auto</ParticipantIndex>"
+              "<MaxAutoParticipantIndex>31</MaxAutoParticipantIndex><Peers><Peer "
+              "address=\"127.0.0.1\"/></Peers></Discovery>"
+              "</Domain></CycloneDDS>");
       std::vector<std::string> base = {"-i", d2};
       if (qos.reliability == rt::QosProfile::Reliability::best_effort) base.push_back("-u");
       const int dur = static_cast<int>(std::ceil(expected_s)) + 1;
@@ -193,21 +200,24 @@ int run_pingpong(const PingOpts& o) {
   }
 
   Percentiles a = pct_of_result(plexus_r), b = vendor_r.is_null() ? Percentiles{} : pct_of_result(vendor_r);
-  Json result = {{"dds", o.dds},     {"peer_dds", peer},  {"profile", o.profile},
-                 {"size", o.size},   {"rate_hz", o.rate}, {"count", o.count},
-                 {"transport", o.transport}, {"carried_by", shm ? "shm" : "udp"},
-                 {"plexus", plexus_r}};
+  Json result = {
+      {"dds", o.dds},      {"peer_dds", peer}, {"profile", o.profile},     {"size", o.size},
+      {"rate_hz", o.rate}, {"count", o.count}, {"transport", o.transport}, {"carried_by", shm ? "shm" : "udp"},
+      {"plexus", plexus_r}};
   if (!vendor_r.is_null()) {
     result["vendor"] = vendor_r;
-    result["ratio"] = {{"mean", a.mean / b.mean}, {"p50", a.p50 / b.p50}, {"p90", a.p90 / b.p90},
-                       {"p99", a.p99 / b.p99},    {"max", a.max / b.max}};
+    result["ratio"] = {{"mean", a.mean / b.mean},
+                       {"p50", a.p50 / b.p50},
+                       {"p90", a.p90 / b.p90},
+                       {"p99", a.p99 / b.p99},
+                       {"max", a.max / b.max}};
   }
   if (!o.out.empty()) {
     std::vector<Series> series = {{"plexus " + o.dds + "->" + peer, plexus_samples, false}};
     if (!vendor_samples.empty()) series.push_back({vendor_name, vendor_samples, false});
     const std::string stem = o.out + "/pingpong_" + o.dds + "_" + std::to_string(o.size) + (shm ? "_shm" : "");
-    write_histogram_png(stem + ".png", "round trip, " + std::to_string(o.size) + " B payload, " + o.dds + (shm ? ", shm" : ""),
-                        series);
+    write_histogram_png(
+        stem + ".png", "round trip, " + std::to_string(o.size) + " B payload, " + o.dds + (shm ? ", shm" : ""), series);
     result["png"] = stem + ".png";
     std::ofstream(stem + ".json") << result.dump(2) << '\n';
   }
@@ -221,7 +231,8 @@ int run_pingpong(const PingOpts& o) {
                 plexus_r.value("round_trips_per_s", 0.0));
     if (!vendor_r.is_null()) {
       print_compare("round trip", a, b, vendor_name, true);
-      if (vendor_name == "ddsperf") std::printf("(ddsperf reports half round trips per 1 s interval: shown x2, count-weighted)\n");
+      if (vendor_name == "ddsperf")
+        std::printf("(ddsperf reports half round trips per 1 s interval: shown x2, count-weighted)\n");
     } else {
       print_compare("round trip", a, Percentiles{}, "-", false);
     }
@@ -248,11 +259,19 @@ int run_pipeline(const PipeOpts& o) {
     if (!(o.duration > 0)) throw InputError("--duration: must be > 0 seconds");
     file = temp_path("pipeline") + ".sqlite";
     temp = true;
-    std::vector<std::string> args = {"record", "-o", file, "--dds", o.dds.dds, "--domain", std::to_string(o.dds.domain),
-                                     "--duration", std::to_string(o.duration)};
+    std::vector<std::string> args = {"record",
+                                     "-o",
+                                     file,
+                                     "--dds",
+                                     o.dds.dds,
+                                     "--domain",
+                                     std::to_string(o.dds.domain),
+                                     "--duration",
+                                     std::to_string(o.duration)};
     if (!o.topics.empty()) args.insert(args.end(), {"--topics", o.topics});
     for (const auto& [flag, value] : {std::pair<const char*, std::string>{"--security", o.dds.security},
-                                      {"--identity", o.dds.identity}, {"--governance", o.dds.governance}})
+                                      {"--identity", o.dds.identity},
+                                      {"--governance", o.dds.governance}})
       if (!value.empty()) args.insert(args.end(), {flag, value});
     std::string out;
     const int rc = run_capture("plexus", args, out);
@@ -270,7 +289,8 @@ int run_pipeline(const PipeOpts& o) {
   std::map<int64_t, T> topics;
   const auto wanted = split_list(o.topics);
   for (const auto& t : rec.topics())
-    if (o.live || wanted.empty() || std::find(wanted.begin(), wanted.end(), t.name) != wanted.end()) topics[t.id].name = t.name;
+    if (o.live || wanted.empty() || std::find(wanted.begin(), wanted.end(), t.name) != wanted.end())
+      topics[t.id].name = t.name;
   for (const auto& w : wanted)
     if (!o.live && std::none_of(topics.begin(), topics.end(), [&](const auto& kv) { return kv.second.name == w; }))
       throw InputError("--topics: topic '" + w + "' is not in " + file);
@@ -327,20 +347,24 @@ int run_pipeline(const PipeOpts& o) {
     if (it == chain.end()) throw InputError("--end: topic '" + o.end_topic + "' has no samples with header times");
     chain.erase(it + 1, chain.end());
   }
-  Json result = {{"run", o.live ? "live" : o.run}, {"join", by_origin ? "origin_time" : "data_time"},
-                 {"topics", Json::array()}, {"hops", Json::array()}};
+  Json result = {{"run", o.live ? "live" : o.run},
+                 {"join", by_origin ? "origin_time" : "data_time"},
+                 {"topics", Json::array()},
+                 {"hops", Json::array()}};
   std::vector<Series> series;
   if (!o.json)
-    std::printf("%-32s %8s | %-26s | %-26s | %-26s\n%-32s %8s | %8s %8s %8s | %8s %8s %8s | %8s %8s %8s\n", "topic (chain order)",
-                "samples", "origin -> publish (us)", "publish -> receive (us)", "origin -> receive (us)", "", "", "p50", "p99",
-                "max", "p50", "p99", "max", "p50", "p99", "max");
+    std::printf("%-32s %8s | %-26s | %-26s | %-26s\n%-32s %8s | %8s %8s %8s | %8s %8s %8s | %8s %8s %8s\n",
+                "topic (chain order)", "samples", "origin -> publish (us)", "publish -> receive (us)",
+                "origin -> receive (us)", "", "", "p50", "p99", "max", "p50", "p99", "max", "p50", "p99", "max");
   for (auto* t : chain) {
     auto a = percentiles(t->to_publish), b = percentiles(t->transport), c = percentiles(t->to_receive);
-    result["topics"].push_back({{"topic", t->name}, {"origin_to_publish", pct_json(a)}, {"publish_to_receive", pct_json(b)},
+    result["topics"].push_back({{"topic", t->name},
+                                {"origin_to_publish", pct_json(a)},
+                                {"publish_to_receive", pct_json(b)},
                                 {"origin_to_receive", pct_json(c)}});
     if (!o.json)
-      std::printf("%-32s %8zu | %8.1f %8.1f %8.1f | %8.1f %8.1f %8.1f | %8.1f %8.1f %8.1f\n", t->name.c_str(), a.count, a.p50,
-                  a.p99, a.max, b.p50, b.p99, b.max, c.p50, c.p99, c.max);
+      std::printf("%-32s %8zu | %8.1f %8.1f %8.1f | %8.1f %8.1f %8.1f | %8.1f %8.1f %8.1f\n", t->name.c_str(), a.count,
+                  a.p50, a.p99, a.max, b.p50, b.p99, b.max, c.p50, c.p99, c.max);
   }
   // Hops: publish of topic k+1 minus publish of topic k, for samples of the same chain (same origin time).
   for (std::size_t k = 0; k + 1 < chain.size(); ++k) {
@@ -356,8 +380,8 @@ int run_pipeline(const PipeOpts& o) {
     auto p = percentiles(d);
     result["hops"].push_back({{"from", chain[k]->name}, {"to", chain[k + 1]->name}, {"latency", pct_json(p)}});
     if (!o.json)
-      std::printf("hop %s -> %s: p50 %.1f us  p90 %.1f us  p99 %.1f us  max %.1f us  (%zu chains)\n", chain[k]->name.c_str(),
-                  chain[k + 1]->name.c_str(), p.p50, p.p90, p.p99, p.max, p.count);
+      std::printf("hop %s -> %s: p50 %.1f us  p90 %.1f us  p99 %.1f us  max %.1f us  (%zu chains)\n",
+                  chain[k]->name.c_str(), chain[k + 1]->name.c_str(), p.p50, p.p90, p.p99, p.max, p.count);
   }
   // End to end: origin -> receipt of the last topic (origin join), or first publish of the
   // step -> receipt of the last topic (data-time join).
@@ -369,7 +393,8 @@ int run_pipeline(const PipeOpts& o) {
       if (auto it = first_publish.find(key); it != first_publish.end())
         e2e_values.push_back(static_cast<double>(recv - it->second) * 1e-3);
   }
-  const std::string e2e_name = std::string(by_origin ? "origin" : "first publish of the step") + " -> " + chain.back()->name + " received";
+  const std::string e2e_name =
+      std::string(by_origin ? "origin" : "first publish of the step") + " -> " + chain.back()->name + " received";
   series.push_back({"end to end (" + e2e_name + ")", e2e_values, false});
   auto e2e = percentiles(e2e_values);
   result["end_to_end"] = {{"topic", chain.back()->name}, {"latency", pct_json(e2e)}};
@@ -392,11 +417,13 @@ int run_pipeline(const PipeOpts& o) {
 
 Command add_latency_command(CLI::App& root) {
   Command c;
-  c.app = root.add_subcommand("latency", "Latency measurements: pingpong (vs the vendor's tool), loop (vs cyclictest), pipeline");
+  c.app = root.add_subcommand("latency",
+                              "Latency measurements: pingpong (vs the vendor's tool), loop (vs cyclictest), pipeline");
   c.app->require_subcommand(1);
 
   auto po = std::make_shared<PingOpts>();
-  auto* ping = c.app->add_subcommand("pingpong", "Round-trip latency through plexus and through the vendor's own baseline");
+  auto* ping =
+      c.app->add_subcommand("pingpong", "Round-trip latency through plexus and through the vendor's own baseline");
   ping->add_option("--dds", po->dds, "vendor of the ping side (and of the baseline)")->capture_default_str();
   ping->add_option("--peer-dds", po->peer_dds, "vendor of the pong side (default: --dds)");
   ping->add_option("--profile", po->profile, "QoS profile")->capture_default_str();
@@ -413,7 +440,8 @@ Command add_latency_command(CLI::App& root) {
   ping->add_flag("--json", po->json, "one JSON object");
 
   auto lo = std::make_shared<LoopOpts>();
-  auto* loop = c.app->add_subcommand("loop", "Wake-up lateness of a plexus periodic loop, and of cyclictest at the same settings");
+  auto* loop = c.app->add_subcommand(
+      "loop", "Wake-up lateness of a plexus periodic loop, and of cyclictest at the same settings");
   loop->add_option("--rate", lo->rate, "loop rate, Hz")->capture_default_str();
   loop->add_option("--duration", lo->duration, "seconds")->capture_default_str();
   loop->add_option("--priority", lo->priority, "SCHED_FIFO priority (0: none)")->capture_default_str();
@@ -421,8 +449,9 @@ Command add_latency_command(CLI::App& root) {
       ->capture_default_str();
   loop->add_option("--rounds", lo->rounds, "alternate plexus and cyclictest in this many segments (ABBA order)")
       ->capture_default_str();
-  loop->add_option("--cpu-dma-latency", lo->cpu_dma_latency,
-                   "CPU wake-up latency request, us, held on /dev/cpu_dma_latency by both (-1: none; cyclictest --laptop)")
+  loop->add_option(
+          "--cpu-dma-latency", lo->cpu_dma_latency,
+          "CPU wake-up latency request, us, held on /dev/cpu_dma_latency by both (-1: none; cyclictest --laptop)")
       ->capture_default_str();
   loop->add_option("--timer-slack", lo->timer_slack, "the plexus loop thread's timer slack, ns (0: keep Linux's 50 us)")
       ->capture_default_str();
@@ -432,7 +461,8 @@ Command add_latency_command(CLI::App& root) {
   loop->add_flag("--json", lo->json, "one JSON object");
 
   auto pp = std::make_shared<PipeOpts>();
-  auto* pipe = c.app->add_subcommand("pipeline", "Per-hop and end-to-end latency from header times (recording or live)");
+  auto* pipe =
+      c.app->add_subcommand("pipeline", "Per-hop and end-to-end latency from header times (recording or live)");
   pipe->add_option("run", pp->run, "recording file (plexus record)");
   pipe->add_flag("--live", pp->live, "record the live system for --duration first");
   pipe->add_option("--topics", pp->topics, "comma-separated topics (default: all)");

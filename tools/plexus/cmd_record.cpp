@@ -7,9 +7,9 @@
 #include <algorithm>
 #include <cstdio>
 #include <deque>
-#include <set>
 #include <map>
 #include <mutex>
+#include <set>
 #include <thread>
 
 #include "command.hpp"
@@ -43,7 +43,8 @@ int run_record(const RecordOpts& o) {
   if (!(o.duration >= 0)) throw InputError("--duration: must be >= 0 seconds");
   if (o.count < 0) throw InputError("--count: must be >= 0");
   if (!(o.wait >= 0 && o.wait <= 600)) throw InputError("--wait: must be in 0..600 seconds");
-  if (!o.profile.empty()) rt::QosProfiles::load(o.qos_file.empty() ? rt::default_qos_file() : o.qos_file).get(o.profile);
+  if (!o.profile.empty())
+    rt::QosProfiles::load(o.qos_file.empty() ? rt::default_qos_file() : o.qos_file).get(o.profile);
   RecordingWriter file(o.out);  // file errors first: exit 2 before any DDS work
   install_stop_handler();
   auto p = make_participant(o.dds, "plexus_record", "plexus_record");
@@ -170,7 +171,9 @@ Command add_record_command(CLI::App& root) {
   Command c;
   c.app = root.add_subcommand("record", "Record topics to a SQLite file (CDR + receive and header times)");
   add_dds_options(c.app, o->dds);
-  c.app->add_option("-o,--out", o->out, "recording file to create (replaced, once the recording succeeds, if it exists)")->required();
+  c.app
+      ->add_option("-o,--out", o->out, "recording file to create (replaced, once the recording succeeds, if it exists)")
+      ->required();
   c.app->add_option("--topics", o->topics, "comma-separated topics (default: every topic with a writer)");
   c.app->add_option("--duration", o->duration, "stop after S seconds (0: until Ctrl-C or --count)");
   c.app->add_option("--count", o->count, "stop after N samples in total (0: no limit)");

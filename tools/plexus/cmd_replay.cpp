@@ -25,8 +25,8 @@
 #include "plexus/base/clock.hpp"
 #include "plexus/base/input_error.hpp"
 #include "plexus/distributed/lockstep.hpp"
-#include "plexus/evaluation/evaluation.hpp"
 #include "plexus/distributed/realtime.hpp"
+#include "plexus/evaluation/evaluation.hpp"
 #include "plexus/msg/messages.hpp"
 #include "recording.hpp"
 #include "replay_plan.hpp"
@@ -45,8 +45,7 @@ struct ReplayOpts {
 
 void sleep_until(int64_t t) {
   timespec ts{static_cast<time_t>(t / 1'000'000'000), static_cast<long>(t % 1'000'000'000)};
-  while (clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &ts, nullptr) == EINTR && !g_stop) {
-  }
+  while (clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &ts, nullptr) == EINTR && !g_stop) {}
 }
 
 int run_summary(const RecordingReader& rec, bool json) {
@@ -73,7 +72,8 @@ int run_replay(const ReplayOpts& o) {
   if (!(o.rate_scale > 0 && o.rate_scale <= 1000)) throw InputError("--rate-scale: must be in (0, 1000]");
   if (!(o.rate >= 0 && o.rate <= 1e6)) throw InputError("--rate: must be in (0, 1e6] Hz");
   if (o.restamp && (o.verbatim || o.lockstep)) throw InputError("--restamp: not with --verbatim or --lockstep");
-  if (!o.profile.empty()) rt::QosProfiles::load(o.qos_file.empty() ? rt::default_qos_file() : o.qos_file).get(o.profile);
+  if (!o.profile.empty())
+    rt::QosProfiles::load(o.qos_file.empty() ? rt::default_qos_file() : o.qos_file).get(o.profile);
   RecordingReader rec(o.file);
   if (o.summary) return run_summary(rec, o.json);
   install_stop_handler();
@@ -136,8 +136,9 @@ int run_replay(const ReplayOpts& o) {
   if (o.lockstep) {
     // The profile every lockstep host follows the clock with (transient-local: the first
     // tick is not lost to a reader that matched a moment after the clock saw it).
-    clock = p->make_reader(clock_ts, o.clock_topic,
-                           rt::QosProfiles::load(o.qos_file.empty() ? rt::default_qos_file() : o.qos_file).get("lockstep"));
+    clock =
+        p->make_reader(clock_ts, o.clock_topic,
+                       rt::QosProfiles::load(o.qos_file.empty() ? rt::default_qos_file() : o.qos_file).get("lockstep"));
     tick = clock_ts.create();
   }
 
@@ -172,8 +173,8 @@ int run_replay(const ReplayOpts& o) {
       // clock_stride-th step, lockstep.hpp): the replay, standing in for a host, publishes
       // as far. Consumers wait for exactly the sample due, so an early one changes nothing.
       const int64_t horizon =
-          t.sim_time_ns() + std::clamp<int64_t>(distributed::LockstepOptions{}.lead_steps, 0, distributed::kMaxLeadSteps) *
-                                t.step_ns();
+          t.sim_time_ns() +
+          std::clamp<int64_t>(distributed::LockstepOptions{}.lead_steps, 0, distributed::kMaxLeadSteps) * t.step_ns();
       group_end = i;
       while (group_end < msgs.size() && msgs[group_end].data_time_ns <= horizon) ++group_end;
     } else if (o.rate > 0) {
@@ -213,8 +214,8 @@ int run_replay(const ReplayOpts& o) {
     out.writer.reset();
     out.ts->destroy(out.sample);
   }
-  std::printf("replayed %llu of %zu samples from %s in %.3f s%s\n", static_cast<unsigned long long>(published), msgs.size(),
-              o.file.c_str(), static_cast<double>(monotonic_ns() - start_mono) * 1e-9,
+  std::printf("replayed %llu of %zu samples from %s in %.3f s%s\n", static_cast<unsigned long long>(published),
+              msgs.size(), o.file.c_str(), static_cast<double>(monotonic_ns() - start_mono) * 1e-9,
               failed ? (" (" + std::to_string(failed) + " failed)").c_str() : "");
   // Stopped by SIGINT/SIGTERM before the end: a requested stop, not a failure.
   return failed == 0 && (published == msgs.size() || g_stop) ? 0 : 1;
@@ -229,7 +230,8 @@ Command add_replay_command(CLI::App& root) {
   add_dds_options(c.app, o->dds);
   c.app->add_option("file", o->file, "recording written by plexus record")->required();
   c.app->add_option("--topics", o->topics, "comma-separated topics (default: all recorded)");
-  c.app->add_option("--rate-scale", o->rate_scale, "speed relative to the recording (1: recorded speed)")->capture_default_str();
+  c.app->add_option("--rate-scale", o->rate_scale, "speed relative to the recording (1: recorded speed)")
+      ->capture_default_str();
   c.app->add_option("--rate", o->rate, "publish one sample every 1/HZ seconds instead");
   c.app->add_flag("--fast", o->fast, "as fast as possible");
   c.app->add_flag("--lockstep", o->lockstep,

@@ -13,7 +13,8 @@ namespace plexus::cli {
 Command add_report_command(CLI::App& root) {
   auto dir = std::make_shared<std::string>();
   Command c;
-  c.app = root.add_subcommand("report", "Plot a run folder written by `plexus sim` (gnuplot PNGs) and tabulate its metrics");
+  c.app = root.add_subcommand("report",
+                              "Plot a run folder written by `plexus sim` (gnuplot PNGs) and tabulate its metrics");
   c.app->add_option("run_dir", *dir, "Run folder")->required();
   // Exit 1 when a row says FAIL (an expectation not met, or its metric missing), as `sim`.
   c.run = [dir] { return print_report(*dir) > 0 ? 1 : 0; };

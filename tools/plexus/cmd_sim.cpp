@@ -13,17 +13,17 @@
 #include <vector>
 
 #include "command.hpp"
-#include "qos_names.hpp"
-#include "run_result.hpp"
-#include "seed_sweep.hpp"
 #include "plexus/base/clock.hpp"
 #include "plexus/base/input_error.hpp"
 #include "plexus/evaluation/evaluation.hpp"
-#include "plexus/scenario/executor.hpp"
 #include "plexus/evaluation/progress_bar.hpp"
-#include "plexus/scenario/registry.hpp"
 #include "plexus/evaluation/run_folder.hpp"
+#include "plexus/scenario/executor.hpp"
+#include "plexus/scenario/registry.hpp"
 #include "plexus/scenario/scenario.hpp"
+#include "qos_names.hpp"
+#include "run_result.hpp"
+#include "seed_sweep.hpp"
 
 namespace plexus::cli {
 namespace {
@@ -80,17 +80,20 @@ int run_sim(const SimOptions& o) {
 Command add_sim_command(CLI::App& root) {
   auto opts = std::make_shared<SimOptions>();
   Command c;
-  c.app = root.add_subcommand("sim", "Run a scenario in one process (no DDS), deterministically, faster than real time");
+  c.app =
+      root.add_subcommand("sim", "Run a scenario in one process (no DDS), deterministically, faster than real time");
   c.app->add_option("scenario", opts->scenario, "Scenario file (YAML, see docs/scenarios.md)");
   c.app->add_option("--set", opts->sets, "Override a scenario value: dotted.key=value (repeatable)")
       ->allow_extra_args(false);
   c.app->add_option("-o,--out", opts->out, "Run folder (default runs/<scenario>-<UTC time>)");
-  c.app->add_option("--qos-file", opts->qos_file, "QoS profiles the scenario's `qos` keys name (default deploy/qos.yaml)");
+  c.app->add_option("--qos-file", opts->qos_file,
+                    "QoS profiles the scenario's `qos` keys name (default deploy/qos.yaml)");
   c.app->add_flag("--json", opts->json, "Print the metrics as one JSON object on stdout");
   c.app->add_flag("--quiet,-q", opts->quiet, "No progress bar, no run folder line");
-  c.app->add_option("--seeds", opts->seeds,
-                    "Run with N seeds (the scenario's seed and the next N-1) and print each metric's mean, std, "
-                    "standard error, t, min and max; expectations are checked on the mean")
+  c.app
+      ->add_option("--seeds", opts->seeds,
+                   "Run with N seeds (the scenario's seed and the next N-1) and print each metric's mean, std, "
+                   "standard error, t, min and max; expectations are checked on the mean")
       ->check(CLI::Range(1, 10000));
   c.app->add_flag("--list", opts->list, "List the registered component and metric types");
   c.run = [opts] { return run_sim(*opts); };

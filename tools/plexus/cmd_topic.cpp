@@ -31,11 +31,13 @@ void check_common(const TopicOpts& o) {
   if (!(o.wait == -1 || (o.wait >= 0 && o.wait <= 600))) throw InputError("--wait: must be in 0..600 seconds");
   if (o.count < 0) throw InputError("--count: must be >= 0");
   if (!(o.duration >= 0)) throw InputError("--duration: must be >= 0 seconds");
-  if (!o.profile.empty()) rt::QosProfiles::load(o.qos_file.empty() ? rt::default_qos_file() : o.qos_file).get(o.profile);
+  if (!o.profile.empty())
+    rt::QosProfiles::load(o.qos_file.empty() ? rt::default_qos_file() : o.qos_file).get(o.profile);
 }
 
 // Flattens {"header": {"seq_num": 1}, "position": [1, 2]} to header.seq_num, position.0, position.1.
-void flatten(const nlohmann::ordered_json& j, const std::string& prefix, std::vector<std::pair<std::string, std::string>>& out) {
+void flatten(const nlohmann::ordered_json& j, const std::string& prefix,
+             std::vector<std::pair<std::string, std::string>>& out) {
   if (j.is_object()) {
     for (const auto& [k, v] : j.items()) flatten(v, prefix.empty() ? k : prefix + "." + k, out);
   } else if (j.is_array()) {
@@ -97,10 +99,11 @@ int run_list(const TopicOpts& o) {
   for (const auto& [t, r] : rows) {
     std::string types;
     for (const auto& ty : r.types) types += (types.empty() ? "" : " | ") + ty;
-    std::printf("%-40s %-36s %d writer%s, %d reader%s\n", t.c_str(), types.c_str(), r.writers, r.writers == 1 ? "" : "s",
-                r.readers, r.readers == 1 ? "" : "s");
+    std::printf("%-40s %-36s %d writer%s, %d reader%s\n", t.c_str(), types.c_str(), r.writers,
+                r.writers == 1 ? "" : "s", r.readers, r.readers == 1 ? "" : "s");
   }
-  if (rows.empty()) std::fprintf(stderr, "plexus topic list: no topics discovered on domain %d in %.1f s\n", o.dds.domain, wait);
+  if (rows.empty())
+    std::fprintf(stderr, "plexus topic list: no topics discovered on domain %d in %.1f s\n", o.dds.domain, wait);
   return 0;
 }
 
@@ -167,8 +170,8 @@ int run_hz(const TopicOpts& o) {
       std::printf("%s: no new samples\n", what);
       return;
     }
-    std::printf("%s: average rate %.3f Hz  min %.3f ms  max %.3f ms  std dev %.3f ms  window %llu\n", what, 1.0 / a.mean,
-                a.min * 1e3, a.max * 1e3, a.stddev() * 1e3, static_cast<unsigned long long>(a.n + 1));
+    std::printf("%s: average rate %.3f Hz  min %.3f ms  max %.3f ms  std dev %.3f ms  window %llu\n", what,
+                1.0 / a.mean, a.min * 1e3, a.max * 1e3, a.stddev() * 1e3, static_cast<unsigned long long>(a.n + 1));
   };
   read_samples(*reader, ts, o, [&](const void* s, const rt::SampleMeta& meta) {
     if (s) {
@@ -213,8 +216,8 @@ int run_info(const TopicOpts& o) {
   for (auto& e : remote_endpoints(*p, wait))
     if (e.topic == o.topic) eps.push_back(std::move(e));
   if (eps.empty()) {
-    std::fprintf(stderr, "plexus topic info: no endpoint on topic '%s' discovered on domain %d in %.1f s\n", o.topic.c_str(),
-                 o.dds.domain, wait);
+    std::fprintf(stderr, "plexus topic info: no endpoint on topic '%s' discovered on domain %d in %.1f s\n",
+                 o.topic.c_str(), o.dds.domain, wait);
     return 1;
   }
   std::set<std::string> types;
@@ -235,8 +238,8 @@ int run_info(const TopicOpts& o) {
     if (!w.is_writer) continue;
     for (const auto& r : eps) {
       if (r.is_writer) continue;
-      nlohmann::ordered_json pr = {{"writer", w.participant}, {"writer_guid", w.guid}, {"reader", r.participant},
-                                   {"reader_guid", r.guid}};
+      nlohmann::ordered_json pr = {
+          {"writer", w.participant}, {"writer_guid", w.guid}, {"reader", r.participant}, {"reader_guid", r.guid}};
       if (w.type_name != r.type_name) {
         pr["matched"] = false;
         pr["policy"] = "TYPE";
@@ -265,14 +268,16 @@ int run_info(const TopicOpts& o) {
   for (const char* kind : {"writer", "reader"}) {
     for (const auto& e : eps) {
       if (e.is_writer != (std::string(kind) == "writer")) continue;
-      std::printf("  %s of '%s' (%s)\n    QoS: %s\n", kind, e.participant.c_str(), e.guid.c_str(), rt::describe(e.qos).c_str());
+      std::printf("  %s of '%s' (%s)\n    QoS: %s\n", kind, e.participant.c_str(), e.guid.c_str(),
+                  rt::describe(e.qos).c_str());
     }
   }
   std::printf("Matching (DDS request-offered rules):\n");
   if (j["pairs"].empty()) std::printf("  no writer/reader pair\n");
   for (const auto& pr : j["pairs"]) {
     if (pr["matched"].get<bool>())
-      std::printf("  %s -> %s: matched\n", pr["writer"].get<std::string>().c_str(), pr["reader"].get<std::string>().c_str());
+      std::printf("  %s -> %s: matched\n", pr["writer"].get<std::string>().c_str(),
+                  pr["reader"].get<std::string>().c_str());
     else
       std::printf("  %s -> %s: INCOMPATIBLE %s (writer offers %s, reader requests %s)\n",
                   pr["writer"].get<std::string>().c_str(), pr["reader"].get<std::string>().c_str(),

@@ -81,8 +81,12 @@ class PlexusSide {
  private:
   void body(const LoopOpts& o, int cpu) {
     try {
-      rt::PeriodicLoop loop({.rate_hz = o.rate, .priority = o.priority, .cpu = cpu, .lock_memory = !o.no_mlock,
-                              .timer_slack_ns = o.timer_slack, .cpu_dma_latency_us = o.cpu_dma_latency});
+      rt::PeriodicLoop loop({.rate_hz = o.rate,
+                             .priority = o.priority,
+                             .cpu = cpu,
+                             .lock_memory = !o.no_mlock,
+                             .timer_slack_ns = o.timer_slack,
+                             .cpu_dma_latency_us = o.cpu_dma_latency});
       std::unique_lock lk(m_);
       refused_ = loop.refused();
       for (;;) {
@@ -164,7 +168,8 @@ int run_loop(const LoopOpts& o) {
   std::string ct;
   if (!o.no_cyclictest) {
     ct = find_program("cyclictest");
-    if (ct.empty()) std::fprintf(stderr, "plexus latency loop: warning: cyclictest not found (install rt-tests); plexus only\n");
+    if (ct.empty())
+      std::fprintf(stderr, "plexus latency loop: warning: cyclictest not found (install rt-tests); plexus only\n");
   }
   PlexusSide plexus(o, cpu, n);
   std::vector<double> hist_p(kHistUs + 1, 0.0), hist_c(kHistUs + 1, 0.0);
@@ -177,9 +182,14 @@ int run_loop(const LoopOpts& o) {
     auto args = [&](int prio) {
       // The plexus loop's settings: priority, CPU (its main thread left free, as plexus's),
       // memory locking, the CPU wake-up latency request; -l: the same number of wake-ups.
-      std::vector<std::string> a = {"-q", "-t1", "-p" + std::to_string(prio), "-i" + std::to_string(interval_us),
-                                    "-l" + std::to_string(samples), "-h" + std::to_string(kHistUs),
-                                    "-a" + std::to_string(cpu), "--mainaffinity=" + allowed.list};
+      std::vector<std::string> a = {"-q",
+                                    "-t1",
+                                    "-p" + std::to_string(prio),
+                                    "-i" + std::to_string(interval_us),
+                                    "-l" + std::to_string(samples),
+                                    "-h" + std::to_string(kHistUs),
+                                    "-a" + std::to_string(cpu),
+                                    "--mainaffinity=" + allowed.list};
       if (!o.no_mlock) a.push_back("-m");
       a.push_back(o.cpu_dma_latency < 0 ? std::string("--laptop") : "--latency=" + std::to_string(o.cpu_dma_latency));
       return a;
@@ -187,7 +197,8 @@ int run_loop(const LoopOpts& o) {
     std::string out;
     int rc = run_program(ct, args(ct_prio), out, {}, true);
     if (rc != 0 && ct_prio > 0) {
-      std::fprintf(stderr, "plexus latency loop: warning: cyclictest refused priority %d; running it without\n", ct_prio);
+      std::fprintf(stderr, "plexus latency loop: warning: cyclictest refused priority %d; running it without\n",
+                   ct_prio);
       ct_prio = 0;
       out.clear();
       rc = run_program(ct, args(0), out, {}, true);
@@ -199,7 +210,8 @@ int run_loop(const LoopOpts& o) {
   };
   // Rounds in ABBA order: plexus first in even rounds, cyclictest first in odd ones.
   for (int r = 0; r < o.rounds; ++r) {
-    const std::size_t from = n * static_cast<std::size_t>(r) / o.rounds, to = n * static_cast<std::size_t>(r + 1) / o.rounds;
+    const std::size_t from = n * static_cast<std::size_t>(r) / o.rounds,
+                      to = n * static_cast<std::size_t>(r + 1) / o.rounds;
     if (r % 2 == 1) run_cyclictest(to - from);
     plexus.run(to - from);
     if (r == 0) {
@@ -226,13 +238,21 @@ int run_loop(const LoopOpts& o) {
     if (ct_max > 0) b.max = ct_max;
   }
 
-  Json result = {{"rate_hz", o.rate},     {"duration_s", o.duration},     {"priority", prio_refused ? 0 : o.priority},
-                 {"cpu", cpu},            {"rounds", o.rounds},           {"cpu_dma_latency_us", o.cpu_dma_latency},
-                 {"timer_slack_ns", o.timer_slack}, {"mlockall", !o.no_mlock}, {"plexus", pct_json(a)}};
+  Json result = {{"rate_hz", o.rate},
+                 {"duration_s", o.duration},
+                 {"priority", prio_refused ? 0 : o.priority},
+                 {"cpu", cpu},
+                 {"rounds", o.rounds},
+                 {"cpu_dma_latency_us", o.cpu_dma_latency},
+                 {"timer_slack_ns", o.timer_slack},
+                 {"mlockall", !o.no_mlock},
+                 {"plexus", pct_json(a)}};
   if (!refused.empty()) result["refused"] = refused;
   if (have_cyclictest) {
     result["cyclictest"] = pct_json(b);
-    result["ratio"] = {{"mean", a.mean / b.mean}, {"p50", a.p50 / std::max(b.p50, 1.0)}, {"p99", a.p99 / std::max(b.p99, 1.0)},
+    result["ratio"] = {{"mean", a.mean / b.mean},
+                       {"p50", a.p50 / std::max(b.p50, 1.0)},
+                       {"p99", a.p99 / std::max(b.p99, 1.0)},
                        {"max", a.max / b.max}};
   }
   if (!o.out.empty()) {
@@ -246,12 +266,13 @@ int run_loop(const LoopOpts& o) {
     std::printf("%s\n", result.dump().c_str());
     return 0;
   }
-  std::printf("plexus latency loop: %g Hz for %g s in %d rounds, CPU %d, SCHED_FIFO priority %d, %s, CPU wake-up latency "
-              "request %s, timer slack %s%s\n",
-              o.rate, o.duration, o.rounds, cpu, prio_refused ? 0 : o.priority, o.no_mlock ? "no mlockall" : "mlockall",
-              o.cpu_dma_latency < 0 ? "none" : (std::to_string(o.cpu_dma_latency) + " us").c_str(),
-              o.timer_slack > 0 ? (std::to_string(o.timer_slack) + " ns").c_str() : "default",
-              refused.empty() ? "" : (" (refused: " + refused + ")").c_str());
+  std::printf(
+      "plexus latency loop: %g Hz for %g s in %d rounds, CPU %d, SCHED_FIFO priority %d, %s, CPU wake-up latency "
+      "request %s, timer slack %s%s\n",
+      o.rate, o.duration, o.rounds, cpu, prio_refused ? 0 : o.priority, o.no_mlock ? "no mlockall" : "mlockall",
+      o.cpu_dma_latency < 0 ? "none" : (std::to_string(o.cpu_dma_latency) + " us").c_str(),
+      o.timer_slack > 0 ? (std::to_string(o.timer_slack) + " ns").c_str() : "default",
+      refused.empty() ? "" : (" (refused: " + refused + ")").c_str());
   if (have_cyclictest) {
     print_compare("wake-up lateness", a, b, "cyclictest", true);
   } else {

@@ -13,8 +13,8 @@ struct LoopOpts {
   /// Both run pinned to this CPU. -1: the first CPU this process may run on, the CPU cyclictest
   /// pins its thread to when given no -a (it always pins), so both still run on the same CPU.
   int cpu = -1;
-  int cpu_dma_latency = 0;     // us, as cyclictest's default; -1: no request (cyclictest --laptop)
-  int64_t timer_slack = 1;     // ns; 0 keeps the thread's (Linux default 50 us)
+  int cpu_dma_latency = 0;  // us, as cyclictest's default; -1: no request (cyclictest --laptop)
+  int64_t timer_slack = 1;  // ns; 0 keeps the thread's (Linux default 50 us)
   /// The duration is split into this many plexus and cyclictest segments, run alternately
   /// (ABBA order), so a change in the shared machine's load hits both alike.
   int rounds = 4;

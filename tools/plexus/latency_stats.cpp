@@ -91,7 +91,8 @@ void write_histogram_png(const std::string& png, const std::string& title, const
     } else {
       for (double x : s.values) f << x << " 1\n";
     }
-    plot += std::string(i ? ", " : "") + "'" + dat + "' using (bin($1)):2 smooth freq with boxes title '" + s.name + "'";
+    plot +=
+        std::string(i ? ", " : "") + "'" + dat + "' using (bin($1)):2 smooth freq with boxes title '" + s.name + "'";
   }
   const std::string gp = png + ".gp";
   {
@@ -100,7 +101,8 @@ void write_histogram_png(const std::string& png, const std::string& title, const
     g << "set terminal pngcairo size 900,500 noenhanced\n"
       << "set output '" << png << "'\n"
       << "set title '" << title << "'\n"
-      << "set xlabel 'microseconds'\nset ylabel 'samples'\nset logscale y\nset grid\nset style fill transparent solid 0.4 noborder\n"
+      << "set xlabel 'microseconds'\nset ylabel 'samples'\nset logscale y\nset grid\nset style fill transparent solid "
+         "0.4 noborder\n"
       << "set xrange [0:" << xmax << "]\n"
       << "w = " << width << "\nset boxwidth w\nbin(x) = w * floor(x / w) + w / 2\n"
       << "plot " << plot << "\n";
@@ -111,14 +113,18 @@ void write_histogram_png(const std::string& png, const std::string& title, const
 }
 
 nlohmann::ordered_json pct_json(const Percentiles& p) {
-  return {{"count", p.count}, {"mean_us", p.mean}, {"p50_us", p.p50}, {"p90_us", p.p90}, {"p99_us", p.p99}, {"max_us", p.max}};
+  return {{"count", p.count}, {"mean_us", p.mean}, {"p50_us", p.p50},
+          {"p90_us", p.p90},  {"p99_us", p.p99},   {"max_us", p.max}};
 }
 
-void print_compare(const char* what, const Percentiles& a, const Percentiles& b, const std::string& b_name, bool b_has_p90) {
+void print_compare(const char* what, const Percentiles& a, const Percentiles& b, const std::string& b_name,
+                   bool b_has_p90) {
   std::printf("\n%s (us)      %12s %12s %8s\n", what, "plexus", b_name.c_str(), "ratio");
-  const std::pair<const char*, std::pair<double, double>> rows[] = {
-      {"mean", {a.mean, b.mean}}, {"p50", {a.p50, b.p50}}, {"p90", {a.p90, b_has_p90 ? b.p90 : -1}},
-      {"p99", {a.p99, b.p99}},    {"max", {a.max, b.max}}};
+  const std::pair<const char*, std::pair<double, double>> rows[] = {{"mean", {a.mean, b.mean}},
+                                                                    {"p50", {a.p50, b.p50}},
+                                                                    {"p90", {a.p90, b_has_p90 ? b.p90 : -1}},
+                                                                    {"p99", {a.p99, b.p99}},
+                                                                    {"max", {a.max, b.max}}};
   for (const auto& [name, v] : rows) {
     if (v.second < 0)
       std::printf("  %-16s %12.1f %12s %8s\n", name, v.first, "n/a", "n/a");

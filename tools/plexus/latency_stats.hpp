@@ -21,8 +21,8 @@ Percentiles histogram_percentiles(const std::vector<double>& counts);
 
 struct Series {
   std::string name;
-  std::vector<double> values;   ///< samples (us), or bucket counts if `bucketed`
-  bool bucketed = false;        ///< values[i] = count at i us
+  std::vector<double> values;  ///< samples (us), or bucket counts if `bucketed`
+  bool bucketed = false;       ///< values[i] = count at i us
 };
 
 /// Writes `png` (and `png` + ".dat*"/".gp") with one histogram per series, x in us, log y.
@@ -36,7 +36,8 @@ std::string ratio_text(double a, double b);
 nlohmann::ordered_json pct_json(const Percentiles& p);
 
 /// Prints the table mean/p50/p90/p99/max of `a` (plexus) and `b` (`b_name`) and their ratio.
-void print_compare(const char* what, const Percentiles& a, const Percentiles& b, const std::string& b_name, bool b_has_p90);
+void print_compare(const char* what, const Percentiles& a, const Percentiles& b, const std::string& b_name,
+                   bool b_has_p90);
 
 /// Creates `dir` (and its parents) for --out; "" does nothing. InputError if it cannot.
 void make_out_dir(const std::string& dir);

@@ -150,9 +150,12 @@ RecordingReader::RecordingReader(const std::string& path) : path_(path) {
     const auto* type = reinterpret_cast<const char*>(sqlite3_column_text(st, 2));
     const auto* qos = reinterpret_cast<const char*>(sqlite3_column_text(st, 3));
     t.id = sqlite3_column_int64(st, 0);
-    if (sqlite3_column_type(st, 0) != SQLITE_INTEGER) bad = "a topic without an integer id";
-    else if (!name || !type || !qos) bad = "topic " + std::to_string(t.id) + " without a name or a type";
-    else if (!topics_.empty() && topics_.back().id == t.id) bad = "topic id " + std::to_string(t.id) + " twice";
+    if (sqlite3_column_type(st, 0) != SQLITE_INTEGER)
+      bad = "a topic without an integer id";
+    else if (!name || !type || !qos)
+      bad = "topic " + std::to_string(t.id) + " without a name or a type";
+    else if (!topics_.empty() && topics_.back().id == t.id)
+      bad = "topic id " + std::to_string(t.id) + " twice";
     if (!bad.empty()) break;
     t.name = name;
     t.type = type;
@@ -179,7 +182,8 @@ RecordingReader::~RecordingReader() {
 int64_t RecordingReader::message_count() const {
   sqlite3_stmt* st = nullptr;
   int64_t n = 0;
-  if (sqlite3_prepare_v2(db_, "SELECT COUNT(*) FROM messages", -1, &st, nullptr) == SQLITE_OK && sqlite3_step(st) == SQLITE_ROW)
+  if (sqlite3_prepare_v2(db_, "SELECT COUNT(*) FROM messages", -1, &st, nullptr) == SQLITE_OK &&
+      sqlite3_step(st) == SQLITE_ROW)
     n = sqlite3_column_int64(st, 0);
   sqlite3_finalize(st);
   return n;
@@ -187,10 +191,11 @@ int64_t RecordingReader::message_count() const {
 
 void RecordingReader::for_each(const std::function<bool(const RecordedMessage&)>& fn) const {
   sqlite3_stmt* raw = nullptr;
-  if (sqlite3_prepare_v2(db_,
-                         "SELECT topic_id, receive_time_ns, seq_num, data_time_ns, origin_time_ns, publish_time_ns, cdr,"
-                         " id FROM messages ORDER BY receive_time_ns, id",
-                         -1, &raw, nullptr) != SQLITE_OK) {
+  if (sqlite3_prepare_v2(
+          db_,
+          "SELECT topic_id, receive_time_ns, seq_num, data_time_ns, origin_time_ns, publish_time_ns, cdr,"
+          " id FROM messages ORDER BY receive_time_ns, id",
+          -1, &raw, nullptr) != SQLITE_OK) {
     sqlite3_finalize(raw);
     throw InputError(path_ + ": not a plexus recording (no messages table)");
   }
@@ -213,7 +218,8 @@ void RecordingReader::for_each(const std::function<bool(const RecordedMessage&)>
   while ((rc = sqlite3_step(st)) == SQLITE_ROW) {
     const std::string row = "message " + std::to_string(sqlite3_column_int64(st, 7));
     for (int c = 0; c < 6; ++c)
-      if (sqlite3_column_type(st, c) != SQLITE_INTEGER) refuse(row + ": " + sqlite3_column_name(st, c) + " is not an integer");
+      if (sqlite3_column_type(st, c) != SQLITE_INTEGER)
+        refuse(row + ": " + sqlite3_column_name(st, c) + " is not an integer");
     if (sqlite3_column_type(st, 6) != SQLITE_BLOB && sqlite3_column_type(st, 6) != SQLITE_NULL)
       refuse(row + ": cdr is not a blob");
     m.topic_id = sqlite3_column_int64(st, 0);
@@ -223,7 +229,8 @@ void RecordingReader::for_each(const std::function<bool(const RecordedMessage&)>
     m.origin_time_ns = sqlite3_column_int64(st, 4);
     m.publish_time_ns = sqlite3_column_int64(st, 5);
     if (m.receive_time_ns < 0) refuse(row + ": negative receive time " + std::to_string(m.receive_time_ns));
-    if (m.receive_time_ns < last_receive) refuse("truncated or corrupt (messages out of receive-time order: a damaged index)");
+    if (m.receive_time_ns < last_receive)
+      refuse("truncated or corrupt (messages out of receive-time order: a damaged index)");
     last_receive = m.receive_time_ns;
     ++rows;
     if (!topic_ids.count(m.topic_id))

@@ -28,7 +28,8 @@ class RecordedQosReader {
         if (v.get_ref<const std::string&>() == n) return e;
     std::string expected;
     for (const auto& [n, e] : names) expected += (expected.empty() ? "" : ", ") + std::string(n);
-    fail(key, "expected one of " + expected + ", got " + v.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
+    fail(key,
+         "expected one of " + expected + ", got " + v.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
   }
 
   double seconds(const char* key) const {
@@ -54,7 +55,8 @@ class RecordedQosReader {
   }
 
   [[noreturn]] void fail(const std::string& key, const std::string& what) const {
-    throw InputError(where_ + ": " + key + ": " + what + " (replay with --profile PROFILE to publish with a profile instead)");
+    throw InputError(where_ + ": " + key + ": " + what +
+                     " (replay with --profile PROFILE to publish with a profile instead)");
   }
 
  private:
@@ -82,9 +84,9 @@ rt::QosProfile recorded_qos(const RecordedTopic& topic, const std::string& file,
   if (j.is_discarded() || !j.is_object()) throw InputError(where + ": not a JSON object");
   const RecordedQosReader r(j, where);
   rt::EndpointQos e;
-  e.reliability = r.choice("reliability", Q::Reliability::best_effort,
-                           {std::pair{"reliable", Q::Reliability::reliable},
-                            std::pair{"best_effort", Q::Reliability::best_effort}});
+  e.reliability = r.choice(
+      "reliability", Q::Reliability::best_effort,
+      {std::pair{"reliable", Q::Reliability::reliable}, std::pair{"best_effort", Q::Reliability::best_effort}});
   enum class D { volatile_, transient_local, transient };
   const D d = r.choice("durability", D::volatile_,
                        {std::pair{"volatile", D::volatile_}, std::pair{"transient_local", D::transient_local},

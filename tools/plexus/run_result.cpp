@@ -45,7 +45,9 @@ int finish_run(const scenario::Scenario& sc, const scenario::RunLog& log, double
 }
 
 int interrupted_run(const std::string& command, int signal, const std::filesystem::path& dir, double wall_seconds) {
-  const std::string name = signal == SIGINT ? "SIGINT" : signal == SIGTERM ? "SIGTERM" : "signal " + std::to_string(signal);
+  const std::string name = signal == SIGINT    ? "SIGINT"
+                           : signal == SIGTERM ? "SIGTERM"
+                                               : "signal " + std::to_string(signal);
   scenario::mark_run_folder(dir, "interrupted (" + name + ")");
   std::fprintf(stderr, "%s: interrupted (%s) after %.1f s; run folder %s is incomplete (not scored)\n", command.c_str(),
                name.c_str(), wall_seconds, dir.string().c_str());
@@ -59,7 +61,8 @@ void log_scenario_warnings(const scenario::Scenario& sc, const std::filesystem::
 int print_report(const std::string& run_dir, bool to_stderr) {
   const auto r = scenario::write_report(run_dir);
   std::FILE* out = to_stderr ? stderr : stdout;
-  std::fprintf(out, "\n%s\nreport: %s\n        %s\n", r.table.c_str(), r.html.string().c_str(), r.markdown.string().c_str());
+  std::fprintf(out, "\n%s\nreport: %s\n        %s\n", r.table.c_str(), r.html.string().c_str(),
+               r.markdown.string().c_str());
   for (const auto& p : r.plots) std::fprintf(out, "  %s\n", p.string().c_str());
   return r.failed;
 }

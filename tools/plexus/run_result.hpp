@@ -16,9 +16,10 @@ namespace plexus::cli {
 
 /// What a command adds to the common output.
 struct RunSummary {
-  std::string headline;                                         ///< first line of the text output
-  nlohmann::ordered_json extra = nlohmann::ordered_json::object();  ///< merged into --json; also <run folder>/launch.json
-  std::vector<std::string> lines;                               ///< text lines after the metrics
+  std::string headline;  ///< first line of the text output
+  nlohmann::ordered_json extra =
+      nlohmann::ordered_json::object();  ///< merged into --json; also <run folder>/launch.json
+  std::vector<std::string> lines;        ///< text lines after the metrics
 };
 
 /// The unit of each field of each IDL message type, as the wire description declares it

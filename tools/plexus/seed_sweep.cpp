@@ -10,8 +10,8 @@
 
 #include "plexus/base/clock.hpp"
 #include "plexus/evaluation/evaluation.hpp"
-#include "plexus/scenario/executor.hpp"
 #include "plexus/evaluation/run_folder.hpp"
+#include "plexus/scenario/executor.hpp"
 #include "plexus/scenario/scenario.hpp"
 
 namespace plexus::cli {
@@ -64,7 +64,8 @@ nlohmann::ordered_json SeedStatistics::to_json() const {
 int run_seed_sweep(const SeedSweepOptions& o) {
   const scenario::Scenario first = scenario::load_scenario(o.scenario, o.overrides);
   const auto dir = scenario::prepare_run_folder(o.out, first.name + "-seeds");
-  scenario::log_warnings(first, " (details: " + (dir / ("seed-" + std::to_string(first.seed)) / "summary.md").string() + ")");
+  scenario::log_warnings(first,
+                         " (details: " + (dir / ("seed-" + std::to_string(first.seed)) / "summary.md").string() + ")");
   std::vector<uint64_t> seeds;
   std::vector<std::string> names;
   std::map<std::string, std::vector<double>> values;
@@ -117,7 +118,8 @@ int run_seed_sweep(const SeedSweepOptions& o) {
     if (e.holds(s.mean)) continue;
     ++failed;
     std::fprintf(stderr, "expectation failed: %s mean = %s over %d seeds, bound %s %s\n", e.metric.c_str(),
-                 scenario::format_number(s.mean).c_str(), o.seeds, e.op_text(), scenario::format_number(e.bound).c_str());
+                 scenario::format_number(s.mean).c_str(), o.seeds, e.op_text(),
+                 scenario::format_number(e.bound).c_str());
   }
   return failed == 0 ? 0 : 1;
 }

@@ -9,8 +9,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "plexus/scenario/overrides.hpp"
 #include "plexus/evaluation/run_folder.hpp"
+#include "plexus/scenario/overrides.hpp"
 
 namespace plexus::cli {
 
@@ -18,9 +18,9 @@ namespace plexus::cli {
 struct SeedStatistics {
   std::vector<double> values;  ///< per seed, in seed order
   double mean = 0.0;
-  double std = 0.0;   ///< sample standard deviation (n - 1); 0 for one seed
-  double sem = 0.0;   ///< standard error of the mean, std / sqrt(n)
-  double t = 0.0;     ///< mean / sem: Student's t against 0 (n - 1 degrees of freedom)
+  double std = 0.0;  ///< sample standard deviation (n - 1); 0 for one seed
+  double sem = 0.0;  ///< standard error of the mean, std / sqrt(n)
+  double t = 0.0;    ///< mean / sem: Student's t against 0 (n - 1 degrees of freedom)
   double min = 0.0;
   double max = 0.0;
 
@@ -32,8 +32,8 @@ SeedStatistics summarise(const std::vector<double>& values);
 struct SeedSweepOptions {
   std::string scenario;
   std::vector<scenario::Override> overrides;
-  int seeds = 0;        ///< number of runs, seeds first .. first + seeds - 1
-  std::string out;      ///< folder of the sweep: seeds.json and seed-<s>/ per run
+  int seeds = 0;    ///< number of runs, seeds first .. first + seeds - 1
+  std::string out;  ///< folder of the sweep: seeds.json and seed-<s>/ per run
   bool json = false;
   bool quiet = false;
   scenario::FieldUnits units;  ///< field units for each run folder's signals.json (wire_field_units())

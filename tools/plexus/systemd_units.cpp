@@ -22,10 +22,14 @@ std::string exec_argument(const std::string& s) {
   std::string body;
   bool quote = s.empty();
   for (char c : s) {
-    if (c == '%') body += "%%";        // systemd specifier
-    else if (c == '$') body += "$$";   // environment variable expansion
-    else if (c == '"' || c == '\\') body += std::string("\\") + c, quote = true;
-    else body += c;
+    if (c == '%')
+      body += "%%";  // systemd specifier
+    else if (c == '$')
+      body += "$$";  // environment variable expansion
+    else if (c == '"' || c == '\\')
+      body += std::string("\\") + c, quote = true;
+    else
+      body += c;
     quote = quote || c == ' ' || c == '\t' || c == '\'' || c == ';';
   }
   return quote ? "\"" + body + "\"" : body;
@@ -89,13 +93,19 @@ UnitSet make_units(const scenario::Scenario& sc, const UnitOptions& o) {
     YAML::Emitter yaml;
     yaml << part;
     set.config.push_back({file, std::string("# ") + p.service() + " on host " + (o.host.empty() ? "(any)" : o.host) +
-                                    ": its part of scenario " + sc.name + " (plexus deploy units)\n" + yaml.c_str() + "\n"});
+                                    ": its part of scenario " + sc.name + " (plexus deploy units)\n" + yaml.c_str() +
+                                    "\n"});
     std::vector<std::string> args;
     if (p.program == "replay") {
       args = replay_args(sc, p);
       args.insert(args.begin(), o.bin_dir + "/plexus");
     } else {
-      args = {o.bin_dir + "/" + p.executable(), "--part", o.config_dir + "/" + file, "--service", p.service(), "--mode",
+      args = {o.bin_dir + "/" + p.executable(),
+              "--part",
+              o.config_dir + "/" + file,
+              "--service",
+              p.service(),
+              "--mode",
               "realtime"};
       if (p.priority > 0) args.insert(args.end(), {"--priority", std::to_string(p.priority)});
       if (p.cpu >= 0) args.insert(args.end(), {"--cpu", std::to_string(p.cpu)});
@@ -107,8 +117,8 @@ UnitSet make_units(const scenario::Scenario& sc, const UnitOptions& o) {
     std::string exec;
     for (const auto& a : args) exec += (exec.empty() ? "" : " ") + exec_argument(a);
     std::ostringstream u;
-    u << "# " << p.service() << ": process of scenario " << sc.name << " on host " << (o.host.empty() ? "(any)" : o.host)
-      << ", written by plexus deploy units (docs/deployment.md)\n"
+    u << "# " << p.service() << ": process of scenario " << sc.name << " on host "
+      << (o.host.empty() ? "(any)" : o.host) << ", written by plexus deploy units (docs/deployment.md)\n"
       << "[Unit]\n"
       << "Description=plexus " << sc.name << ": " << p.service() << "\n"
       << "PartOf=" << set.target << "\n"

@@ -18,7 +18,7 @@ struct UnitOptions {
   std::string config_dir;  ///< where the processes' part files and qos.yaml go on the robot (absolute)
   std::string dds;         ///< vendor of processes without a `dds` key (empty: dds.vendor, else fast)
   std::map<std::string, std::string> vendor_of;  ///< --vendor PROCESS=V
-  int domain = -1;         ///< -1: the scenario's
+  int domain = -1;                               ///< -1: the scenario's
 };
 
 /// A file to write: its name in the output folder and its text.
@@ -28,9 +28,9 @@ struct UnitFile {
 };
 
 struct UnitSet {
-  std::string target;               ///< plexus-<scenario>-<host>.target
-  std::vector<UnitFile> units;      ///< the services, then the target
-  std::vector<UnitFile> config;     ///< <process>.yaml: each process's part, run until stopped
+  std::string target;            ///< plexus-<scenario>-<host>.target
+  std::vector<UnitFile> units;   ///< the services, then the target
+  std::vector<UnitFile> config;  ///< <process>.yaml: each process's part, run until stopped
 };
 
 /// Throws InputError for an unknown host or process, or a scenario with no process there.

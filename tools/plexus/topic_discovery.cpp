@@ -33,7 +33,8 @@ void add_dds_options(CLI::App* app, DdsOptions& o) {
   rt::add_security_options(*app, o.security, o.identity, o.governance);
 }
 
-std::unique_ptr<rt::Participant> make_participant(const DdsOptions& o, const std::string& name, const std::string& identity) {
+std::unique_ptr<rt::Participant> make_participant(const DdsOptions& o, const std::string& name,
+                                                  const std::string& identity) {
   rt::ParticipantOptions po;
   po.vendor = rt::parse_vendor(o.dds);
   po.domain_id = o.domain;
@@ -58,8 +59,9 @@ std::vector<rt::DiscoveredEndpoint> remote_endpoints(const rt::Participant& p, d
   return out;
 }
 
-const msg::TypeSupport& resolve_topic_type(const rt::Participant& p, const std::string& topic, const std::string& type_option,
-                                           double wait_s, std::vector<rt::EndpointQos>* writers) {
+const msg::TypeSupport& resolve_topic_type(const rt::Participant& p, const std::string& topic,
+                                           const std::string& type_option, double wait_s,
+                                           std::vector<rt::EndpointQos>* writers) {
   const msg::TypeSupport* forced = nullptr;
   if (!type_option.empty()) {
     forced = msg::find_type_support(type_option);
@@ -87,14 +89,15 @@ const msg::TypeSupport& resolve_topic_type(const rt::Participant& p, const std::
     throw std::runtime_error("no writer on topic '" + topic + "' after " + std::to_string(wait_s).substr(0, 4) +
                              " s (give --type to subscribe anyway, or a longer --wait)");
   const msg::TypeSupport* ts = msg::find_type_support(announced);
-  if (!ts) throw std::runtime_error("topic '" + topic + "' has type '" + announced + "', which this plexus build does not know");
+  if (!ts)
+    throw std::runtime_error("topic '" + topic + "' has type '" + announced +
+                             "', which this plexus build does not know");
   return *ts;
 }
 
 rt::QosProfile subscriber_qos(const std::string& qos_file, const std::string& profile,
                               const std::vector<rt::EndpointQos>& writers, int32_t depth) {
-  if (!profile.empty())
-    return rt::QosProfiles::load(qos_file.empty() ? rt::default_qos_file() : qos_file).get(profile);
+  if (!profile.empty()) return rt::QosProfiles::load(qos_file.empty() ? rt::default_qos_file() : qos_file).get(profile);
   return rt::reader_qos_matching(writers, depth);
 }
 

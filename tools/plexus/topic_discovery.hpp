@@ -26,7 +26,8 @@ struct DdsOptions {
 void add_dds_options(CLI::App* app, DdsOptions& o);
 /// A participant named `name`; under --security its identity is --identity, else `identity`
 /// (the tool's own: plexus_topic, plexus_record, plexus_replay).
-std::unique_ptr<rt::Participant> make_participant(const DdsOptions& o, const std::string& name, const std::string& identity);
+std::unique_ptr<rt::Participant> make_participant(const DdsOptions& o, const std::string& name,
+                                                  const std::string& identity);
 
 /// Set by SIGINT/SIGTERM once install_stop_handler() ran.
 extern std::atomic<bool> g_stop;
@@ -39,8 +40,9 @@ std::vector<rt::DiscoveredEndpoint> remote_endpoints(const rt::Participant& p, d
 /// writers announce, waiting up to `wait_s` for one to be discovered. Fills `writers` with
 /// the QoS of the writers seen. Throws InputError for an unknown --type, runtime_error if
 /// no writer shows up or the announced type is not one plexus knows.
-const msg::TypeSupport& resolve_topic_type(const rt::Participant& p, const std::string& topic, const std::string& type_option,
-                                           double wait_s, std::vector<rt::EndpointQos>* writers);
+const msg::TypeSupport& resolve_topic_type(const rt::Participant& p, const std::string& topic,
+                                           const std::string& type_option, double wait_s,
+                                           std::vector<rt::EndpointQos>* writers);
 
 /// The QoS profile for a subscriber: `profile` from the QoS file if given, else one that
 /// matches the discovered writers (see rt::reader_qos_matching).

@@ -37,8 +37,7 @@ std::shared_ptr<spdlog::logger> named_logger(const std::string& name) {
   return logger;
 }
 
-std::shared_ptr<spdlog::logger> init_logging(std::string_view service, std::string_view robot,
-                                             std::string_view level) {
+std::shared_ptr<spdlog::logger> init_logging(std::string_view service, std::string_view robot, std::string_view level) {
   const auto lvl = parse_log_level(level, "--log-level");
   std::string tag(service);
   if (!robot.empty()) tag += "/" + std::string(robot);

@@ -28,7 +28,8 @@ Deadline& deadline() {
 }
 
 int64_t now_ns() {
-  return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch()).count();
+  return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch())
+      .count();
 }
 
 }  // namespace
@@ -46,8 +47,10 @@ int exit_within(int rc, double seconds, const std::string& who) {
         if (left <= 0) break;
         std::this_thread::sleep_for(std::chrono::nanoseconds(left));
       }
-      std::fprintf(stderr, "%s: teardown did not finish within %g s of the end (a DDS vendor's shutdown hung): exiting without it\n",
-                   d.who.c_str(), d.seconds.load());
+      std::fprintf(
+          stderr,
+          "%s: teardown did not finish within %g s of the end (a DDS vendor's shutdown hung): exiting without it\n",
+          d.who.c_str(), d.seconds.load());
       spdlog::apply_all([](const std::shared_ptr<spdlog::logger>& l) { l->flush(); });
       std::fflush(nullptr);
       _exit(d.rc.load());

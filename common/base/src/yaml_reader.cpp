@@ -2,8 +2,8 @@
 
 #include <cmath>
 #include <cstdint>
-#include <fstream>
 #include <filesystem>
+#include <fstream>
 #include <limits>
 #include <map>
 #include <sstream>
@@ -69,7 +69,8 @@ class AliasCheck final : public YAML::EventHandler {
   void OnScalar(const YAML::Mark&, const std::string&, YAML::anchor_t anchor, const std::string&) override {
     leaf(anchor);
   }
-  void OnSequenceStart(const YAML::Mark&, const std::string&, YAML::anchor_t anchor, YAML::EmitterStyle::value) override {
+  void OnSequenceStart(const YAML::Mark&, const std::string&, YAML::anchor_t anchor,
+                       YAML::EmitterStyle::value) override {
     open(anchor);
   }
   void OnSequenceEnd() override { close(); }
@@ -155,7 +156,8 @@ YAML::Node load_yaml_file(const std::string& path) {
   std::error_code ec;
   const auto size = std::filesystem::file_size(path, ec);
   if (!ec && size > kMaxBytes)
-    throw InputError(path + ": " + std::to_string(size >> 20) + " MB, larger than the 4 MB limit for a plexus YAML file");
+    throw InputError(path + ": " + std::to_string(size >> 20) +
+                     " MB, larger than the 4 MB limit for a plexus YAML file");
   std::ifstream in(path);
   if (!in) throw InputError(path + ": cannot open file");
   std::stringstream ss;
@@ -167,17 +169,15 @@ YamlMap::YamlMap(YAML::Node node, std::string file, std::string path)
     : node_(std::move(node)), file_(std::move(file)), path_(std::move(path)) {
   if (!node_ || !node_.IsMap()) {
     const std::string at = node_ ? file_ + ":" + line_of(node_) : file_;
-    throw InputError(at + ": " + (path_.empty() ? std::string("document") : path_) +
-                     ": expected a mapping, got " + (node_ ? scalar_text(node_) : "nothing"));
+    throw InputError(at + ": " + (path_.empty() ? std::string("document") : path_) + ": expected a mapping, got " +
+                     (node_ ? scalar_text(node_) : "nothing"));
   }
 }
 
 std::string YamlMap::where() const { return file_ + ":" + line_of(node_); }
 std::string YamlMap::where(const YAML::Node& n) const { return file_ + ":" + line_of(n); }
 
-std::string YamlMap::key_path(const std::string& key) const {
-  return path_.empty() ? key : path_ + "." + key;
-}
+std::string YamlMap::key_path(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
 
 bool YamlMap::has(const std::string& key) const { return static_cast<bool>(node_[key]); }
 
@@ -185,8 +185,7 @@ YAML::Node YamlMap::child(const std::string& key, bool required) const {
   read_.insert(key);
   YAML::Node n = node_[key];
   if (!n && required) throw InputError(where() + ": " + key_path(key) + ": required key is missing");
-  if (n && n.IsNull() && required)
-    throw InputError(where(n) + ": " + key_path(key) + ": required key has no value");
+  if (n && n.IsNull() && required) throw InputError(where(n) + ": " + key_path(key) + ": required key has no value");
   return n;
 }
 
@@ -194,15 +193,13 @@ YAML::Node YamlMap::node(const std::string& key) const { return child(key, false
 
 YamlMap YamlMap::map(const std::string& key) const {
   YAML::Node n = child(key, true);
-  if (!n.IsMap())
-    throw InputError(where(n) + ": " + key_path(key) + ": expected a mapping, got " + scalar_text(n));
+  if (!n.IsMap()) throw InputError(where(n) + ": " + key_path(key) + ": expected a mapping, got " + scalar_text(n));
   return YamlMap(n, file_, key_path(key));
 }
 
 std::vector<YAML::Node> YamlMap::sequence(const std::string& key) const {
   YAML::Node n = child(key, true);
-  if (!n.IsSequence())
-    throw InputError(where(n) + ": " + key_path(key) + ": expected a list, got " + scalar_text(n));
+  if (!n.IsSequence()) throw InputError(where(n) + ": " + key_path(key) + ": expected a list, got " + scalar_text(n));
   return std::vector<YAML::Node>(n.begin(), n.end());
 }
 

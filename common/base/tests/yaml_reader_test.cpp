@@ -52,7 +52,8 @@ TEST(YamlReader, RejectsNonFiniteAndOutOfRange) {
 TEST(YamlReader, SyntaxErrorAndMissingFile) {
   EXPECT_EQ(error_of([] { load_yaml_file("/nonexistent/q.yaml"); }), "/nonexistent/q.yaml: cannot open file");
   EXPECT_NE(error_of([] { load_yaml_string("a: [1, 2\n", "bad.yaml"); }).find("bad.yaml:"), std::string::npos);
-  EXPECT_NE(error_of([] { YamlMap(load_yaml_string("- 1\n- 2", "l.yaml"), "l.yaml"); }).find("expected a mapping"), std::string::npos);
+  EXPECT_NE(error_of([] { YamlMap(load_yaml_string("- 1\n- 2", "l.yaml"), "l.yaml"); }).find("expected a mapping"),
+            std::string::npos);
 }
 
 // Found by fuzzing (tests/fuzz, qos_file): yaml-cpp quotes the character a syntax error is
@@ -91,7 +92,8 @@ TEST(YamlReader, AliasCycleAndAliasBombAreRefused) {
     bomb += "]\n";
   }
   // Repeated nodes: l1 110, l2 1110, l3 11110, l4 111110: beyond 100000 on line 5 (l4).
-  EXPECT_EQ(error_of([&] { load_yaml_string(bomb, "b.yaml"); }), "b.yaml:5: aliases repeat more than 100000 nodes in all");
+  EXPECT_EQ(error_of([&] { load_yaml_string(bomb, "b.yaml"); }),
+            "b.yaml:5: aliases repeat more than 100000 nodes in all");
   // Anchors used as a user would: accepted, and the aliases read as the anchored values.
   const YAML::Node ok = load_yaml_string("common: &c {rate: 10, noise: 0.1}\ngps1: *c\ngps2: *c\n", "ok.yaml");
   EXPECT_EQ(ok["gps2"]["rate"].as<int>(), 10);

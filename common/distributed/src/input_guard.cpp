@@ -21,10 +21,12 @@ bool InputGuard::accept(const WireSignal& wire, const void* message, scenario::S
       const WireSlot& slot = *std::find_if(wire.type().slots.begin(), wire.type().slots.end(),
                                            [&](const WireSlot& x) { return x.field == spec.fields[bad]; });
       why += ": '" + spec.fields[bad] + "' is " + std::to_string(wire.value(message, bad)) + " (range " +
-             std::to_string(slot.min) + " .. " + std::to_string(slot.max) + (*slot.unit ? std::string(" ") + slot.unit : "") + ")";
+             std::to_string(slot.min) + " .. " + std::to_string(slot.max) +
+             (*slot.unit ? std::string(" ") + slot.unit : "") + ")";
     }
-    spdlog::warn("{}: refused a {} sample on '{}' from '{}': {}; {} refused so far{}", host_, wire.type().name, spec.name,
-                 spec.producer, why, rejected_, held ? " (" + std::to_string(held) + " not logged)" : std::string());
+    spdlog::warn("{}: refused a {} sample on '{}' from '{}': {}; {} refused so far{}", host_, wire.type().name,
+                 spec.name, spec.producer, why, rejected_,
+                 held ? " (" + std::to_string(held) + " not logged)" : std::string());
   }
   return false;
 }

@@ -7,8 +7,8 @@
 #include <cmath>
 #include <thread>
 
-#include "plexus/base/clock.hpp"
 #include "input_guard.hpp"
+#include "plexus/base/clock.hpp"
 #include "plexus/scenario/format.hpp"
 
 namespace plexus::distributed {
@@ -43,8 +43,9 @@ class RemoteSignal {
       if (ring_[slot(due)].sample.step == due) continue;
       const int64_t now = monotonic_ns();
       if (now >= deadline)
-        throw LockstepError("lockstep: no sample of '" + spec_->name + "' (produced by '" + spec_->producer + "') for " +
-                            step_text(due) + " within " + seconds_text(static_cast<double>(timeout_ns) * 1e-9));
+        throw LockstepError("lockstep: no sample of '" + spec_->name + "' (produced by '" + spec_->producer +
+                            "') for " + step_text(due) + " within " +
+                            seconds_text(static_cast<double>(timeout_ns) * 1e-9));
       sub_.wait(deadline - now);
     }
   }
@@ -86,7 +87,7 @@ struct LockstepHost::Impl {
   detail::InputGuard guard{"lockstep host"};
   rt::Subscriber<msg::ClockStep> clock;
   std::vector<std::unique_ptr<RemoteSignal>> remote;  // indexed by signal (null if not remote)
-  std::vector<std::unique_ptr<WirePublisher>> out;     // indexed by signal (null if not local)
+  std::vector<std::unique_ptr<WirePublisher>> out;    // indexed by signal (null if not local)
 
   Impl(scenario::Scenario& s, std::vector<bool> hosted, rt::Participant& p, const rt::QosProfile& qos,
        LockstepOptions o)
@@ -97,7 +98,8 @@ struct LockstepHost::Impl {
     out.resize(signals.size());
     for (std::size_t i : exec.remote_inputs())
       remote[i] = std::make_unique<RemoteSignal>(signals[i], p, qos, step_ns(sc), guard);
-    for (std::size_t i : exec.local_outputs()) out[i] = std::make_unique<WirePublisher>(p, signals[i], step_ns(sc), qos);
+    for (std::size_t i : exec.local_outputs())
+      out[i] = std::make_unique<WirePublisher>(p, signals[i], step_ns(sc), qos);
   }
 };
 

@@ -9,12 +9,12 @@
 #include <cstring>
 #include <numeric>
 
+#include "input_guard.hpp"
 #include "plexus/base/clock.hpp"
 #include "plexus/base/input_error.hpp"
 #include "plexus/distributed/lockstep.hpp"
 #include "plexus/scenario/format.hpp"
 #include "plexus/scenario/step_executor.hpp"
-#include "input_guard.hpp"
 
 namespace plexus::distributed {
 namespace {
@@ -46,11 +46,11 @@ struct RemoteSamples {
   RemoteSamples(const scenario::SignalSpec& spec, rt::Participant& p, const rt::QosProfile& qos, int64_t step_ns)
       : sub(p, spec, step_ns, qos), ring(kKept) {}
   WireSubscriber sub;
-  std::vector<Entry> ring;   // ring[(first + i) % kKept], i < count: oldest first
+  std::vector<Entry> ring;  // ring[(first + i) % kKept], i < count: oldest first
   std::size_t first = 0, count = 0;
   SignalSample scratch;
-  int64_t received_ns = 0;   // monotonic, of the newest sample
-  int64_t deadline_ns = 0;   // stale after this age
+  int64_t received_ns = 0;  // monotonic, of the newest sample
+  int64_t deadline_ns = 0;  // stale after this age
 
   /// Step of the newest sample, -1 before the first.
   int64_t newest_step() const { return count == 0 ? -1 : ring[(first + count - 1) % kKept].sample.step; }
@@ -145,7 +145,7 @@ struct RealtimeHost::Impl {
   detail::InputGuard guard{opt.service};
   std::vector<std::unique_ptr<RemoteSamples>> remote;  // by signal
   std::vector<std::unique_ptr<WirePublisher>> out;     // by signal
-  std::vector<int64_t> local_origin;                  // by signal: origin of the latest local sample
+  std::vector<int64_t> local_origin;                   // by signal: origin of the latest local sample
   std::vector<std::vector<std::size_t>> local_inputs;  // by component: the signals it reads from this process
   std::vector<bool> stop_when_stale;                   // by signal: a plant's command (zeroed when stale)
   // An estimator none of whose measurements has been fresh for clock.blind_after_s is
@@ -159,15 +159,15 @@ struct RealtimeHost::Impl {
   std::vector<bool> blind;                             // by signal: its producer here is blind
   std::vector<int64_t> last_measured_ns;               // by component: last tick with a fresh measurement (0: never)
   int64_t blind_after_ns = 0;
-  int64_t stride = 1;                                  // the loop period in base steps (gcd of the hosted periods)
-  std::vector<bool> deferred;                          // by component: an estimator that waits for its remote samples
-  std::vector<int64_t> next_step;                      // by component (deferred): its next step to run
+  int64_t stride = 1;              // the loop period in base steps (gcd of the hosted periods)
+  std::vector<bool> deferred;      // by component: an estimator that waits for its remote samples
+  std::vector<int64_t> next_step;  // by component (deferred): its next step to run
   // A host of plants and their sensors (the plant simulator) publishes the sensors' samples
   // of a step before the plants' states: the estimators in other processes read the
   // sensors a quarter period after the plant's tick, and a plant's state (the truth, which
   // the recorder reads) published first delayed each sensor sample by one write per plant
   // (each write to a socket: about 35 us on this machine, four plants in the main job).
-  std::vector<bool> publish_last;                      // by signal: a plant's output in a host with sensors
+  std::vector<bool> publish_last;  // by signal: a plant's output in a host with sensors
   std::vector<std::pair<std::size_t, const SignalSample*>> pending;  // held back this step (reserved)
   rt::Subscriber<msg::ClockStep> start;
   rt::Publisher<msg::Heartbeat> heartbeat;
@@ -210,7 +210,8 @@ struct RealtimeHost::Impl {
     for (std::size_t c = 0; c < sc.components.size(); ++c)
       if (exec.hosted(c))
         for (std::size_t in : exec.inputs_of(c))
-          if (std::find(remote_ins.begin(), remote_ins.end(), in) != remote_ins.end() && physical_producer(sc, signals[in]))
+          if (std::find(remote_ins.begin(), remote_ins.end(), in) != remote_ins.end() &&
+              physical_producer(sc, signals[in]))
             measurements[c].push_back(in);
     stride = 0;
     deferred.assign(sc.components.size(), false);
@@ -234,7 +235,8 @@ struct RealtimeHost::Impl {
       remote[i] = std::move(r);
     }
     for (std::size_t i : exec.local_outputs())
-      out[i] = std::make_unique<WirePublisher>(p, signals[i], step_ns(sc), signal_qos(sc, signals[i].producer, profiles));
+      out[i] =
+          std::make_unique<WirePublisher>(p, signals[i], step_ns(sc), signal_qos(sc, signals[i].producer, profiles));
     publish_last.assign(signals.size(), false);
     bool has_sensor = false;
     for (std::size_t c = 0; c < sc.components.size(); ++c)
@@ -259,7 +261,7 @@ struct RealtimeHost::Impl {
     RemoteSamples& r = *remote[signal];
     while (const void* m = r.sub.take()) {
       if (!guard.accept(r.sub.wire(), m, r.scratch)) continue;  // refused: counted and logged
-      if (r.scratch.step <= r.newest_step()) continue;       // not newer than what we have
+      if (r.scratch.step <= r.newest_step()) continue;          // not newer than what we have
       r.push(r.sub.header().origin_time_ns());
       r.received_ns = monotonic_ns();
     }
@@ -403,7 +405,7 @@ RealtimeReport RealtimeHost::run(const std::atomic<bool>& stop) {
       m.pending.push_back({signal, &s});  // after the step's sensor samples (Impl::publish_last)
       return;
     }
-    m.out[signal]->publish(s, m.component_origin);  // origin 0: this sample starts a chain (stamped now)
+    m.out[signal]->publish(s, m.component_origin);          // origin 0: this sample starts a chain (stamped now)
     m.local_origin[signal] = m.out[signal]->last_origin();  // for readers in this process
   };
   // The plants' states held back by `publish`, once the step's sensor samples are out (the
@@ -434,7 +436,8 @@ RealtimeReport RealtimeHost::run(const std::atomic<bool>& stop) {
       const int64_t oldest = j - kMaxCatchUpTicks * stride - kEstimatorWaitPeriods * period;
       if (next < oldest) next = (oldest + period - 1) / period * period;
       while (next <= j) {
-        const bool ready = m.exec.remote_inputs_ready(c, next, [&m](std::size_t sig, int64_t due) { return m.arrived(sig, due); });
+        const bool ready =
+            m.exec.remote_inputs_ready(c, next, [&m](std::size_t sig, int64_t due) { return m.arrived(sig, due); });
         if (!ready && j < ticks - 1 && j - next < kEstimatorWaitPeriods * period) break;  // wait for its samples
         if (next < j) ++m.report.deferred_steps;
         m.exec.step_component(c, next, read, publish, gate);
@@ -450,23 +453,25 @@ RealtimeReport RealtimeHost::run(const std::atomic<bool>& stop) {
   const int64_t hb_every = std::max<int64_t>(1, static_cast<int64_t>(1.0 / m.sc.step));
   int64_t next_beat = k0;
   int64_t last_k = k0 - stride;
-  loop.run([&](const rt::PeriodicLoop::Tick& t) {
-    // The step is the grid's, from the deadline: after an overrun the loop skips the periods
-    // it missed, and so does the step, so every host keeps the same step at the same time.
-    // The steps skipped (up to kMaxCatchUpTicks ticks) still run first, back to back: a plant
-    // integrates them with the command it holds and an estimator predicts over them, so
-    // neither falls behind the grid's time by the periods it lost.
-    const int64_t k = std::min(ticks - 1, k0 + (t.deadline_ns - first_deadline) / loop.period_ns() * stride);
-    for (int64_t j = std::max(last_k + stride, k - kMaxCatchUpTicks * stride); j < k; j += stride) run_step(j);
-    last_k = k;
-    run_step(k);
-    if (k >= next_beat) {
-      m.publish_heartbeat(m.report.holds ? msg::SERVICE_DEGRADED : msg::SERVICE_RUNNING, loop.stats());
-      next_beat = k + hb_every;
-    }
-    m.report.ticks = k + 1;
-    return k + 1 < ticks && !stop.load(std::memory_order_relaxed);
-  }, first_deadline);
+  loop.run(
+      [&](const rt::PeriodicLoop::Tick& t) {
+        // The step is the grid's, from the deadline: after an overrun the loop skips the periods
+        // it missed, and so does the step, so every host keeps the same step at the same time.
+        // The steps skipped (up to kMaxCatchUpTicks ticks) still run first, back to back: a plant
+        // integrates them with the command it holds and an estimator predicts over them, so
+        // neither falls behind the grid's time by the periods it lost.
+        const int64_t k = std::min(ticks - 1, k0 + (t.deadline_ns - first_deadline) / loop.period_ns() * stride);
+        for (int64_t j = std::max(last_k + stride, k - kMaxCatchUpTicks * stride); j < k; j += stride) run_step(j);
+        last_k = k;
+        run_step(k);
+        if (k >= next_beat) {
+          m.publish_heartbeat(m.report.holds ? msg::SERVICE_DEGRADED : msg::SERVICE_RUNNING, loop.stats());
+          next_beat = k + hb_every;
+        }
+        m.report.ticks = k + 1;
+        return k + 1 < ticks && !stop.load(std::memory_order_relaxed);
+      },
+      first_deadline);
   m.report.loop = loop.stats();
   for (std::size_t c = 0; c < m.sc.components.size(); ++c)
     if (m.exec.hosted(c)) m.report.dropped_late_samples += m.sc.components[c].component->dropped_late_samples();

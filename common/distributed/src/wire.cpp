@@ -15,10 +15,17 @@ using msg::write_slot;
 std::size_t slot_size(const WireSlot& s) {
   using K = WireSlot::Kind;
   switch (s.kind) {
-    case K::f64: case K::i64: case K::u64: return 8;
-    case K::f32: case K::i32: case K::u32: return 4;
-    case K::i16: case K::u16: return 2;
-    case K::i8: case K::u8: case K::boolean: return 1;
+    case K::f64:
+    case K::i64:
+    case K::u64: return 8;
+    case K::f32:
+    case K::i32:
+    case K::u32: return 4;
+    case K::i16:
+    case K::u16: return 2;
+    case K::i8:
+    case K::u8:
+    case K::boolean: return 1;
   }
   return 8;
 }
@@ -49,8 +56,9 @@ const char* to_string(Rejection r) {
 WireSignal::WireSignal(const scenario::SignalSpec& spec, int64_t step_ns) : spec_(&spec), step_ns_(step_ns) {
   const std::string who = "signal '" + spec.name + "' (produced by '" + spec.producer + "')";
   if (spec.message.empty())
-    throw InputError(who + " has no IDL message type, so it cannot travel over DDS; run this scenario with "
-                           "`plexus sim`");
+    throw InputError(who +
+                     " has no IDL message type, so it cannot travel over DDS; run this scenario with "
+                     "`plexus sim`");
   type_ = find_wire_type(spec.message);
   if (!type_)
     throw InputError(who + ": '" + spec.message +
@@ -63,13 +71,15 @@ WireSignal::WireSignal(const scenario::SignalSpec& spec, int64_t step_ns) : spec
   std::vector<const void*> places;
   std::size_t joints = 0;
   for (const auto& f : spec.fields) {
-    const auto it = std::find_if(type_->slots.begin(), type_->slots.end(), [&](const WireSlot& s) { return s.field == f; });
+    const auto it =
+        std::find_if(type_->slots.begin(), type_->slots.end(), [&](const WireSlot& s) { return s.field == f; });
     if (it == type_->slots.end())
-      throw InputError(who + ": field '" + f + "' is not a member of " + type_->name + " (its fields: " +
-                       join_fields(*type_) + "; docs/topics.md)");
+      throw InputError(who + ": field '" + f + "' is not a member of " + type_->name +
+                       " (its fields: " + join_fields(*type_) + "; docs/topics.md)");
     const void* place = static_cast<const char*>(it->member(probe.get())) + it->index * slot_size(*it);
     if (std::find(places.begin(), places.end(), place) != places.end())
-      throw InputError(who + ": field '" + f + "' fills a member of " + type_->name + " that another of its fields fills");
+      throw InputError(who + ": field '" + f + "' fills a member of " + type_->name +
+                       " that another of its fields fills");
     places.push_back(place);
     slots_.push_back(&*it);
     if (type_->count && static_cast<const void*>(type_->count(probe.get())) == place) {
@@ -172,7 +182,9 @@ WireSubscriber::WireSubscriber(rt::Participant& p, const scenario::SignalSpec& s
       reader_(p.make_reader(wire_.support(), signal_topic(spec.name), qos)),
       msg_(wire_.make_message()) {}
 
-const void* WireSubscriber::take(rt::SampleMeta* meta) { return reader_->take(msg_.get(), meta) ? msg_.get() : nullptr; }
+const void* WireSubscriber::take(rt::SampleMeta* meta) {
+  return reader_->take(msg_.get(), meta) ? msg_.get() : nullptr;
+}
 
 const msg::StampHeader& WireSubscriber::header() const { return *wire_.support().header(msg_.get()); }
 

@@ -42,16 +42,20 @@ inline std::string unique_robot(const std::string& tag, rt::Vendor v) {
 ///   signal 0: <robot>/truth/state, produced by '<robot>/plant'
 ///   signal 1: <robot>/cmd,         produced by 'follower'
 inline scenario::Scenario two_component_scenario(const std::string& robot, const std::string& clock_yaml = "") {
-  const std::string text = "name: t\n"
-                           "duration: 30.0\n"
-                           "step: 0.01\n"
-                           "seed: 1\n" +
-                           clock_yaml +
-                           "robots:\n"
-                           "  " + robot + ":\n"
-                           "    plant: {type: test_echo_plant}\n"
-                           "services:\n"
-                           "  follower: {type: test_follow_controller, robot: " + robot + "}\n";
+  const std::string text =
+      "name: t\n"
+      "duration: 30.0\n"
+      "step: 0.01\n"
+      "seed: 1\n" +
+      clock_yaml +
+      "robots:\n"
+      "  " +
+      robot +
+      ":\n"
+      "    plant: {type: test_echo_plant}\n"
+      "services:\n"
+      "  follower: {type: test_follow_controller, robot: " +
+      robot + "}\n";
   return scenario::load_scenario_text(text, "test.yaml");
 }
 
@@ -59,18 +63,23 @@ inline scenario::Scenario two_component_scenario(const std::string& robot, const
 /// that follows the estimate (`follower`): the chain through which a dead plant must stop the
 /// controller (the estimator goes blind).
 inline scenario::Scenario estimator_chain_scenario(const std::string& robot, const std::string& clock_yaml = "") {
-  const std::string text = "name: t\n"
-                           "duration: 30.0\n"
-                           "step: 0.01\n"
-                           "seed: 1\n" +
-                           clock_yaml +
-                           "robots:\n"
-                           "  " + robot + ":\n"
-                           "    plant: {type: test_echo_plant}\n"
-                           "services:\n"
-                           "  estimator: {type: test_pass_estimator, robot: " + robot + "}\n"
-                           "  follower: {type: test_follow_controller, robot: " + robot +
-                           ", remap: {truth/state: " + robot + "/estimate}}\n";
+  const std::string text =
+      "name: t\n"
+      "duration: 30.0\n"
+      "step: 0.01\n"
+      "seed: 1\n" +
+      clock_yaml +
+      "robots:\n"
+      "  " +
+      robot +
+      ":\n"
+      "    plant: {type: test_echo_plant}\n"
+      "services:\n"
+      "  estimator: {type: test_pass_estimator, robot: " +
+      robot +
+      "}\n"
+      "  follower: {type: test_follow_controller, robot: " +
+      robot + ", remap: {truth/state: " + robot + "/estimate}}\n";
   return scenario::load_scenario_text(text, "test.yaml");
 }
 

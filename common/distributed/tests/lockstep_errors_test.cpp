@@ -158,7 +158,8 @@ TEST_P(LockstepErrors, ClockRefusesANonFiniteSampleNamingItsSignal) {
   ASSERT_TRUE(plant.publish(s, 0));
   const std::atomic<bool> stop{false};
   const std::string error = error_of<LockstepError>([&] { clock.run(stop); });
-  EXPECT_TRUE(contains(error, "refused the sample of '" + robot + "/truth/state' from '" + robot + "/plant' for step 0"))
+  EXPECT_TRUE(
+      contains(error, "refused the sample of '" + robot + "/truth/state' from '" + robot + "/plant' for step 0"))
       << error;
 }
 

@@ -113,9 +113,8 @@ class RealtimeHold : public ::testing::TestWithParam<rt::Vendor> {
 /// Runs `host` on a thread until stopped; the report and any error afterwards.
 class HostThread {
  public:
-  explicit HostThread(RealtimeHost& host) : thread_([this, &host] {
-    error_ = error_of<InputError>([&] { report_ = host.run(stop_); });
-  }) {}
+  explicit HostThread(RealtimeHost& host)
+      : thread_([this, &host] { error_ = error_of<InputError>([&] { report_ = host.run(stop_); }); }) {}
   ~HostThread() { join(); }
   void join() {
     stop_ = true;
@@ -315,7 +314,8 @@ TEST_P(RealtimeHold, EstimatorUsesALateSampleAtItsOwnStep) {
       ++(std::abs(at - used) < period ? own : other);  // own step's sample: 4-5 ms apart; the one before: 14-15 ms
     }
     return own + other >= 200;
-  })) << own << " estimates from their own step's sample, " << other << " from another";
+  })) << own
+      << " estimates from their own step's sample, " << other << " from another";
   run.join();
   EXPECT_EQ(run.error(), "no error");
   // A loaded machine may delay a sample past the next tick too (then read late): most are not.

@@ -205,9 +205,9 @@ TEST(WireTypeNames, UnknownNamesFindNothing) {
   EXPECT_EQ(find_wire_type("plexus::msg::Pose2D"), find_wire_type("Pose2D"));
   EXPECT_EQ(find_wire_type("Pose3D"), nullptr);
   EXPECT_EQ(find_wire_type(""), nullptr);
-  EXPECT_EQ(find_wire_type("pose2d"), nullptr);                // names are case-sensitive
-  EXPECT_EQ(find_wire_type("plexus::msg::"), nullptr);         // the scope alone
-  EXPECT_EQ(find_wire_type("plexus::Pose2D"), nullptr);        // another scope
+  EXPECT_EQ(find_wire_type("pose2d"), nullptr);          // names are case-sensitive
+  EXPECT_EQ(find_wire_type("plexus::msg::"), nullptr);   // the scope alone
+  EXPECT_EQ(find_wire_type("plexus::Pose2D"), nullptr);  // another scope
   EXPECT_EQ(find_wire_type("other::msg::Pose2D"), nullptr);
   EXPECT_EQ(find_wire_type("Pose2D "), nullptr);
   EXPECT_EQ(find_wire_type("plexus::msg::plexus::msg::Pose2D"), nullptr);  // the scope is stripped once
@@ -230,14 +230,16 @@ TEST(WireBinding, ErrorsNameTheSignalItsProducerAndTheCause) {
             "scenario with `plexus sim`");
   const auto unknown = spec("r1/x", {"x"}, "Pose3D");
   EXPECT_EQ(input_error_of([&] { const WireSignal w(unknown, kStepNs); }),
-            "signal 'r1/x' (produced by 'r1/gps'): 'Pose3D' is not a known message type (idl/plexus/msg, or a package of a plugin the scenario loads)");
+            "signal 'r1/x' (produced by 'r1/gps'): 'Pose3D' is not a known message type (idl/plexus/msg, or a package "
+            "of a plugin the scenario loads)");
   const auto bad_field = spec("r1/x", {"x", "w"}, "Pose2D");
   EXPECT_EQ(input_error_of([&] { const WireSignal w(bad_field, kStepNs); }),
             "signal 'r1/x' (produced by 'r1/gps'): field 'w' is not a member of Pose2D (its fields: x, y, theta; "
             "docs/topics.md)");
   const auto twice = spec("r1/x", {"x", "x"}, "Pose2D");
-  EXPECT_EQ(input_error_of([&] { const WireSignal w(twice, kStepNs); }),
-            "signal 'r1/x' (produced by 'r1/gps'): field 'x' fills a member of Pose2D that another of its fields fills");
+  EXPECT_EQ(
+      input_error_of([&] { const WireSignal w(twice, kStepNs); }),
+      "signal 'r1/x' (produced by 'r1/gps'): field 'x' fills a member of Pose2D that another of its fields fills");
 }
 
 }  // namespace

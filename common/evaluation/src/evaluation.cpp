@@ -10,7 +10,8 @@ namespace plexus::scenario {
 nlohmann::ordered_json Evaluation::to_json() const {
   nlohmann::ordered_json j = nlohmann::ordered_json::object();
   j["digest"] = digest;
-  for (const auto& [name, result] : metrics) j[name] = std::isfinite(result.value) ? nlohmann::ordered_json(result.value) : nullptr;
+  for (const auto& [name, result] : metrics)
+    j[name] = std::isfinite(result.value) ? nlohmann::ordered_json(result.value) : nullptr;
   return j;
 }
 

@@ -43,7 +43,8 @@ Report write_report(const fs::path& run_dir) {
   Report report;
   for (const auto& f : figures) {
     report.plots.push_back(run_dir / f.file);
-    if (!fs::is_regular_file(report.plots.back())) throw std::runtime_error("gnuplot did not write " + report.plots.back().string());
+    if (!fs::is_regular_file(report.plots.back()))
+      throw std::runtime_error("gnuplot did not write " + report.plots.back().string());
   }
 
   const Comparison comparison = compare(in);
@@ -53,7 +54,9 @@ Report write_report(const fs::path& run_dir) {
   std::ostringstream md;
   const std::string name = in.scenario["name"] && in.scenario["name"].IsScalar() ? in.scenario["name"].Scalar() : dir;
   md << "# Report: " << name << "\n\n";
-  md << "Digest `" << (in.metrics.contains("digest") && in.metrics["digest"].is_string() ? in.metrics["digest"].get<std::string>() : "?")
+  md << "Digest `"
+     << (in.metrics.contains("digest") && in.metrics["digest"].is_string() ? in.metrics["digest"].get<std::string>()
+                                                                           : "?")
      << "`\n\n";
   md << report.table;
   md << "\nThe same, with the papers' figures and every plot inline: report.html.\n\n## Plots\n";

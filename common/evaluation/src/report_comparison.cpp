@@ -14,7 +14,8 @@ Comparison compare(const ReportInputs& in) {
   if (in.scenario["expectations"] && in.scenario["expectations"].IsMap())
     for (const auto& kv : in.scenario["expectations"]) {
       Expectation e;
-      if (kv.second.IsScalar() && parse_expectation(kv.first.Scalar(), kv.second.Scalar(), e)) bounds[e.metric].push_back(e);
+      if (kv.second.IsScalar() && parse_expectation(kv.first.Scalar(), kv.second.Scalar(), e))
+        bounds[e.metric].push_back(e);
     }
   std::map<std::string, std::string> papers;
   if (in.scenario["metrics"] && in.scenario["metrics"].IsSequence())
@@ -50,7 +51,8 @@ Comparison compare(const ReportInputs& in) {
 std::string Comparison::markdown() const {
   std::ostringstream table;
   table << "| metric | value | expectation | result |\n|---|---|---|---|\n";
-  for (const auto& r : rows) table << "| " << r.metric << " | " << r.value << " | " << r.bound << " | " << r.result << " |\n";
+  for (const auto& r : rows)
+    table << "| " << r.metric << " | " << r.value << " | " << r.bound << " | " << r.result << " |\n";
   return table.str();
 }
 

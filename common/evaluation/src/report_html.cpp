@@ -77,7 +77,8 @@ void write_figures(std::ostream& html, const std::vector<Figure>& figures, const
 }  // namespace
 
 std::string report_html(const ReportInputs& in, const Comparison& comparison, const std::vector<Figure>& figures) {
-  const std::string name = scalar(in.scenario, "name").empty() ? in.dir.filename().string() : scalar(in.scenario, "name");
+  const std::string name =
+      scalar(in.scenario, "name").empty() ? in.dir.filename().string() : scalar(in.scenario, "name");
   std::ostringstream html;
   html << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
        << "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
@@ -87,7 +88,9 @@ std::string report_html(const ReportInputs& in, const Comparison& comparison, co
   html << "<p class=\"facts\"><span>duration " << esc(scalar(in.scenario, "duration")) << " s</span><span>base step "
        << esc(scalar(in.scenario, "step")) << " s</span><span>seed " << esc(scalar(in.scenario, "seed"))
        << "</span><span>digest <code>"
-       << esc(in.metrics.contains("digest") && in.metrics["digest"].is_string() ? in.metrics["digest"].get<std::string>() : "?")
+       << esc(in.metrics.contains("digest") && in.metrics["digest"].is_string()
+                  ? in.metrics["digest"].get<std::string>()
+                  : "?")
        << "</code></span></p>\n";
 
   int with_bound = 0;
@@ -95,19 +98,24 @@ std::string report_html(const ReportInputs& in, const Comparison& comparison, co
     if (r.result != "-") ++with_bound;
   html << "<nav><ul>\n<li><a href=\"#comparison\">Comparison with the papers</a></li>\n"
        << "<li><a href=\"#papers\">The papers' figures</a></li>\n";
-  for (const auto& robot : in.robots()) html << "<li><a href=\"#robot-" << esc(robot) << "\">Robot " << esc(robot) << "</a></li>\n";
+  for (const auto& robot : in.robots())
+    html << "<li><a href=\"#robot-" << esc(robot) << "\">Robot " << esc(robot) << "</a></li>\n";
   html << "<li><a href=\"#series\">Metric series</a></li>\n</ul></nav>\n";
 
   html << "<h2 id=\"comparison\">Comparison with the papers</h2>\n";
-  html << "<p class=\"summary " << (comparison.failed ? "fail" : "pass") << "\">" << with_bound - comparison.failed << " of "
-       << with_bound << " expectations met" << (comparison.failed ? " (FAIL rows below)" : "") << ".</p>\n";
+  html << "<p class=\"summary " << (comparison.failed ? "fail" : "pass") << "\">" << with_bound - comparison.failed
+       << " of " << with_bound << " expectations met" << (comparison.failed ? " (FAIL rows below)" : "") << ".</p>\n";
   html << "<table class=\"comparison\">\n<thead><tr><th>metric</th><th>paper</th><th>ours</th><th>bound</th>"
           "<th>result</th></tr></thead>\n<tbody>\n";
   for (const auto& r : comparison.rows) {
-    const std::string cls = r.value == "missing" ? "fail missing" : r.result == "FAIL" ? "fail" : r.result == "pass" ? "pass" : "none";
-    html << "<tr class=\"" << cls << "\"><td class=\"metric\"><code>" << esc(r.metric) << "</code></td><td class=\"paper\">"
-         << esc(r.paper.empty() ? "-" : r.paper) << "</td><td class=\"value num\">" << value_cell(r.value)
-         << "</td><td class=\"bound\">" << esc(r.bound) << "</td><td class=\"result\">" << esc(r.result) << "</td></tr>\n";
+    const std::string cls = r.value == "missing" ? "fail missing"
+                            : r.result == "FAIL" ? "fail"
+                            : r.result == "pass" ? "pass"
+                                                 : "none";
+    html << "<tr class=\"" << cls << "\"><td class=\"metric\"><code>" << esc(r.metric)
+         << "</code></td><td class=\"paper\">" << esc(r.paper.empty() ? "-" : r.paper)
+         << "</td><td class=\"value num\">" << value_cell(r.value) << "</td><td class=\"bound\">" << esc(r.bound)
+         << "</td><td class=\"result\">" << esc(r.result) << "</td></tr>\n";
   }
   html << "</tbody>\n</table>\n";
   html << "<p>paper: the published figure the metric reproduces (the metric's <code>paper</code> key in the scenario); "

@@ -6,8 +6,8 @@
 #include <sstream>
 
 #include "plexus/base/input_error.hpp"
-#include "plexus/evaluation/run_folder.hpp"
 #include "plexus/base/yaml_reader.hpp"
+#include "plexus/evaluation/run_folder.hpp"
 
 namespace plexus::scenario {
 namespace fs = std::filesystem;
@@ -26,7 +26,8 @@ std::vector<ReportTable> read_tables(const fs::path& dir, const std::string& sub
     t.path = sub + "/" + e.path().filename().string();
     std::stringstream ss(header);
     for (std::string col; std::getline(ss, col, ',');) t.columns.push_back(col);
-    if (t.columns.size() < 2 || t.columns[0] != "t") throw InputError(e.path().string() + ": not a plexus CSV (header)");
+    if (t.columns.size() < 2 || t.columns[0] != "t")
+      throw InputError(e.path().string() + ": not a plexus CSV (header)");
     t.units.assign(t.columns.size(), std::nullopt);
     t.units[0] = "s";
     out.push_back(std::move(t));
@@ -145,14 +146,16 @@ ReportInputs read_report_inputs(const fs::path& run_dir) {
   {
     std::ifstream file(run_dir / "metrics.json");
     in.metrics = nlohmann::ordered_json::parse(file, nullptr, false);
-    if (in.metrics.is_discarded() || !in.metrics.is_object()) throw InputError(dir + "/metrics.json: not a JSON object");
+    if (in.metrics.is_discarded() || !in.metrics.is_object())
+      throw InputError(dir + "/metrics.json: not a JSON object");
   }
   in.scenario = load_yaml_file((run_dir / "scenario.resolved.yaml").string());
   in.signals = read_tables(run_dir, "signals");
   if (in.signals.empty()) throw InputError(dir + ": not a run folder (no signals/*.csv)");
   in.series = read_tables(run_dir, "series");
   read_signal_index(run_dir, in.signals);
-  std::sort(in.signals.begin(), in.signals.end(), [](const ReportTable& a, const ReportTable& b) { return a.name < b.name; });
+  std::sort(in.signals.begin(), in.signals.end(),
+            [](const ReportTable& a, const ReportTable& b) { return a.name < b.name; });
   const std::vector<std::string> robots = in.robots();
   for (auto& t : in.signals) t.robot = robot_of(t.name, robots);
   // A signal whose unit is not declared (a measurement sensor without an IDL message)
@@ -170,7 +173,8 @@ ReportInputs read_report_inputs(const fs::path& run_dir) {
   return in;
 }
 
-std::vector<std::vector<double>> read_columns(const ReportInputs& in, const ReportTable& t, const std::vector<int>& columns) {
+std::vector<std::vector<double>> read_columns(const ReportInputs& in, const ReportTable& t,
+                                              const std::vector<int>& columns) {
   const fs::path file = in.dir / t.path;
   std::ifstream stream(file);
   if (!stream) throw InputError(file.string() + ": cannot open file");
@@ -187,11 +191,11 @@ std::vector<std::vector<double>> read_columns(const ReportInputs& in, const Repo
       const auto r = std::from_chars(p, end, row[static_cast<std::size_t>(c)]);
       const bool more = c < last - 1;
       if (r.ec != std::errc() || (more && (r.ptr == end || *r.ptr != ',')) || (!more && r.ptr != end && *r.ptr != ','))
-        throw InputError(file.string() + ":" + std::to_string(n) + ": column " + std::to_string(c + 1) + ": not a number");
+        throw InputError(file.string() + ":" + std::to_string(n) + ": column " + std::to_string(c + 1) +
+                         ": not a number");
       p = r.ptr == end ? end : r.ptr + 1;
     }
-    for (std::size_t i = 0; i < columns.size(); ++i)
-      out[i].push_back(row[static_cast<std::size_t>(columns[i] - 1)]);
+    for (std::size_t i = 0; i < columns.size(); ++i) out[i].push_back(row[static_cast<std::size_t>(columns[i] - 1)]);
   }
   return out;
 }

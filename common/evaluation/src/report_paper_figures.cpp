@@ -20,8 +20,8 @@
 
 #include "plexus/base/input_error.hpp"
 #include "plexus/evaluation/evaluation.hpp"
-#include "plexus/scenario/expectation.hpp"
 #include "plexus/evaluation/report_figures.hpp"
+#include "plexus/scenario/expectation.hpp"
 
 namespace plexus::scenario {
 namespace fs = std::filesystem;
@@ -161,16 +161,18 @@ std::optional<Figure> paper000(const ReportInputs& in, const std::string& robot)
     const long k = held.at(tr[0][i]);
     if (k < 0) continue;
     t.push_back(tr[0][i]);
-    vt.push_back(std::hypot(tr[1][i] - rr[1][static_cast<std::size_t>(k)], tr[2][i] - rr[2][static_cast<std::size_t>(k)]));
+    vt.push_back(
+        std::hypot(tr[1][i] - rr[1][static_cast<std::size_t>(k)], tr[2][i] - rr[2][static_cast<std::size_t>(k)]));
   }
   const std::string data = write_data(in, robot + ".tracking_error", {"t", "V_t"}, {t, vt});
 
   Figure f;
   f.file = "plots/paper000." + robot + ".png";
   f.title = "Paper 000 (Yan & Ma 2016), " + figs + ": robot " + robot + " tracking the reference";
-  f.caption = "Left: the robot's path (its true state) against the reference, as the paper's trajectory figure. "
-              "Right: the position tracking error V_t = sqrt((x - x_r)^2 + (y - y_r)^2) (eq. (53)), "
-              "log scale, with the bounds of the scenario's expectations on it over their windows.";
+  f.caption =
+      "Left: the robot's path (its true state) against the reference, as the paper's trajectory figure. "
+      "Right: the position tracking error V_t = sqrt((x - x_r)^2 + (y - y_r)^2) (eq. (53)), "
+      "log scale, with the bounds of the scenario's expectations on it over their windows.";
   f.section = "paper";
   f.robot = robot;
   f.columns = 2;
@@ -206,7 +208,8 @@ std::optional<Figure> paper000(const ReportInputs& in, const std::string& robot)
                            std::make_pair(from, to)});
     const bool marked = std::any_of(err.markers.begin(), err.markers.end(),
                                     [&](const Marker& k) { return k.axis == Marker::Axis::x && k.at == from; });
-    if (from > 0 && !marked) err.markers.push_back({Marker::Axis::x, from, "t = " + format_number(from) + " s", std::nullopt});
+    if (from > 0 && !marked)
+      err.markers.push_back({Marker::Axis::x, from, "t = " + format_number(from) + " s", std::nullopt});
   }
   f.panels.push_back(std::move(err));
   return f;
@@ -232,7 +235,8 @@ std::optional<Figure> paper001(const ReportInputs& in, const std::string& robot)
     if (!truth->column(c)) return {};
   std::vector<const ReportTable*> estimates;
   for (const auto& t : in.signals)
-    if (t.robot == robot && &t != truth && t.column("y_l") && t.column("y_r") && t.column("x_G")) estimates.push_back(&t);
+    if (t.robot == robot && &t != truth && t.column("y_l") && t.column("y_r") && t.column("x_G"))
+      estimates.push_back(&t);
   if (estimates.empty()) return {};
 
   // The terrain switches: where the true terrain changes, named after the plant's schedule.
@@ -245,7 +249,8 @@ std::optional<Figure> paper001(const ReportInputs& in, const std::string& robot)
       std::string name = "terrain " + format_number(tt[1][i]);
       if (schedule && schedule.IsSequence())
         for (const auto& entry : schedule)
-          if (entry.IsSequence() && entry.size() == 2 && entry[0].as<double>() <= tt[0][i] + 1e-9) name = entry[1].Scalar();
+          if (entry.IsSequence() && entry.size() == 2 && entry[0].as<double>() <= tt[0][i] + 1e-9)
+            name = entry[1].Scalar();
       switches.push_back({Marker::Axis::x, tt[0][i], "to " + name, std::nullopt});
     }
   }
@@ -253,8 +258,9 @@ std::optional<Figure> paper001(const ReportInputs& in, const std::string& robot)
   Figure f;
   f.file = "plots/paper001." + robot + ".png";
   f.title = "Paper 001 (Wu et al. 2015), Figs. 6 and 8: ICR estimates of " + robot + " across terrain switches";
-  f.caption = "The ICR coordinates y_l, y_r (tracks) and x_G (body) estimated by each estimator of the robot against "
-              "their true values (dashed); dotted lines: the terrain switches.";
+  f.caption =
+      "The ICR coordinates y_l, y_r (tracks) and x_G (body) estimated by each estimator of the robot against "
+      "their true values (dashed); dotted lines: the terrain switches.";
   f.section = "paper";
   f.robot = robot;
   const std::map<std::string, std::string> names = {
@@ -292,10 +298,11 @@ std::optional<Figure> paper002(const ReportInputs& in, const std::string& robot)
   Figure f;
   f.file = "plots/paper002." + robot + ".png";
   f.title = "Paper 002 (Zhao et al. 2006), Fig. 4: tilt estimates of " + robot + " and their error";
-  f.caption = "Top: each tilt estimate against the true tilt (dashed). Bottom: the tilt estimate error (estimate - "
-              "truth, the truth at the estimate's step) with the filter's own 1-sigma band (dashed) where it gives one "
-              "and at most two filters are compared" +
-              std::string(window ? "; over the window of the scenario's metrics." : ".");
+  f.caption =
+      "Top: each tilt estimate against the true tilt (dashed). Bottom: the tilt estimate error (estimate - "
+      "truth, the truth at the estimate's step) with the filter's own 1-sigma band (dashed) where it gives one "
+      "and at most two filters are compared" +
+      std::string(window ? "; over the window of the scenario's metrics." : ".");
   f.section = "paper";
   f.robot = robot;
   Panel tilt;
@@ -311,7 +318,8 @@ std::optional<Figure> paper002(const ReportInputs& in, const std::string& robot)
   int colour = 1;
   for (const ReportTable* e : estimates) {
     const bool has_std = e->column("theta_std") > 0;
-    const auto er = read_columns(in, *e, has_std ? columns_of(*e, {"t", "theta", "theta_std"}) : columns_of(*e, {"t", "theta"}));
+    const auto er =
+        read_columns(in, *e, has_std ? columns_of(*e, {"t", "theta", "theta_std"}) : columns_of(*e, {"t", "theta"}));
     Column t, est, error, sd;
     Held held(tr[0]);
     for (std::size_t i = 0; i < er[0].size(); ++i) {
@@ -324,11 +332,12 @@ std::optional<Figure> paper002(const ReportInputs& in, const std::string& robot)
     }
     std::string stem = e->name.substr(robot.size() + 1);
     std::replace(stem.begin(), stem.end(), '/', '.');
-    const std::string data = write_data(in, robot + ".tilt_error." + stem, {"t", "estimate_deg", "error_deg", "std_deg"},
-                                        {t, est, error, sd});
+    const std::string data = write_data(in, robot + ".tilt_error." + stem,
+                                        {"t", "estimate_deg", "error_deg", "std_deg"}, {t, est, error, sd});
     // "bal/attitude (ukf_augmented)": the filter an attitude_filter runs, else the type.
     const YAML::Node service = in.scenario["services"] ? in.scenario["services"][e->producer] : YAML::Node();
-    const std::string filter = service && service["filter"] ? service["filter"].Scalar() : in.component_type(e->producer);
+    const std::string filter =
+        service && service["filter"] ? service["filter"].Scalar() : in.component_type(e->producer);
     const std::string label = e->name + (filter.empty() ? "" : " (" + filter + ")");
     tilt.curves.push_back({data, "1", "2", label, Curve::Style::line, colour});
     err.curves.push_back({data, "1", "3", label, Curve::Style::line, colour});
@@ -338,8 +347,8 @@ std::optional<Figure> paper002(const ReportInputs& in, const std::string& robot)
     }
     ++colour;
   }
-  tilt.curves.push_back({truth->path, "1", "($" + std::to_string(truth->column("theta")) + "*180/pi)",
-                         "truth", Curve::Style::dashed, 0});
+  tilt.curves.push_back(
+      {truth->path, "1", "($" + std::to_string(truth->column("theta")) + "*180/pi)", "truth", Curve::Style::dashed, 0});
   f.panels.push_back(std::move(tilt));
   f.panels.push_back(std::move(err));
   return f;
@@ -390,28 +399,33 @@ std::optional<Figure> paper004(const ReportInputs& in, const std::string& robot)
   f.file = "plots/paper004." + robot + ".png";
   const std::string controller = [&] {
     for (const auto& [name, node] : services_of(in, robot))
-      if (scalar(node, "type") == "arm_vdc" || scalar(node, "type") == "arm_ct_pd") return name + ": " + scalar(node, "type");
+      if (scalar(node, "type") == "arm_vdc" || scalar(node, "type") == "arm_ct_pd")
+        return name + ": " + scalar(node, "type");
     return cmd->producer;
   }();
   f.title = "Paper 004 (Liu et al. 2018), Figs. 3-6: link tracking errors and joint torques of " + robot + " (" +
             controller + ")";
-  f.caption = "Top: the tracking error of each link, q_i - q_ri (Figs. 3-4; Table 4 reads it in mrad), with the "
-              "settling band of the scenario's settling-time metrics. Bottom: the input torque of each joint "
-              "(Figs. 5-6)" + std::string(window ? "; over the window of the scenario's metrics." : ".");
+  f.caption =
+      "Top: the tracking error of each link, q_i - q_ri (Figs. 3-4; Table 4 reads it in mrad), with the "
+      "settling band of the scenario's settling-time metrics. Bottom: the input torque of each joint "
+      "(Figs. 5-6)" +
+      std::string(window ? "; over the window of the scenario's metrics." : ".");
   f.section = "paper";
   f.robot = robot;
   f.columns = n;
   for (int j = 1; j <= n; ++j) {
     const std::string q = "q" + std::to_string(j);
     Panel p;
-    p.title = "link " + std::to_string(j) + " tracking error e" + std::to_string(j) + " = " + q + " - q_r" + std::to_string(j);
+    p.title = "link " + std::to_string(j) + " tracking error e" + std::to_string(j) + " = " + q + " - q_r" +
+              std::to_string(j);
     p.xlabel = t_column_label();
     p.ylabel = "e" + std::to_string(j) + " [mrad]";
     p.xrange = window;
-    p.curves.push_back({data, "1", std::to_string(j + 1), "e" + std::to_string(j) + " (" + controller + ")",
-                        Curve::Style::line, j});
+    p.curves.push_back(
+        {data, "1", std::to_string(j + 1), "e" + std::to_string(j) + " (" + controller + ")", Curve::Style::line, j});
     if (auto b = band.find(q); b != band.end()) {
-      p.markers.push_back({Marker::Axis::y, b->second * 1000.0, "settling band +-" + format_number(b->second * 1000.0) + " mrad", std::nullopt});
+      p.markers.push_back({Marker::Axis::y, b->second * 1000.0,
+                           "settling band +-" + format_number(b->second * 1000.0) + " mrad", std::nullopt});
       p.markers.push_back({Marker::Axis::y, -b->second * 1000.0, "", std::nullopt});
     }
     f.panels.push_back(std::move(p));
@@ -423,7 +437,8 @@ std::optional<Figure> paper004(const ReportInputs& in, const std::string& robot)
     p.xlabel = t_column_label();
     p.ylabel = u + " [N m]";
     p.xrange = window;
-    p.curves.push_back({cmd->path, "1", std::to_string(cmd->column(u)), u + " (" + controller + ")", Curve::Style::line, j});
+    p.curves.push_back(
+        {cmd->path, "1", std::to_string(cmd->column(u)), u + " (" + controller + ")", Curve::Style::line, j});
     f.panels.push_back(std::move(p));
   }
   return f;

@@ -16,13 +16,15 @@ std::string join(const std::vector<std::string>& items) {
 /// "from wmr_observer (heading_observer)" / "sensor position (position_sensor)" /
 /// "true state of the unicycle plant".
 std::string producer_text(const ReportInputs& in, const ReportTable& t) {
-  if (const std::string type = in.component_type(t.producer); !type.empty()) return "from " + t.producer + " (" + type + ")";
+  if (const std::string type = in.component_type(t.producer); !type.empty())
+    return "from " + t.producer + " (" + type + ")";
   if (in.is_sensor(t)) {
     const std::string key = t.name.substr(t.robot.size() + 1);
     const YAML::Node s = in.scenario["robots"][t.robot]["sensors"][key];
     return "sensor " + key + (s["type"] ? " (" + s["type"].Scalar() + ")" : std::string());
   }
-  if (!t.robot.empty() && t.name == t.robot + "/truth/state") return "true state of the " + in.plant_type(t.robot) + " plant";
+  if (!t.robot.empty() && t.name == t.robot + "/truth/state")
+    return "true state of the " + in.plant_type(t.robot) + " plant";
   return t.producer.empty() ? "" : "from " + t.producer;
 }
 
@@ -48,8 +50,8 @@ Figure signal_figure(const ReportInputs& in, const ReportTable& t) {
     for (const auto& field : g.fields) {
       p.curves.push_back({t.path, "1", std::to_string(t.column(field)), field, Curve::Style::line, colour});
       if (truth && truth->column(field) && truth->unit(field) == g.unit)
-        p.curves.push_back({truth->path, "1", std::to_string(truth->column(field)), field + " (truth)",
-                            Curve::Style::dashed, colour});
+        p.curves.push_back(
+            {truth->path, "1", std::to_string(truth->column(field)), field + " (truth)", Curve::Style::dashed, colour});
       ++colour;
     }
     f.panels.push_back(std::move(p));
@@ -123,7 +125,8 @@ Figure series_figure(const ReportInputs& in, const ReportTable& t) {
 std::vector<Figure> signal_figures(const ReportInputs& in) {
   std::vector<Figure> out;
   for (const auto& robot : in.robots()) {
-    if (const ReportTable* truth = in.truth(robot); truth && planar(*truth)) out.push_back(trajectory_figure(in, robot));
+    if (const ReportTable* truth = in.truth(robot); truth && planar(*truth))
+      out.push_back(trajectory_figure(in, robot));
     for (const auto& t : in.signals)
       if (t.robot == robot) out.push_back(signal_figure(in, t));
   }

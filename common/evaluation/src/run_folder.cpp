@@ -69,8 +69,8 @@ void write_summary(const fs::path& p, const Scenario& sc, const Evaluation& ev, 
   out << "# Run of scenario `" << sc.name << "`\n\n";
   if (!sc.description.empty()) out << sc.description << "\n\n";
   out << "- scenario file: `" << sc.file << "`\n"
-      << "- duration " << format_number(sc.duration) << " s, base step " << format_number(sc.step) << " s ("
-      << sc.steps << " steps), seed " << sc.seed << "\n"
+      << "- duration " << format_number(sc.duration) << " s, base step " << format_number(sc.step) << " s (" << sc.steps
+      << " steps), seed " << sc.seed << "\n"
       << "- components: " << sc.components.size() << ", signals: " << sc.signals.size() << "\n"
       << "- wall time " << fixed3(wall_seconds) << " s";
   if (wall_seconds > 0) out << " (" << fixed3(sc.duration / wall_seconds) << "x real time)";
@@ -155,8 +155,10 @@ fs::path prepare_run_folder(const std::string& out, const std::string& scenario_
     fs::create_directories(base.parent_path(), ec);
     for (int n = 1; n <= 1000 && dir.empty(); ++n) {
       const fs::path candidate = n == 1 ? base : fs::path(base.string() + "-" + std::to_string(n));
-      if (fs::create_directory(candidate, ec)) dir = candidate;
-      else if (ec) throw InputError(candidate.string() + ": cannot create the run folder: " + ec.message());
+      if (fs::create_directory(candidate, ec))
+        dir = candidate;
+      else if (ec)
+        throw InputError(candidate.string() + ": cannot create the run folder: " + ec.message());
     }
     if (dir.empty()) throw InputError(base.string() + ": 1000 run folders of this name already exist");
   }

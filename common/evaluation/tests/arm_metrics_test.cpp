@@ -17,7 +17,7 @@
 namespace plexus::scenario {
 namespace {
 
-constexpr double kStep = 0.01;    // 100 samples per 1 s period
+constexpr double kStep = 0.01;   // 100 samples per 1 s period
 constexpr int64_t kSteps = 500;  // 5 s
 constexpr double kDuration = kStep * kSteps;
 constexpr double kPi = std::numbers::pi;
@@ -101,8 +101,7 @@ TEST(ArmMetrics, TrackingRmsOfSeveralFieldsIsTheRmsOfTheErrorNorm) {
   const RunLog log = tracking_run();
   // |e|^2 = A^2 sin^2 + B^2 cos^2, mean (A^2 + B^2) / 2: RMS 5e-3 / sqrt 2 (eq. (62)).
   EXPECT_NEAR(compute(log, kRms + ", fields: [q1, q2]" + kWhole + "}").value, 5e-3 / std::sqrt(2.0), 1e-12);
-  EXPECT_NEAR(compute(log, kRms + ", fields: [q2, q1], scale: 1000" + kWhole + "}").value, 5.0 / std::sqrt(2.0),
-              1e-9);
+  EXPECT_NEAR(compute(log, kRms + ", fields: [q2, q1], scale: 1000" + kWhole + "}").value, 5.0 / std::sqrt(2.0), 1e-9);
   // + C^2: sqrt(12.5e-6 + 4e-6).
   EXPECT_NEAR(compute(log, kRms + ", fields: [q1, q2, q3]" + kWhole + "}").value, std::sqrt(16.5e-6), 1e-12);
 }
@@ -147,13 +146,11 @@ TEST(ArmMetrics, SettlingTimeOfAnExponentialDecay) {
 TEST(ArmMetrics, SettlingTimeIsTheEntryAfterTheLastExcursion) {
   // The decay enters the 1e-3 band at 2.31 s, then leaves it (e = 2e-3 on [3.0, 3.2]) and
   // comes back: it settles for good at the first sample after the excursion, 3.21 s.
-  const RunLog log = settling_run([](int64_t k, double t) {
-    return k >= 300 && k <= 320 ? 2e-3 : -0.1 * std::exp(-2.0 * t);
-  });
+  const RunLog log =
+      settling_run([](int64_t k, double t) { return k >= 300 && k <= 320 ? 2e-3 : -0.1 * std::exp(-2.0 * t); });
   EXPECT_NEAR(compute(log, kSettle + ", band: 1e-3}").value, 3.21, 1e-9);
   // A window that ends before the excursion sees the first entry only.
-  EXPECT_NEAR(compute(log, kSettle + ", band: 1e-3, to: 2.9}").value, first_sample_after(std::log(100.0) / 2.0),
-              1e-9);
+  EXPECT_NEAR(compute(log, kSettle + ", band: 1e-3, to: 2.9}").value, first_sample_after(std::log(100.0) / 2.0), 1e-9);
   // A window that ends inside the excursion: the last sample is outside, never settled (null).
   EXPECT_TRUE(std::isnan(compute(log, kSettle + ", band: 1e-3, to: 3.1}").value));
 }
@@ -161,10 +158,11 @@ TEST(ArmMetrics, SettlingTimeIsTheEntryAfterTheLastExcursion) {
 TEST(ArmMetrics, ANonFiniteErrorIsOutsideTheBand) {
   // A run that diverged (NaN from 2 s on) never settled; nor does one that blew up for a while.
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_TRUE(std::isnan(compute(settling_run([&](int64_t k, double) { return k >= 200 ? nan : 0.0; }),
-                                 kSettle + ", band: 1e-3}").value));
+  EXPECT_TRUE(std::isnan(
+      compute(settling_run([&](int64_t k, double) { return k >= 200 ? nan : 0.0; }), kSettle + ", band: 1e-3}").value));
   EXPECT_NEAR(compute(settling_run([&](int64_t k, double) { return k >= 100 && k <= 150 ? nan : 0.0; }),
-                      kSettle + ", band: 1e-3}").value,
+                      kSettle + ", band: 1e-3}")
+                  .value,
               1.51, 1e-9);
 }
 

@@ -19,7 +19,7 @@
 namespace plexus::scenario {
 namespace {
 
-constexpr double kStep = 0.01;    // 100 samples per 1 s period
+constexpr double kStep = 0.01;   // 100 samples per 1 s period
 constexpr int64_t kSteps = 400;  // 4 s
 constexpr double kDuration = kStep * kSteps;
 constexpr double kPi = std::numbers::pi;
@@ -78,14 +78,14 @@ double stat(const RunLog& log, const std::string& s, const std::string& window =
 TEST(BalancingMetrics, AngleErrorStatisticsOfAnOffsetSineInDegrees) {
   const RunLog log = balancing_run();
   // e = -0.5 + 2 sin(2 pi t) deg over 3 whole periods.
-  EXPECT_NEAR(stat(log, "mean"), -0.5, 1e-9);                    // signed: c
-  EXPECT_NEAR(stat(log, "abs_mean"), 0.5, 1e-9);                 // |c|
-  EXPECT_NEAR(stat(log, "std"), std::sqrt(2.0), 1e-9);           // A / sqrt 2, population
-  EXPECT_NEAR(stat(log, "rms"), 1.5, 1e-9);                      // sqrt(0.25 + 4 / 2)
-  EXPECT_NEAR(stat(log, "max"), 1.5, 1e-9);                      // c + A at t = 1.25
-  EXPECT_NEAR(stat(log, "min"), -2.5, 1e-9);                     // c - A at t = 1.75
-  EXPECT_NEAR(stat(log, "max_abs"), 2.5, 1e-9);                  // |c - A|, not c + A
-  EXPECT_NEAR(stat(log, "final", ", to: 3.75"), -2.5, 1e-9);     // the sample at the window's end
+  EXPECT_NEAR(stat(log, "mean"), -0.5, 1e-9);                 // signed: c
+  EXPECT_NEAR(stat(log, "abs_mean"), 0.5, 1e-9);              // |c|
+  EXPECT_NEAR(stat(log, "std"), std::sqrt(2.0), 1e-9);        // A / sqrt 2, population
+  EXPECT_NEAR(stat(log, "rms"), 1.5, 1e-9);                   // sqrt(0.25 + 4 / 2)
+  EXPECT_NEAR(stat(log, "max"), 1.5, 1e-9);                   // c + A at t = 1.25
+  EXPECT_NEAR(stat(log, "min"), -2.5, 1e-9);                  // c - A at t = 1.75
+  EXPECT_NEAR(stat(log, "max_abs"), 2.5, 1e-9);               // |c - A|, not c + A
+  EXPECT_NEAR(stat(log, "final", ", to: 3.75"), -2.5, 1e-9);  // the sample at the window's end
   EXPECT_NEAR(stat(log, "final"), -0.5 + 2.0 * std::sin(2 * kPi * 3.99), 1e-9);
   const MetricResult r = compute(log, kErr + ", stat: mean" + kWhole + "}");
   ASSERT_EQ(r.series.size(), 300u);
@@ -122,10 +122,8 @@ TEST(BalancingMetrics, StdDifferenceIsTheDifferenceOfTheTwoErrorStds) {
   // std(ukf error) - std(ekf error) = 2 / sqrt 2 - 3 / sqrt 2 = -1 / sqrt 2 deg (both over
   // whole periods: 3 of 1 s and 6 of 0.5 s); the offsets -0.5 and 0.25 drop out.
   const std::string m = "{type: angle_error_std_difference_deg, reference: r/truth/state";
-  EXPECT_NEAR(compute(log, m + ", signal: r/attitude, other: r/ekf" + kWhole + "}").value, -1.0 / std::sqrt(2.0),
-              1e-9);
-  EXPECT_NEAR(compute(log, m + ", signal: r/ekf, other: r/attitude" + kWhole + "}").value, 1.0 / std::sqrt(2.0),
-              1e-9);
+  EXPECT_NEAR(compute(log, m + ", signal: r/attitude, other: r/ekf" + kWhole + "}").value, -1.0 / std::sqrt(2.0), 1e-9);
+  EXPECT_NEAR(compute(log, m + ", signal: r/ekf, other: r/attitude" + kWhole + "}").value, 1.0 / std::sqrt(2.0), 1e-9);
   EXPECT_NEAR(compute(log, m + ", signal: r/ekf, other: r/ekf}").value, 0.0, 1e-12);
 }
 
@@ -143,8 +141,8 @@ TEST(BalancingMetrics, AngleDegStatisticsOfOneField) {
   EXPECT_NEAR(compute(log, m + "min}").value, -4.0, 1e-9);
   EXPECT_NEAR(compute(log, m + "max_abs}").value, 4.0, 1e-9);
   EXPECT_EQ(compute(log, m + "mean}").series.size(), 150u);
-  EXPECT_NEAR(compute(log, "{type: angle_deg, signal: r/truth/state, field: theta, stat: final, to: 1.5}").value,
-              -4.0, 1e-9);
+  EXPECT_NEAR(compute(log, "{type: angle_deg, signal: r/truth/state, field: theta, stat: final, to: 1.5}").value, -4.0,
+              1e-9);
 }
 
 TEST(BalancingMetrics, ConfigurationErrorsNameTheKey) {
@@ -156,11 +154,13 @@ TEST(BalancingMetrics, ConfigurationErrorsNameTheKey) {
   EXPECT_TRUE(fails(kErr + ", stat: median}",
                     "stat: expected mean, abs_mean, std, max, min, max_abs, rms or final, got 'median'"));
   EXPECT_TRUE(fails(kErr + ", stat: mean, field: phi}", "field: r/attitude has no field 'phi'"));
-  EXPECT_TRUE(fails(kErr + ", stat: mean, reference_field: bias}", "reference_field: r/truth/state has no field 'bias'"));
+  EXPECT_TRUE(
+      fails(kErr + ", stat: mean, reference_field: bias}", "reference_field: r/truth/state has no field 'bias'"));
   EXPECT_TRUE(fails(kErr + ", stat: mean, to: 5}", "to: must be in [from, duration]"));
   EXPECT_TRUE(fails(kErr + ", stat: mean, from: -0.5}", "from: must be in [0, duration]"));
   EXPECT_TRUE(fails(kErr + ", stat: mean, band: 1}", "band: unknown key"));
-  const std::string diff = "{type: angle_error_std_difference_deg, signal: r/attitude, other: r/ekf, reference: r/truth/state";
+  const std::string diff =
+      "{type: angle_error_std_difference_deg, signal: r/attitude, other: r/ekf, reference: r/truth/state";
   EXPECT_TRUE(fails(diff + ", field: bias}", "field: r/ekf has no field 'bias'"));
   EXPECT_TRUE(fails(diff + ", stat: std}", "stat: unknown key"));
   EXPECT_TRUE(fails("{type: angle_error_std_difference_deg, signal: r/attitude, reference: r/truth/state}",

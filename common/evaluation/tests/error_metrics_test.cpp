@@ -18,7 +18,7 @@
 namespace plexus::scenario {
 namespace {
 
-constexpr double kStep = 0.01;    // 100 samples per 1 s period
+constexpr double kStep = 0.01;   // 100 samples per 1 s period
 constexpr int64_t kSteps = 400;  // 4 s
 constexpr double kDuration = kStep * kSteps;
 constexpr double kPi = std::numbers::pi;
@@ -65,11 +65,12 @@ double error(const RunLog& log, const std::string& type, const std::string& rest
 TEST(ErrorMetrics, DistanceOfARectifiedSine) {
   const RunLog log = error_run();
   // Default fields [x, y]: |(3, 4) sin| = 5 |sin(2 pi t)|.
-  EXPECT_NEAR(error(log, "error_max"), 5.0, 1e-9);                             // t = 0.25
-  EXPECT_NEAR(error(log, "error_rms"), 5.0 / std::sqrt(2.0), 1e-9);            // 5 / sqrt 2
-  EXPECT_NEAR(error(log, "error_mean"), 5.0 * std::cos(kPi / 100) / std::sin(kPi / 100) / 50.0, 1e-9);  // 5 cot(pi/100) / 50
-  EXPECT_NEAR(error(log, "error_final", ", to: 3.75"), 5.0, 1e-9);            // |sin 7.5 pi|
-  EXPECT_NEAR(error(log, "error_final", ""), 0.0, 1e-9);                       // t = 4: sin 8 pi
+  EXPECT_NEAR(error(log, "error_max"), 5.0, 1e-9);                   // t = 0.25
+  EXPECT_NEAR(error(log, "error_rms"), 5.0 / std::sqrt(2.0), 1e-9);  // 5 / sqrt 2
+  EXPECT_NEAR(error(log, "error_mean"), 5.0 * std::cos(kPi / 100) / std::sin(kPi / 100) / 50.0,
+              1e-9);                                                             // 5 cot(pi/100) / 50
+  EXPECT_NEAR(error(log, "error_final", ", to: 3.75"), 5.0, 1e-9);               // |sin 7.5 pi|
+  EXPECT_NEAR(error(log, "error_final", ""), 0.0, 1e-9);                         // t = 4: sin 8 pi
   EXPECT_NEAR(error(log, "error_final"), 5.0 * std::sin(2 * kPi * 0.01), 1e-9);  // t = 3.99
   const MetricResult r = compute(log, "{type: error_rms, signal: r/est, reference: r/ref}");
   ASSERT_EQ(r.series.size(), static_cast<std::size_t>(kSteps + 1));
@@ -113,8 +114,8 @@ TEST(ErrorMetrics, ValueStatisticsOfAnOffsetSine) {
   // v = -2 + 3 sin(2 pi t) over 4 whole periods.
   const std::string m = "{signal: r/est, field: v" + kWhole + ", type: ";
   EXPECT_NEAR(compute(log, m + "value_mean}").value, -2.0, 1e-9);
-  EXPECT_NEAR(compute(log, m + "value_max}").value, 1.0, 1e-9);     // t = 0.25
-  EXPECT_NEAR(compute(log, m + "value_min}").value, -5.0, 1e-9);    // t = 0.75
+  EXPECT_NEAR(compute(log, m + "value_max}").value, 1.0, 1e-9);      // t = 0.25
+  EXPECT_NEAR(compute(log, m + "value_min}").value, -5.0, 1e-9);     // t = 0.75
   EXPECT_NEAR(compute(log, m + "value_max_abs}").value, 5.0, 1e-9);  // |min|, not max
   EXPECT_NEAR(compute(log, m + "value_final}").value, -2.0 + 3.0 * std::sin(2 * kPi * 3.99), 1e-9);
   EXPECT_NEAR(compute(log, "{type: value_final, signal: r/est, field: v, to: 0.75}").value, -5.0, 1e-9);
@@ -150,10 +151,12 @@ TEST(RatioMetric, DividesTwoMetricsOfTheSameRun) {
   const RunLog log = error_run();
   auto compute = [&](const std::string& yaml) { return testing::metric_on_log(log, yaml, kStep, kDuration); };
   const std::string num = "numerator: {type: error_max, signal: r/est, reference: r/ref}";
-  EXPECT_NEAR(compute("{type: ratio, " + num + ", denominator: {type: value_max_abs, signal: r/est, field: v, to: 0.5}}").value,
-              2.5, 1e-9);
+  EXPECT_NEAR(
+      compute("{type: ratio, " + num + ", denominator: {type: value_max_abs, signal: r/est, field: v, to: 0.5}}").value,
+      2.5, 1e-9);
   EXPECT_NEAR(compute("{type: ratio, numerator: {type: value_max_abs, signal: r/est, field: v, to: 0.5}, "
-                      "denominator: {type: error_max, signal: r/est, reference: r/ref}}").value,
+                      "denominator: {type: error_max, signal: r/est, reference: r/ref}}")
+                  .value,
               0.4, 1e-9);
   // r/aux's v = sin(2 pi t) is exactly 0 at t = 0: the ratio is NaN (null), not inf.
   EXPECT_TRUE(std::isnan(
@@ -167,12 +170,14 @@ TEST(RatioMetric, PartsAreValidatedAsMetricsNamingTheirKey) {
   };
   const std::string num = "numerator: {type: error_max, signal: r/est, reference: r/ref}";
   EXPECT_TRUE(fails("{type: ratio, " + num + "}", "denominator: required"));
-  EXPECT_TRUE(fails("{type: ratio, " + num + ", denominator: {type: nope}}", "denominator.type: unknown metric type 'nope'"));
+  EXPECT_TRUE(
+      fails("{type: ratio, " + num + ", denominator: {type: nope}}", "denominator.type: unknown metric type 'nope'"));
   EXPECT_TRUE(fails("{type: ratio, " + num + ", denominator: {type: error_max, signal: r/est}}",
                     "denominator.reference: required key is missing"));
   EXPECT_TRUE(fails("{type: ratio, " + num + ", denominator: {type: value_max, signal: r/est, field: v, band: 1}}",
                     "denominator.band: unknown key"));
-  EXPECT_TRUE(fails("{type: ratio, " + num + ", denominator: {type: ratio}}", "denominator.type: a ratio's parts cannot be ratios"));
+  EXPECT_TRUE(fails("{type: ratio, " + num + ", denominator: {type: ratio}}",
+                    "denominator.type: a ratio's parts cannot be ratios"));
 }
 
 }  // namespace

@@ -30,8 +30,8 @@ inline MetricResult metric_on_log(const RunLog& log, const std::string& yaml, do
 /// Success when loading the metric (its factory, then the unknown-key check, as the scenario
 /// loader does) throws an InputError whose message is "m.yaml:<line>: <expected>...", i.e.
 /// `expected` starts with the offending key: "stat: required key is missing".
-inline ::testing::AssertionResult metric_fails(const RunLog& log, const std::string& yaml, double step,
-                                               double duration, const std::string& expected) {
+inline ::testing::AssertionResult metric_fails(const RunLog& log, const std::string& yaml, double step, double duration,
+                                               const std::string& expected) {
   std::vector<SignalSpec> specs;
   for (const auto& s : log.signals) specs.push_back(s.spec);
   try {

@@ -11,13 +11,13 @@
 #include <sstream>
 
 #include "plexus/evaluation/evaluation.hpp"
-#include "plexus/scenario/executor.hpp"
-#include "plexus/scenario/overrides.hpp"
 #include "plexus/evaluation/report_comparison.hpp"
 #include "plexus/evaluation/report_figures.hpp"
 #include "plexus/evaluation/report_html.hpp"
 #include "plexus/evaluation/report_panels.hpp"
 #include "plexus/evaluation/run_folder.hpp"
+#include "plexus/scenario/executor.hpp"
+#include "plexus/scenario/overrides.hpp"
 #include "plexus/scenario/scenario.hpp"
 
 namespace plexus::scenario {
@@ -37,8 +37,16 @@ std::map<std::string, Fields> by_quantity(const std::vector<FieldGroup>& groups)
 
 TEST(ReportPanels, SkidSteerIcrEstimateIsFivePanelsNotOne) {
   // The ICR EKF's output (IcrEstimate): 10 fields from 0.01 m to 37 m used to share one axis.
-  const auto g = by_quantity(group_fields({{"x", "m"}, {"y", "m"}, {"theta", "rad"}, {"y_l", "m"}, {"y_r", "m"},
-                                           {"x_G", "m"}, {"resets", ""}, {"sd_y_l", "m"}, {"sd_y_r", "m"}, {"sd_x_G", "m"}}));
+  const auto g = by_quantity(group_fields({{"x", "m"},
+                                           {"y", "m"},
+                                           {"theta", "rad"},
+                                           {"y_l", "m"},
+                                           {"y_r", "m"},
+                                           {"x_G", "m"},
+                                           {"resets", ""},
+                                           {"sd_y_l", "m"},
+                                           {"sd_y_r", "m"},
+                                           {"sd_x_G", "m"}}));
   const std::map<std::string, Fields> expected = {
       {"position [m]", {"x", "y"}},
       {"angle [rad]", {"theta"}},
@@ -51,8 +59,14 @@ TEST(ReportPanels, SkidSteerIcrEstimateIsFivePanelsNotOne) {
 
 TEST(ReportPanels, GroupsByUnitAcrossNames) {
   // A flexible-joint arm's true state: link and motor angles share the angle panel.
-  const auto g = by_quantity(group_fields({{"q1", "rad"}, {"q2", "rad"}, {"dq1", "rad/s"}, {"dq2", "rad/s"}, {"phi1", "rad"},
-                                           {"phi2", "rad"}, {"tau1", "N m"}, {"tau2", "N m"}}));
+  const auto g = by_quantity(group_fields({{"q1", "rad"},
+                                           {"q2", "rad"},
+                                           {"dq1", "rad/s"},
+                                           {"dq2", "rad/s"},
+                                           {"phi1", "rad"},
+                                           {"phi2", "rad"},
+                                           {"tau1", "N m"},
+                                           {"tau2", "N m"}}));
   const std::map<std::string, Fields> expected = {
       {"angle [rad]", {"q1", "q2", "phi1", "phi2"}},
       {"angular rate [rad/s]", {"dq1", "dq2"}},
@@ -60,7 +74,8 @@ TEST(ReportPanels, GroupsByUnitAcrossNames) {
   };
   EXPECT_EQ(g, expected);
   // The attitude estimate: the spread apart from the tilt, the drift with the tilt rate.
-  const auto a = by_quantity(group_fields({{"theta", "rad"}, {"theta_dot", "rad/s"}, {"drift", "rad/s"}, {"theta_std", "rad"}}));
+  const auto a =
+      by_quantity(group_fields({{"theta", "rad"}, {"theta_dot", "rad/s"}, {"drift", "rad/s"}, {"theta_std", "rad"}}));
   EXPECT_EQ(a.at("angle [rad]"), Fields{"theta"});
   EXPECT_EQ(a.at("angular rate [rad/s]"), (Fields{"theta_dot", "drift"}));
   EXPECT_EQ(a.at("standard deviation [rad]"), Fields{"theta_std"});
@@ -69,15 +84,17 @@ TEST(ReportPanels, GroupsByUnitAcrossNames) {
 }
 
 TEST(ReportPanels, DimensionlessAndUndeclaredFieldsShareOnlyTheirStem) {
-  const auto g = by_quantity(group_fields({{"class", ""}, {"confidence", ""}, {"z3", ""}, {"z4", ""}, {"windows", ""},
-                                           {"q1", std::nullopt}, {"q2", std::nullopt}, {"x", std::nullopt}}));
+  const auto g = by_quantity(group_fields({{"class", ""},
+                                           {"confidence", ""},
+                                           {"z3", ""},
+                                           {"z4", ""},
+                                           {"windows", ""},
+                                           {"q1", std::nullopt},
+                                           {"q2", std::nullopt},
+                                           {"x", std::nullopt}}));
   const std::map<std::string, Fields> expected = {
-      {"class [-]", {"class"}},
-      {"confidence [-]", {"confidence"}},
-      {"z [-]", {"z3", "z4"}},
-      {"windows [-]", {"windows"}},
-      {"q [unit not declared]", {"q1", "q2"}},
-      {"x [unit not declared]", {"x"}},
+      {"class [-]", {"class"}},     {"confidence [-]", {"confidence"}},      {"z [-]", {"z3", "z4"}},
+      {"windows [-]", {"windows"}}, {"q [unit not declared]", {"q1", "q2"}}, {"x [unit not declared]", {"x"}},
   };
   EXPECT_EQ(g, expected);
   EXPECT_EQ(axis_label("angle", "rad"), "angle [rad]");
@@ -99,20 +116,50 @@ TEST(ReportPanels, MetricUnitFromTheNameSuffix) {
 /// The units of the messages of four_robots.yaml, as wire_types.cpp declares them (this
 /// test does not link the DDS layer).
 std::optional<std::string> test_units(const std::string& message, const std::string& field) {
-  static const std::map<std::string, std::string> units = {
-      {"x", "m"}, {"y", "m"}, {"theta", "rad"}, {"y_l", "m"}, {"y_r", "m"}, {"x_G", "m"}, {"sd_y_l", "m"},
-      {"sd_y_r", "m"}, {"sd_x_G", "m"}, {"resets", ""}, {"terrain", ""}, {"a_z", "m/s^2"}, {"v_l", "m/s"},
-      {"v_r", "m/s"}, {"v", "m/s"}, {"omega", "rad/s"}, {"theta_dot", "rad/s"}, {"drift", "rad/s"},
-      {"theta_std", "rad"}, {"torque", "N m"}, {"x_ddot", "m/s^2"}, {"theta_ddot", "rad/s^2"}, {"gyro", "rad/s"},
-      {"acc_x", "m/s^2"}, {"acc_z", "m/s^2"}, {"class", ""}, {"confidence", ""}, {"windows", ""}, {"votes", ""},
-      {"dx", "m/s"}, {"dy", "m/s"}, {"ddx", "m/s^2"}, {"ddy", "m/s^2"}, {"z3", ""}, {"z4", ""}, {"L", "1/s"}};
+  static const std::map<std::string, std::string> units = {{"x", "m"},
+                                                           {"y", "m"},
+                                                           {"theta", "rad"},
+                                                           {"y_l", "m"},
+                                                           {"y_r", "m"},
+                                                           {"x_G", "m"},
+                                                           {"sd_y_l", "m"},
+                                                           {"sd_y_r", "m"},
+                                                           {"sd_x_G", "m"},
+                                                           {"resets", ""},
+                                                           {"terrain", ""},
+                                                           {"a_z", "m/s^2"},
+                                                           {"v_l", "m/s"},
+                                                           {"v_r", "m/s"},
+                                                           {"v", "m/s"},
+                                                           {"omega", "rad/s"},
+                                                           {"theta_dot", "rad/s"},
+                                                           {"drift", "rad/s"},
+                                                           {"theta_std", "rad"},
+                                                           {"torque", "N m"},
+                                                           {"x_ddot", "m/s^2"},
+                                                           {"theta_ddot", "rad/s^2"},
+                                                           {"gyro", "rad/s"},
+                                                           {"acc_x", "m/s^2"},
+                                                           {"acc_z", "m/s^2"},
+                                                           {"class", ""},
+                                                           {"confidence", ""},
+                                                           {"windows", ""},
+                                                           {"votes", ""},
+                                                           {"dx", "m/s"},
+                                                           {"dy", "m/s"},
+                                                           {"ddx", "m/s^2"},
+                                                           {"ddy", "m/s^2"},
+                                                           {"z3", ""},
+                                                           {"z4", ""},
+                                                           {"L", "1/s"}};
   if (message.empty()) return std::nullopt;
   if (auto it = units.find(field); it != units.end()) return it->second;
   static const std::vector<std::pair<std::string, std::string>> joints = {
-      {"dddq", "rad/s^3"}, {"ddq", "rad/s^2"}, {"dq", "rad/s"}, {"q", "rad"}, {"dphi", "rad/s"}, {"phi", "rad"},
-      {"dtau", "N m/s"}, {"tau", "N m"}, {"u", "N m"}};
+      {"dddq", "rad/s^3"}, {"ddq", "rad/s^2"}, {"dq", "rad/s"}, {"q", "rad"}, {"dphi", "rad/s"},
+      {"phi", "rad"},      {"dtau", "N m/s"},  {"tau", "N m"},  {"u", "N m"}};
   for (const auto& [prefix, unit] : joints)
-    if (field.rfind(prefix, 0) == 0 && field.size() > prefix.size() && std::isdigit(static_cast<unsigned char>(field[prefix.size()])))
+    if (field.rfind(prefix, 0) == 0 && field.size() > prefix.size() &&
+        std::isdigit(static_cast<unsigned char>(field[prefix.size()])))
       return unit;
   return std::nullopt;
 }
@@ -123,8 +170,8 @@ class MainJobFolder : public ::testing::Test {
     dir_ = fs::temp_directory_path() / ("plexus_report_figures_test_" + std::to_string(::getpid()));
     fs::remove_all(dir_);
     const std::string file = std::string(PLEXUS_SOURCE_DIR) + "/deploy/scenarios/four_robots.yaml";
-    Scenario sc = load_scenario(file, {parse_override("duration=6"), parse_override("metrics.0.from=5"),
-                                       parse_override("metrics.1.from=5")});
+    Scenario sc = load_scenario(
+        file, {parse_override("duration=6"), parse_override("metrics.0.from=5"), parse_override("metrics.1.from=5")});
     const RunLog log = run_scenario(sc);
     write_run_folder(dir_, sc, log, evaluate(sc, log), 1.0, test_units);
     in_ = new ReportInputs(read_report_inputs(dir_));
@@ -241,7 +288,8 @@ TEST_F(MainJobFolder, EveryFigureHasTitleAxisLabelsAndUnits) {
   std::vector<std::string> l;
   for (std::string s; std::getline(lines, s);) l.push_back(s);
   const std::regex output("^set output '.+\\.png'$"), multiplot("^set multiplot layout [0-9]+,[0-9]+ title '.+' .*$");
-  const std::regex title("^set title '.+'$"), xlabel("^set xlabel '.+ \\[[^\\]]+\\]'$"), ylabel("^set ylabel '.+ \\[[^\\]]+\\]'$");
+  const std::regex title("^set title '.+'$"), xlabel("^set xlabel '.+ \\[[^\\]]+\\]'$"),
+      ylabel("^set ylabel '.+ \\[[^\\]]+\\]'$");
   std::size_t outputs = 0, panels = 0;
   for (std::size_t i = 0; i < l.size(); ++i) {
     if (std::regex_match(l[i], output)) {
@@ -271,7 +319,9 @@ TEST_F(MainJobFolder, HtmlHasTheTableAndEveryFigure) {
   const std::string html = report_html(*in_, c, figures);
   std::size_t rows = 0, images = 0;
   for (std::size_t p = html.find("<tr class="); p != std::string::npos; p = html.find("<tr class=", p + 1)) ++rows;
-  for (std::size_t p = html.find("<img src=\"plots/"); p != std::string::npos; p = html.find("<img src=\"plots/", p + 1)) ++images;
+  for (std::size_t p = html.find("<img src=\"plots/"); p != std::string::npos;
+       p = html.find("<img src=\"plots/", p + 1))
+    ++images;
   EXPECT_EQ(rows, c.rows.size());
   EXPECT_EQ(images, figures.size());
   EXPECT_NE(html.find("<th>paper</th><th>ours</th><th>bound</th><th>result</th>"), std::string::npos);

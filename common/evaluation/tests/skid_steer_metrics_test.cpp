@@ -35,9 +35,12 @@ RunLog switching_run() {
     const double* truth = t < kSwitch1 - 1e-9 ? a : (t < kSwitch2 - 1e-9 ? b : c);
     double e[3];
     for (int i = 0; i < 3; ++i) {
-      if (truth == a) e[i] = a[i];
-      else if (truth == b) e[i] = b[i] + (a[i] - b[i]) * std::exp(-(t - kSwitch1) / kTau1);
-      else e[i] = c[i] + (b[i] - c[i]) * std::exp(-(t - kSwitch2) / kTau2);
+      if (truth == a)
+        e[i] = a[i];
+      else if (truth == b)
+        e[i] = b[i] + (a[i] - b[i]) * std::exp(-(t - kSwitch1) / kTau1);
+      else
+        e[i] = c[i] + (b[i] - c[i]) * std::exp(-(t - kSwitch2) / kTau2);
     }
     for (auto* tr : {&state, &est, &odo_a, &odo_b}) tr->steps.push_back(k);
     state.values.insert(state.values.end(), {x, y, truth[0], truth[1], truth[2]});
@@ -151,7 +154,7 @@ TEST(SkidSteerMetrics, ReconvergenceIsForGoodAndItsToleranceIncludesTheEdge) {
   // even though the estimate falls back afterwards.
   EXPECT_DOUBLE_EQ(value(rise + ", fraction: 0.75}"), 0.75);
   EXPECT_DOUBLE_EQ(value(rise + ", fraction: 0.8}"), 0.75);
-  EXPECT_DOUBLE_EQ(value(rise + ", fraction: 0.5}"), 0.25);  // step 10: 0.5 >= 0.5
+  EXPECT_DOUBLE_EQ(value(rise + ", fraction: 0.5}"), 0.25);   // step 10: 0.5 >= 0.5
   EXPECT_DOUBLE_EQ(value(rise + ", fraction: 0.81}"), 10.0);  // never: the run length
   EXPECT_DOUBLE_EQ(value(rise + ", fraction: 1}"), 10.0);
 }
@@ -177,10 +180,12 @@ TEST(SkidSteerMetrics, ReconvergenceConfigurationErrorsNameTheKey) {
 
 TEST(SkidSteerMetrics, OdometryErrorRatioDividesTheFinalPositionErrors) {
   const RunLog log = switching_run();
-  EXPECT_NEAR(compute(log, "{type: odometry_error_ratio, signal: r/odo_a, other: r/odo_b, reference: r/truth/state}").value,
-              0.5, 1e-12);
-  EXPECT_NEAR(compute(log, "{type: odometry_error_ratio, signal: r/odo_b, other: r/odo_a, reference: r/truth/state}").value,
-              2.0, 1e-12);
+  EXPECT_NEAR(
+      compute(log, "{type: odometry_error_ratio, signal: r/odo_a, other: r/odo_b, reference: r/truth/state}").value,
+      0.5, 1e-12);
+  EXPECT_NEAR(
+      compute(log, "{type: odometry_error_ratio, signal: r/odo_b, other: r/odo_a, reference: r/truth/state}").value,
+      2.0, 1e-12);
 }
 
 }  // namespace

@@ -106,8 +106,8 @@ TEST(UnicycleMetrics, VelocityObserverErrorAndNormFinal) {
     est.values.insert(est.values.end(), {2 * std::cos(th) - 0.1 * std::exp(-t), 2 * std::sin(th) + 0.2 * std::exp(-t)});
   }
   log.signals = {state, cmd, est};
-  const MetricResult r = compute(
-      log, "{type: velocity_observer_error_final, state: r/truth/state, cmd: r/cmd, estimate: r/heading}");
+  const MetricResult r =
+      compute(log, "{type: velocity_observer_error_final, state: r/truth/state, cmd: r/cmd, estimate: r/heading}");
   EXPECT_NEAR(r.value, std::sqrt(0.05) * std::exp(-20.0), 1e-15);
   ASSERT_EQ(r.series.size(), static_cast<std::size_t>(kSteps + 1));
   EXPECT_NEAR(r.series.front().second, std::sqrt(0.05), 1e-12);

@@ -20,7 +20,7 @@ struct Baud {
 
 // The rates named by termios from 115200 up to 1000000; a device at another rate needs
 // its own speed setting (BOTHER), which the bridge does not offer.
-constexpr Baud kBauds[] = {{115200, B115200}, {230400, B230400}, {460800, B460800}, {500000, B500000},
+constexpr Baud kBauds[] = {{115200, B115200}, {230400, B230400}, {460800, B460800},  {500000, B500000},
                            {576000, B576000}, {921600, B921600}, {1000000, B1000000}};
 
 std::string allowed_list() {
@@ -51,8 +51,8 @@ int open_serial(const std::string& path, long baud, std::string& error) {
   for (const Baud& b : kBauds)
     if (b.rate == baud) rate = &b;
   if (rate == nullptr) {
-    error = "serial device " + path + ": unsupported baud rate " + std::to_string(baud) + " (allowed: " +
-            allowed_list() + ")";
+    error = "serial device " + path + ": unsupported baud rate " + std::to_string(baud) +
+            " (allowed: " + allowed_list() + ")";
     return -1;
   }
   // O_NOCTTY: a bridge must never acquire the device as its controlling terminal (a hang-up
@@ -61,10 +61,10 @@ int open_serial(const std::string& path, long baud, std::string& error) {
   if (fd < 0) return fail(-1, path, "cannot open", error);
   termios t{};
   if (::tcgetattr(fd, &t) != 0) return fail(fd, path, "not a terminal (tcgetattr)", error);
-  ::cfmakeraw(&t);                // 8N1, no echo, no canonical mode, no signals, no CR/NL mapping
-  t.c_cflag |= CLOCAL | CREAD;    // ignore modem lines, enable the receiver
+  ::cfmakeraw(&t);              // 8N1, no echo, no canonical mode, no signals, no CR/NL mapping
+  t.c_cflag |= CLOCAL | CREAD;  // ignore modem lines, enable the receiver
   t.c_cflag &= ~(CRTSCTS | CSTOPB);
-  t.c_cc[VMIN] = 0;               // read() returns what is there, at once
+  t.c_cc[VMIN] = 0;  // read() returns what is there, at once
   t.c_cc[VTIME] = 0;
   if (::cfsetispeed(&t, rate->constant) != 0 || ::cfsetospeed(&t, rate->constant) != 0)
     return fail(fd, path, "cannot set the baud rate", error);

@@ -48,8 +48,10 @@ bool parse_endpoint(const std::string& text, const std::string& what, UdpEndpoin
   long value = 0;
   bool digits = !port.empty() && port.size() <= 5;
   for (char c : port) {
-    if (c < '0' || c > '9') digits = false;
-    else value = value * 10 + (c - '0');
+    if (c < '0' || c > '9')
+      digits = false;
+    else
+      value = value * 10 + (c - '0');
   }
   if (!digits || value < 1 || value > 65535) return bad("has no valid port 1..65535 ('" + port + "')");
   out.address = address;

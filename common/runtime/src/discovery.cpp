@@ -44,17 +44,21 @@ std::optional<QosMismatch> check_compatible(const EndpointQos& w, const Endpoint
     return QosMismatch{"RELIABILITY", to_string(w.reliability), to_string(r.reliability)};
   if (durability_rank(w) < durability_rank(r)) return QosMismatch{"DURABILITY", durability_text(w), durability_text(r)};
   if (longer(w.deadline_s, r.deadline_s)) return QosMismatch{"DEADLINE", seconds(w.deadline_s), seconds(r.deadline_s)};
-  if (static_cast<int>(w.liveliness) < static_cast<int>(r.liveliness) || longer(w.liveliness_lease_s, r.liveliness_lease_s))
+  if (static_cast<int>(w.liveliness) < static_cast<int>(r.liveliness) ||
+      longer(w.liveliness_lease_s, r.liveliness_lease_s))
     return QosMismatch{"LIVELINESS", std::string(to_string(w.liveliness)) + " lease " + seconds(w.liveliness_lease_s),
                        std::string(to_string(r.liveliness)) + " lease " + seconds(r.liveliness_lease_s)};
   if (w.exclusive_ownership != r.exclusive_ownership)
-    return QosMismatch{"OWNERSHIP", w.exclusive_ownership ? "exclusive" : "shared", r.exclusive_ownership ? "exclusive" : "shared"};
+    return QosMismatch{"OWNERSHIP", w.exclusive_ownership ? "exclusive" : "shared",
+                       r.exclusive_ownership ? "exclusive" : "shared"};
   if (w.latency_budget_s > r.latency_budget_s + 1e-12)
-    return QosMismatch{"LATENCYBUDGET", seconds(w.latency_budget_s), r.latency_budget_s > 0 ? seconds(r.latency_budget_s) : "0"};
+    return QosMismatch{"LATENCYBUDGET", seconds(w.latency_budget_s),
+                       r.latency_budget_s > 0 ? seconds(r.latency_budget_s) : "0"};
   const int offered = w.data_representation.empty() ? 0 : w.data_representation.front();
   bool accepted = r.data_representation.empty() ? offered == 0 : false;
   for (int v : r.data_representation) accepted = accepted || v == offered;
-  if (!accepted) return QosMismatch{"DATA_REPRESENTATION", repr_text(w.data_representation), repr_text(r.data_representation)};
+  if (!accepted)
+    return QosMismatch{"DATA_REPRESENTATION", repr_text(w.data_representation), repr_text(r.data_representation)};
   return std::nullopt;
 }
 

@@ -11,7 +11,8 @@ std::unique_ptr<Participant> Participant::create(const ParticipantOptions& optio
     throw InputError("--domain: DDS domain id must be in 0..232, got " + std::to_string(options.domain_id));
   if (options.network.max_participants_per_host < 1 || options.network.max_participants_per_host > 120)
     throw InputError("network: max_participants_per_host must be in 1..120");
-  if (options.security.enabled) check_security_files(options.security, "DDS Security of participant '" + options.name + "'");
+  if (options.security.enabled)
+    check_security_files(options.security, "DDS Security of participant '" + options.name + "'");
   if (!(options.network.reliable_heartbeat_s >= 0.001 && options.network.reliable_heartbeat_s <= 10.0))
     throw InputError("network: reliable_heartbeat_s must be in [0.001, 10] s, got " +
                      std::to_string(options.network.reliable_heartbeat_s));

@@ -21,8 +21,7 @@ namespace {
 
 void sleep_until(int64_t deadline_ns) {
   timespec ts{static_cast<time_t>(deadline_ns / 1'000'000'000), static_cast<long>(deadline_ns % 1'000'000'000)};
-  while (clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &ts, nullptr) == EINTR) {
-  }
+  while (clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &ts, nullptr) == EINTR) {}
 }
 
 // Percentiles from log-linear histograms kept up to date as samples enter and leave the
@@ -38,7 +37,8 @@ constexpr int kTopBit = 36;                            // 2^36 ns (69 s) and abo
 std::size_t bucket_of(int64_t ns) {
   if (ns < kLinearNs) return ns < 0 ? 0 : static_cast<std::size_t>(ns);
   const int e = std::min(63 - __builtin_clzll(static_cast<unsigned long long>(ns)), kTopBit);
-  const int64_t sub = e == kTopBit ? (int64_t{1} << kSubBits) - 1 : (ns >> (e - kSubBits)) & ((int64_t{1} << kSubBits) - 1);
+  const int64_t sub =
+      e == kTopBit ? (int64_t{1} << kSubBits) - 1 : (ns >> (e - kSubBits)) & ((int64_t{1} << kSubBits) - 1);
   return static_cast<std::size_t>(kLinearNs + (e - kSubBits - 1) * (int64_t{1} << kSubBits) + sub);
 }
 
@@ -69,10 +69,12 @@ double percentile_us(const std::vector<uint32_t>& hist, std::size_t n, double q,
 PeriodicLoop::PeriodicLoop(const LoopOptions& o) {
   if (!(o.rate_hz > 0.0 && o.rate_hz <= 100'000.0))
     throw InputError("loop rate must be in (0, 100000] Hz, got " + std::to_string(o.rate_hz));
-  if (o.priority < 0 || o.priority > 99) throw InputError("loop priority must be in 0..99, got " + std::to_string(o.priority));
+  if (o.priority < 0 || o.priority > 99)
+    throw InputError("loop priority must be in 0..99, got " + std::to_string(o.priority));
   if (o.stats_window < 16 || o.stats_window > (std::size_t{1} << 24))
     throw InputError("loop stats_window must be in 16..16777216, got " + std::to_string(o.stats_window));
-  if (o.timer_slack_ns < 0) throw InputError("loop timer_slack_ns must be >= 0 (0: keep), got " + std::to_string(o.timer_slack_ns));
+  if (o.timer_slack_ns < 0)
+    throw InputError("loop timer_slack_ns must be >= 0 (0: keep), got " + std::to_string(o.timer_slack_ns));
   if (o.cpu_dma_latency_us < -1 || o.cpu_dma_latency_us > 10'000'000)
     throw InputError("loop cpu_dma_latency_us must be -1 (none) or in 0..10000000, got " +
                      std::to_string(o.cpu_dma_latency_us));

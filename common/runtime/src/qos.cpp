@@ -52,9 +52,9 @@ QosProfile parse_profile(const YamlMap& m, const std::string& name) {
   p.durability = parse_enum(m, "durability", p.durability,
                             {std::pair{"volatile", QosProfile::Durability::volatile_},
                              std::pair{"transient_local", QosProfile::Durability::transient_local}});
-  p.history = parse_enum(m, "history", p.history,
-                         {std::pair{"keep_last", QosProfile::History::keep_last},
-                          std::pair{"keep_all", QosProfile::History::keep_all}});
+  p.history = parse_enum(
+      m, "history", p.history,
+      {std::pair{"keep_last", QosProfile::History::keep_last}, std::pair{"keep_all", QosProfile::History::keep_all}});
   p.depth = m.optional<int32_t>("depth", p.depth);
   if (p.depth < 1 || p.depth > 100000) m.fail("depth", "must be in 1..100000, got " + std::to_string(p.depth));
   p.deadline_s = duration(m, "deadline_s", p.deadline_s);
@@ -119,7 +119,8 @@ std::string describe(const QosProfile& q) {
                   to_string(q.history);
   if (q.history == QosProfile::History::keep_last) s += " " + std::to_string(q.depth);
   if (q.deadline_s > 0) s += ", deadline " + std::to_string(q.deadline_s) + " s";
-  if (q.liveliness_lease_s > 0) s += ", " + std::string(to_string(q.liveliness)) + " lease " + std::to_string(q.liveliness_lease_s) + " s";
+  if (q.liveliness_lease_s > 0)
+    s += ", " + std::string(to_string(q.liveliness)) + " lease " + std::to_string(q.liveliness_lease_s) + " s";
   return s;
 }
 

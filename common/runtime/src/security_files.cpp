@@ -71,7 +71,8 @@ SecurityOptions security_from_pki(const std::string& pki_dir, const std::string&
   s.identity = folder ? id.filename().string() : name;
   s.identity_ca = absolute_path(pki / "identity_ca.pem");
   s.permissions_ca = absolute_path(pki / "permissions_ca.pem");
-  s.governance = absolute_path(governance.empty() ? pki / "governance.p7s" : pki / governance);  // an absolute one stays
+  s.governance =
+      absolute_path(governance.empty() ? pki / "governance.p7s" : pki / governance);  // an absolute one stays
   s.certificate = absolute_path(id / "cert.pem");
   s.private_key = absolute_path(id / "key.pem");
   s.permissions = absolute_path(id / "permissions.p7s");

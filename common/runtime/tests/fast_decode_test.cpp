@@ -1,9 +1,9 @@
 // The decode and print paths of every message type on input a remote writer controls, apart
 // from codec_test.cpp: Fast DDS's headers and Cyclone DDS's (its PID_* macros) do not mix in
 // one file.
-#include <fastdds/dds/topic/TopicDataType.hpp>
 #include <fastdds/rtps/common/SerializedPayload.h>
 #include <gtest/gtest.h>
+#include <fastdds/dds/topic/TopicDataType.hpp>
 
 #include <nlohmann/json.hpp>
 
@@ -41,7 +41,7 @@ TEST(MessageCodec, FastDecoderFailsWithoutThrowingAndFlagsTheFailure) {
     msg::take_fast_decode_failure();
     EXPECT_FALSE(decode(*ts, {0x01, 0x00, 0x00, 0x00, 0, 0, 0, 0})) << ts->type_name;  // not a CDR encapsulation
     EXPECT_TRUE(msg::take_fast_decode_failure()) << ts->type_name;
-    EXPECT_FALSE(msg::take_fast_decode_failure()) << ts->type_name;  // taking it clears it
+    EXPECT_FALSE(msg::take_fast_decode_failure()) << ts->type_name;              // taking it clears it
     EXPECT_FALSE(decode(*ts, {0x00, 0x01, 0x00, 0x00, 1, 2})) << ts->type_name;  // truncated
     EXPECT_TRUE(msg::take_fast_decode_failure()) << ts->type_name;
     void* good = ts->create();
@@ -62,7 +62,10 @@ TEST(MessageCodec, TextMembersAlwaysPrintAsJson) {
   hb.service()[2] = 'b';
   std::string text;
   ASSERT_NO_THROW(text = msg::to_json(hb).dump());
-  EXPECT_NE(text.find("\"service\":\"a\xEF\xBF\xBD" "b\""), std::string::npos) << text;  // U+FFFD
+  EXPECT_NE(text.find("\"service\":\"a\xEF\xBF\xBD"
+                      "b\""),
+            std::string::npos)
+      << text;  // U+FFFD
 }
 
 // Both vendors decode in place: a malformed sample that follows the newest valid one left

@@ -37,11 +37,13 @@ TEST(PeriodicLoop, StartsAtAGivenDeadlineAndKeepsItsPhase) {
   PeriodicLoop loop({.rate_hz = 1000});
   const int64_t first = monotonic_ns() + 20'000'000 + 123'457;
   std::vector<int64_t> deadlines;
-  loop.run([&](const PeriodicLoop::Tick& t) {
-    EXPECT_GE(t.wake_ns, t.deadline_ns);
-    deadlines.push_back(t.deadline_ns);
-    return t.index < 4;
-  }, first);
+  loop.run(
+      [&](const PeriodicLoop::Tick& t) {
+        EXPECT_GE(t.wake_ns, t.deadline_ns);
+        deadlines.push_back(t.deadline_ns);
+        return t.index < 4;
+      },
+      first);
   ASSERT_EQ(deadlines.size(), 5u);
   EXPECT_EQ(deadlines[0], first);
   for (std::size_t i = 1; i < deadlines.size(); ++i)
@@ -53,8 +55,7 @@ TEST(PeriodicLoop, OverrunsAreCounted) {
   loop.run([&](const PeriodicLoop::Tick& t) {
     if (t.index == 2) {
       const int64_t until = t.wake_ns + 5'000'000;  // busy for 5 periods
-      while (monotonic_ns() < until) {
-      }
+      while (monotonic_ns() < until) {}
     }
     return t.index < 5;
   });

@@ -121,8 +121,10 @@ TEST_P(ReceiveDelivery, SamplesQueuedBeforeTheCallbackAreDelivered) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Vendors, ReceiveDelivery,
-                         ::testing::Values(Pair{Vendor::fast, Vendor::fast, 151}, Pair{Vendor::cyclone, Vendor::cyclone, 152},
-                                           Pair{Vendor::fast, Vendor::cyclone, 153}, Pair{Vendor::cyclone, Vendor::fast, 154}),
+                         ::testing::Values(Pair{Vendor::fast, Vendor::fast, 151},
+                                           Pair{Vendor::cyclone, Vendor::cyclone, 152},
+                                           Pair{Vendor::fast, Vendor::cyclone, 153},
+                                           Pair{Vendor::cyclone, Vendor::fast, 154}),
                          [](const ::testing::TestParamInfo<Pair>& p) {
                            return std::string(to_string(p.param.pub)) + "_to_" + to_string(p.param.sub);
                          });

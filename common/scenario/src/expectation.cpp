@@ -38,9 +38,11 @@ std::string Expectation::text() const {
 bool parse_expectation(const std::string& metric, const std::string& text, Expectation& out) {
   std::size_t i = text.find_first_not_of(' ');
   if (i == std::string::npos) return false;
-  static const std::pair<const char*, Expectation::Op> kOps[] = {{"<=", Expectation::Op::le}, {">=", Expectation::Op::ge},
-                                                               {"==", Expectation::Op::eq}, {"<", Expectation::Op::lt},
-                                                               {">", Expectation::Op::gt}};
+  static const std::pair<const char*, Expectation::Op> kOps[] = {{"<=", Expectation::Op::le},
+                                                                 {">=", Expectation::Op::ge},
+                                                                 {"==", Expectation::Op::eq},
+                                                                 {"<", Expectation::Op::lt},
+                                                                 {">", Expectation::Op::gt}};
   for (const auto& [sym, op] : kOps) {
     const std::string s = sym;
     if (text.compare(i, s.size(), s) != 0) continue;

@@ -47,8 +47,7 @@ YAML::Node nested(const std::vector<std::string>& parts, std::size_t from, const
 
 Override parse_override(const std::string& argument) {
   const std::size_t eq = argument.find('=');
-  if (eq == std::string::npos || eq == 0)
-    throw InputError("--set " + argument + ": expected dotted.key=value");
+  if (eq == std::string::npos || eq == 0) throw InputError("--set " + argument + ": expected dotted.key=value");
   Override o{argument.substr(0, eq), argument.substr(eq + 1)};
   for (const auto& part : split_path(o.path))
     if (part.empty()) throw InputError(o.text() + ": empty key in the dotted path");

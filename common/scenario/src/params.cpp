@@ -29,8 +29,7 @@ double number(const YamlMap& p, const YAML::Node& n, const std::string& key) {
     // yaml-cpp reads .nan and .inf as numbers; a parameter is finite, as YamlMap reads it.
     if (n.IsScalar())
       if (const double v = n.as<double>(); std::isfinite(v)) return v;
-  } catch (const YAML::Exception&) {
-  }
+  } catch (const YAML::Exception&) {}
   throw InputError(p.where(n) + ": " + p.key_path(key) + ": expected a finite number, got '" +
                    (n.IsScalar() ? n.Scalar() : "a collection") + "'");
 }
@@ -50,7 +49,8 @@ double degrees(const YamlMap& p, const std::string& key, double fallback_rad, co
   if (!p.has(key)) return fallback_rad;
   const double v = p.required<double>(key);
   const bool ok = std::isfinite(v) && (min == "> 0" ? v > 0.0 : min == ">= 0" ? v >= 0.0 : true);
-  if (!ok) p.fail(key, "must be finite" + (min.empty() ? std::string() : " and " + min) + " (got " + std::to_string(v) + ")");
+  if (!ok)
+    p.fail(key, "must be finite" + (min.empty() ? std::string() : " and " + min) + " (got " + std::to_string(v) + ")");
   return v * kRad;
 }
 

@@ -12,10 +12,10 @@
 #include "plexus/base/logging.hpp"
 #include "plexus/base/yaml_reader.hpp"
 #include "plexus/scenario/digest.hpp"
-#include "plexus/scenario/registry.hpp"
-#include "plexus/scenario/scenario.hpp"
 #include "plexus/scenario/format.hpp"
 #include "plexus/scenario/plugins.hpp"
+#include "plexus/scenario/registry.hpp"
+#include "plexus/scenario/scenario.hpp"
 #include "security_section.hpp"
 #include "wiring.hpp"
 
@@ -42,7 +42,8 @@ bool valid_name(const std::string& s) {
 /// A robot's or service's `dds` key: the vendor its process uses under `plexus launch`.
 std::string dds_key(const YamlMap& section) {
   const std::string v = section.optional<std::string>("dds", "");
-  if (section.has("dds") && v != "fast" && v != "cyclone") section.fail("dds", "expected fast or cyclone, got '" + v + "'");
+  if (section.has("dds") && v != "fast" && v != "cyclone")
+    section.fail("dds", "expected fast or cyclone, got '" + v + "'");
   return v;
 }
 
@@ -53,7 +54,8 @@ std::string known_list(const std::vector<std::string>& names) {
 }
 
 std::string name_key(const YamlMap& parent, const std::string& key, const char* what) {
-  if (!valid_name(key)) parent.fail(key, std::string("invalid ") + what + " name (letters, digits, '_' and '-', at most 64)");
+  if (!valid_name(key))
+    parent.fail(key, std::string("invalid ") + what + " name (letters, digits, '_' and '-', at most 64)");
   return key;
 }
 
@@ -124,11 +126,11 @@ struct Loader {
       if (section.has("robot")) {
         cfg.robot = section.required<std::string>("robot");
         if (sc.partial ? !valid_name(cfg.robot) : !robot_names.count(cfg.robot))
-          section.fail("robot", sc.partial ? "invalid robot name '" + cfg.robot + "'" : "no robot '" + cfg.robot + "' in robots");
+          section.fail("robot", sc.partial ? "invalid robot name '" + cfg.robot + "'"
+                                           : "no robot '" + cfg.robot + "' in robots");
       }
       out.host = section.optional<std::string>("host", "");
-      if (section.has("host") && !hosts.count(out.host))
-        section.fail("host", "no host '" + out.host + "' in hosts");
+      if (section.has("host") && !hosts.count(out.host)) section.fail("host", "no host '" + out.host + "' in hosts");
       out.qos = section.optional<std::string>("qos", "");
       if (section.has("qos") && out.qos.empty()) section.fail("qos", "must name a QoS profile");
       out.dds = dds_key(section);
@@ -142,7 +144,8 @@ struct Loader {
       if (!(out.restart_delay >= 0.0 && out.restart_delay <= 3600.0))
         section.fail("restart_delay", "must be in [0, 3600] s");
       out.priority = section.optional<int>("priority", 0);
-      if (out.priority < 0 || out.priority > 99) section.fail("priority", "must be in 0..99 (SCHED_FIFO; 0: normal scheduling)");
+      if (out.priority < 0 || out.priority > 99)
+        section.fail("priority", "must be in 0..99 (SCHED_FIFO; 0: normal scheduling)");
       out.cpu = section.optional<int>("cpu", -1);
       if (out.cpu < -1 || out.cpu > 1023) section.fail("cpu", "must be a CPU number 0..1023 (-1: no affinity)");
     }
@@ -178,7 +181,8 @@ struct Loader {
       const std::string where = top.where(entries[i]) + ": plugins." + std::to_string(i);
       if (!entries[i].IsScalar()) throw InputError(where + ": expected the path of a shared library");
       const std::filesystem::path p = entries[i].as<std::string>();
-      const std::string path = p.is_absolute() || sc.base_dir.empty() ? p.string() : (std::filesystem::path(sc.base_dir) / p).string();
+      const std::string path =
+          p.is_absolute() || sc.base_dir.empty() ? p.string() : (std::filesystem::path(sc.base_dir) / p).string();
       load_plugin(path, where);
       sc.plugins.push_back(std::filesystem::absolute(path).lexically_normal().string());
     }
@@ -220,9 +224,12 @@ struct Loader {
     if (top.has("clock")) {
       const YamlMap clock = top.map("clock");
       const auto mode = clock.required<std::string>("mode");
-      if (mode == "lockstep") sc.clock = ClockMode::lockstep;
-      else if (mode == "realtime") sc.clock = ClockMode::realtime;
-      else clock.fail("mode", "expected lockstep or realtime, got '" + mode + "'");
+      if (mode == "lockstep")
+        sc.clock = ClockMode::lockstep;
+      else if (mode == "realtime")
+        sc.clock = ClockMode::realtime;
+      else
+        clock.fail("mode", "expected lockstep or realtime, got '" + mode + "'");
       sc.input_deadline_periods = clock.optional<double>("input_deadline_periods", sc.input_deadline_periods);
       if (!(sc.input_deadline_periods >= 1.0 && sc.input_deadline_periods <= 1000.0))
         clock.fail("input_deadline_periods", "must be in [1, 1000]");
@@ -253,15 +260,16 @@ struct Loader {
         access.workdir = host.optional<std::string>("workdir", "");
         access.plexus = host.optional<std::string>("plexus", "");
         // An ssh destination is one word: a leading '-' would reach ssh as an option.
-        if (host.has("ssh") && (access.ssh.empty() || access.ssh[0] == '-' ||
-                                access.ssh.find_first_of(" \t\r\n") != std::string::npos))
+        if (host.has("ssh") &&
+            (access.ssh.empty() || access.ssh[0] == '-' || access.ssh.find_first_of(" \t\r\n") != std::string::npos))
           host.fail("ssh", "expected [user@]host or a Host of the ssh config (one word, not starting with '-')");
         for (const char* key : {"workdir", "plexus"})
           if (host.has(key) && (host.optional<std::string>(key, "").empty() ||
                                 host.optional<std::string>(key, "").find_first_of("\r\n") != std::string::npos))
             host.fail(key, "expected a path on that host");
         if ((host.has("workdir") || host.has("plexus")) && !host.has("ssh"))
-          host.fail(host.has("workdir") ? "workdir" : "plexus", "only for a host reached over ssh (add ssh: [user@]host)");
+          host.fail(host.has("workdir") ? "workdir" : "plexus",
+                    "only for a host reached over ssh (add ssh: [user@]host)");
         host.reject_unknown();
         hosts.insert(h);
         sc.hosts.push_back(h);
@@ -303,16 +311,22 @@ struct Loader {
     std::string type;
     if (scalar) type = robot.required<std::string>("source");
     const auto set_type = [&](const std::string& t, const auto& fail) {
-      if (t == "simulator") src.type = RobotSource::Type::simulator;
-      else if (t == "serial_bridge") src.type = RobotSource::Type::serial_bridge;
-      else if (t == "udp_bridge") src.type = RobotSource::Type::udp_bridge;
-      else if (t == "replay") src.type = RobotSource::Type::replay;
-      else fail("expected simulator, serial_bridge, udp_bridge or replay, got '" + t + "'");
+      if (t == "simulator")
+        src.type = RobotSource::Type::simulator;
+      else if (t == "serial_bridge")
+        src.type = RobotSource::Type::serial_bridge;
+      else if (t == "udp_bridge")
+        src.type = RobotSource::Type::udp_bridge;
+      else if (t == "replay")
+        src.type = RobotSource::Type::replay;
+      else
+        fail("expected simulator, serial_bridge, udp_bridge or replay, got '" + t + "'");
     };
     if (scalar) {
       set_type(type, [&](const std::string& m) { robot.fail("source", m); });
       if (src.type != RobotSource::Type::simulator)
-        robot.fail("source", "a " + type + " needs its parameters: write source: {type: " + type + ", ...} (docs/bridges.md)");
+        robot.fail("source",
+                   "a " + type + " needs its parameters: write source: {type: " + type + ", ...} (docs/bridges.md)");
     } else {
       const YamlMap m = robot.map("source");
       set_type(m.required<std::string>("type"), [&](const std::string& msg) { m.fail("type", msg); });
@@ -338,7 +352,9 @@ struct Loader {
           break;
         case RobotSource::Type::replay: {
           const std::string rec = m.required<std::string>("recording");
-          src.recording = std::filesystem::path(rec).is_absolute() ? rec : (std::filesystem::path(sc.base_dir) / rec).lexically_normal().string();
+          src.recording = std::filesystem::path(rec).is_absolute()
+                              ? rec
+                              : (std::filesystem::path(sc.base_dir) / rec).lexically_normal().string();
           break;
         }
       }
@@ -351,31 +367,31 @@ struct Loader {
   void load_components(const YamlMap& top) {
     std::vector<ScenarioComponent> all;
     if (!sc.partial || top.has("robots")) {
-    const YamlMap robots = top.map("robots");
-    if (robots.keys().empty() && !sc.partial) top.fail("robots", "needs at least one robot");
-    for (const auto& r : robots.keys()) {
-      const YamlMap robot = robots.map(name_key(robots, r, "robot"));
-      robot_names.insert(r);
-      const std::string rpath = "robots." + r;
-      const std::string robot_host = robot.optional<std::string>("host", "");
-      if (robot.has("host") && !hosts.count(robot_host)) robot.fail("host", "no host '" + robot_host + "' in hosts");
-      const std::string robot_dds = dds_key(robot);
-      if (robot.has("source")) load_source(robot, rpath, r);
-      const YamlMap plant = robot.map("plant");
-      all.push_back(build(plant, rpath + ".plant", "plant", r, sc.resolved["robots"][r]["plant"], false));
-      all.back().host = robot_host;
-      all.back().dds = robot_dds;
-      if (robot.has("sensors")) {
-        const YamlMap sensors = robot.map("sensors");
-        for (const auto& s : sensors.keys()) {
-          const YamlMap sensor = sensors.map(name_key(sensors, s, "sensor"));
-          all.push_back(build(sensor, rpath + ".sensors." + s, s, r, sc.resolved["robots"][r]["sensors"][s], false));
-          all.back().host = robot_host;  // a robot's sensors run with its plant
-          all.back().dds = robot_dds;
+      const YamlMap robots = top.map("robots");
+      if (robots.keys().empty() && !sc.partial) top.fail("robots", "needs at least one robot");
+      for (const auto& r : robots.keys()) {
+        const YamlMap robot = robots.map(name_key(robots, r, "robot"));
+        robot_names.insert(r);
+        const std::string rpath = "robots." + r;
+        const std::string robot_host = robot.optional<std::string>("host", "");
+        if (robot.has("host") && !hosts.count(robot_host)) robot.fail("host", "no host '" + robot_host + "' in hosts");
+        const std::string robot_dds = dds_key(robot);
+        if (robot.has("source")) load_source(robot, rpath, r);
+        const YamlMap plant = robot.map("plant");
+        all.push_back(build(plant, rpath + ".plant", "plant", r, sc.resolved["robots"][r]["plant"], false));
+        all.back().host = robot_host;
+        all.back().dds = robot_dds;
+        if (robot.has("sensors")) {
+          const YamlMap sensors = robot.map("sensors");
+          for (const auto& s : sensors.keys()) {
+            const YamlMap sensor = sensors.map(name_key(sensors, s, "sensor"));
+            all.push_back(build(sensor, rpath + ".sensors." + s, s, r, sc.resolved["robots"][r]["sensors"][s], false));
+            all.back().host = robot_host;  // a robot's sensors run with its plant
+            all.back().dds = robot_dds;
+          }
         }
+        robot.reject_unknown();
       }
-      robot.reject_unknown();
-    }
     }
     if (top.has("services")) {
       const YamlMap services = top.map("services");
@@ -414,7 +430,8 @@ struct Loader {
           const bool physical = c.kind == ComponentKind::plant || c.kind == ComponentKind::sensor;
           const std::string& n = c.component->name();
           if (physical ? n.substr(0, n.find('/')) != member : n != member) continue;
-          if (std::count(loop.members.begin(), loop.members.end(), i)) l.fail("members", "'" + member + "' is named twice");
+          if (std::count(loop.members.begin(), loop.members.end(), i))
+            l.fail("members", "'" + member + "' is named twice");
           loop.members.push_back(i);
           fastest = fastest == 0 ? c.period_steps : std::min(fastest, c.period_steps);
           ++found;
@@ -433,7 +450,8 @@ struct Loader {
         auto& c = sc.components[i];
         if (loop.process.empty()) continue;
         if (!c.process.empty() && c.process != loop.process)
-          l.fail("process", "'" + c.component->name() + "' already runs in process '" + c.process + "' (" + c.where + ")");
+          l.fail("process",
+                 "'" + c.component->name() + "' already runs in process '" + c.process + "' (" + c.where + ")");
         c.process = loop.process;
       }
       l.reject_unknown();
@@ -471,7 +489,8 @@ struct Loader {
     const YamlMap ex = top.map("expectations");
     for (const auto& metric : ex.keys()) {
       const auto text = ex.required<std::string>(metric);
-      const bool known = std::any_of(sc.metrics.begin(), sc.metrics.end(), [&](const auto& m) { return m.name == metric; });
+      const bool known =
+          std::any_of(sc.metrics.begin(), sc.metrics.end(), [&](const auto& m) { return m.name == metric; });
       if (!known) ex.fail(metric, "no metric '" + metric + "' in metrics");
       Expectation e;
       if (!parse_expectation(metric, text, e))
@@ -489,7 +508,8 @@ struct Loader {
     load_components(top);
     load_loops(top);
     if (sc.partial && (top.has("metrics") || top.has("expectations")))
-      top.fail(top.has("metrics") ? "metrics" : "expectations", "belongs to a whole scenario, not to one service's part");
+      top.fail(top.has("metrics") ? "metrics" : "expectations",
+               "belongs to a whole scenario, not to one service's part");
     load_metrics(top);
     load_expectations(top);
     for (auto& [node, seed] : derived_seeds) {

@@ -43,8 +43,10 @@ ScenarioSecurity load_security_section(const YamlMap& top, const std::string& ba
     for (const auto& process : ids.keys()) {
       const auto id = ids.required<std::string>(process);
       if (id.find('/') == std::string::npos && !identity_name(id))
-        ids.fail(process, "expected an identity name in the PKI folder's identities/ (letters, digits, '_', '-', '.') "
-                          "or a folder path containing '/', got '" + id + "'");
+        ids.fail(process,
+                 "expected an identity name in the PKI folder's identities/ (letters, digits, '_', '-', '.') "
+                 "or a folder path containing '/', got '" +
+                     id + "'");
       s.identities[process] = id.find('/') == std::string::npos ? id : absolute_in(base_dir, id);
       s.identity_where[process] = ids.where(ids.node(process)) + ": " + ids.key_path(process);
     }

@@ -33,12 +33,14 @@ std::string remap_of(const ScenarioComponent& c, const std::string& port) {
                               const Port& in) {
   for (const auto& c : components)
     for (const auto& out : c.component->outputs())
-      if (const auto where = remap_of(c, out->port()); !where.empty() && c.component->default_signal(out->port()) == in.signal())
+      if (const auto where = remap_of(c, out->port());
+          !where.empty() && c.component->default_signal(out->port()) == in.signal())
         throw InputError(where + ": sends " + c.component->name() + "'s output '" + out->port() + "' to '" +
                          out->signal() + "', so nothing produces '" + in.signal() + "', read by " + reader.where +
                          " (port '" + in.port() + "')");
   if (const auto where = remap_of(reader, in.port()); !where.empty())
-    throw InputError(where + ": reads port '" + in.port() + "' from '" + in.signal() + "', which no component produces");
+    throw InputError(where + ": reads port '" + in.port() + "' from '" + in.signal() +
+                     "', which no component produces");
   throw InputError(reader.where + ": input '" + in.signal() + "' (port '" + in.port() +
                    "') is produced by no component; remap the port or add its producer");
 }
@@ -47,7 +49,10 @@ std::string remap_of(const ScenarioComponent& c, const std::string& port) {
 // "plexus::msg::Pose2D").
 bool same_message(const std::string& a, const std::string& b) {
   if (a == b) return true;
-  auto short_of = [](const std::string& s) { const auto p = s.rfind("::"); return p == std::string::npos ? s : s.substr(p + 2); };
+  auto short_of = [](const std::string& s) {
+    const auto p = s.rfind("::");
+    return p == std::string::npos ? s : s.substr(p + 2);
+  };
   return (a.find("::") == std::string::npos || b.find("::") == std::string::npos) && short_of(a) == short_of(b) &&
          msg::find_wire_type(a) == msg::find_wire_type(b);
 }
@@ -106,10 +111,10 @@ Wiring wire(const Scenario& scenario) {
         const auto ext = scenario.inputs.find(in->signal());
         SignalSpec spec;
         spec.name = in->signal();
-        spec.period_steps = ext != scenario.inputs.end() && ext->second.period_steps > 0 ? ext->second.period_steps
-                                                                                         : c.period_steps;
-        spec.producer = ext != scenario.inputs.end() && !ext->second.producer.empty() ? ext->second.producer
-                                                                                      : "(another process)";
+        spec.period_steps =
+            ext != scenario.inputs.end() && ext->second.period_steps > 0 ? ext->second.period_steps : c.period_steps;
+        spec.producer =
+            ext != scenario.inputs.end() && !ext->second.producer.empty() ? ext->second.producer : "(another process)";
         spec.message = in->message();
         it = by_name.emplace(spec.name, w.signals.size()).first;
         w.signals.push_back(std::move(spec));

@@ -15,7 +15,7 @@ struct InputBinding {
   bool delayed = false;    ///< reads the latest sample before this step (producer in same or later stage)
   std::size_t width = 0;
   std::array<std::size_t, kMaxSignalFields> field_of{};  ///< port field i = signal field field_of[i]
-  std::array<bool, kMaxSignalFields> absent{};            ///< typed ports: a field the producer does not fill (reads 0)
+  std::array<bool, kMaxSignalFields> absent{};           ///< typed ports: a field the producer does not fill (reads 0)
 };
 
 struct OutputBinding {
@@ -25,10 +25,10 @@ struct OutputBinding {
 
 struct Wiring {
   std::vector<SignalSpec> signals;
-  std::vector<ComponentKind> producer_kind;             ///< per signal
-  std::vector<std::vector<InputBinding>> inputs;        ///< per component
-  std::vector<std::vector<OutputBinding>> outputs;      ///< per component
-  std::vector<std::size_t> external;                    ///< signals produced in another process (partial scenarios)
+  std::vector<ComponentKind> producer_kind;         ///< per signal
+  std::vector<std::vector<InputBinding>> inputs;    ///< per component
+  std::vector<std::vector<OutputBinding>> outputs;  ///< per component
+  std::vector<std::size_t> external;                ///< signals produced in another process (partial scenarios)
 };
 
 /// Binds every port; throws InputError naming the component for an output signal produced

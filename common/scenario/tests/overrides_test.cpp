@@ -45,7 +45,8 @@ TEST(Overrides, KeysOutsideTheSchemaAreErrors) {
   EXPECT_EQ(set_error({"durration=2"}), "t.yaml: --set durration=2: durration: unknown key");
   EXPECT_EQ(set_error({"robots.r1.plant.z0=1"}), "t.yaml: --set robots.r1.plant.z0=1: robots.r1.plant.z0: unknown key");
   EXPECT_EQ(set_error({"robts.r1.plant.x0=1"}), "t.yaml: --set robts.r1.plant.x0=1: robts: unknown key");
-  EXPECT_EQ(set_error({"duration.x=1"}), "--set duration.x=1: duration: not a mapping or a list (or no such list element)");
+  EXPECT_EQ(set_error({"duration.x=1"}),
+            "--set duration.x=1: duration: not a mapping or a list (or no such list element)");
   EXPECT_EQ(set_error({"metrics.5.from=1"}), "--set metrics.5.from=1: metrics.5: no such list element");
 }
 

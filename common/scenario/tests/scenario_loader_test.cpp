@@ -46,9 +46,8 @@ TEST(ScenarioLoader, LoadsTheValidScenario) {
 }
 
 TEST(ScenarioLoader, RealtimeClockSettings) {
-  const Scenario sc =
-      load_scenario_text(with("seed: 5\n", "seed: 5\nclock: {mode: realtime, input_deadline_periods: 4, blind_after_s: 0.5}\n"),
-                         "t.yaml");
+  const Scenario sc = load_scenario_text(
+      with("seed: 5\n", "seed: 5\nclock: {mode: realtime, input_deadline_periods: 4, blind_after_s: 0.5}\n"), "t.yaml");
   EXPECT_EQ(sc.clock, ClockMode::realtime);
   EXPECT_EQ(sc.input_deadline_periods, 4.0);
   EXPECT_EQ(sc.blind_after_s, 0.5);
@@ -102,7 +101,8 @@ INSTANTIATE_TEST_SUITE_P(
                 "t.yaml:5: clock.rate: unknown key"},
         BadCase{"dds_vendor", with("seed: 5\n", "seed: 5\ndds: {vendor: rti}\n"),
                 "t.yaml:5: dds.vendor: expected fast or cyclone, got 'rti'"},
-        BadCase{"dds_domain", with("seed: 5\n", "seed: 5\ndds: {domain: 300}\n"), "t.yaml:5: dds.domain: must be in 0..232"},
+        BadCase{"dds_domain", with("seed: 5\n", "seed: 5\ndds: {domain: 300}\n"),
+                "t.yaml:5: dds.domain: must be in 0..232"},
         BadCase{"host_unknown_key", with("seed: 5\n", "seed: 5\nhosts: {a: {adress: x}}\n"),
                 "t.yaml:5: hosts.a.adress: unknown key"},
         BadCase{"robots_missing", "name: t\nduration: 1\nstep: 0.1\nseed: 1\n",
@@ -111,7 +111,8 @@ INSTANTIATE_TEST_SUITE_P(
                 "t.yaml:5: robots: expected a mapping, got a list"},
         BadCase{"robots_empty", "name: t\nduration: 1\nstep: 0.1\nseed: 1\nrobots: {}\n",
                 "t.yaml:5: robots: needs at least one robot"},
-        BadCase{"robot_unknown_key", with("    sensors:", "    wheels: 2\n    sensors:"), "t.yaml:10: robots.r1.wheels: unknown key"},
+        BadCase{"robot_unknown_key", with("    sensors:", "    wheels: 2\n    sensors:"),
+                "t.yaml:10: robots.r1.wheels: unknown key"},
         BadCase{"plant_missing", with("    plant:\n      type: unicycle\n      y0: -1.0\n", ""),
                 "t.yaml:7: robots.r1.plant: required key is missing"},
         BadCase{"type_unknown", with("type: unicycle", "type: bicycle"),
@@ -120,8 +121,10 @@ INSTANTIATE_TEST_SUITE_P(
                 "t.yaml:8: robots.r1.plant.type: 'measurement' is a sensor and cannot be used in a robot's plant"},
         BadCase{"service_plant", with("type: constant_command", "type: unicycle"),
                 "t.yaml:18: services.driver.type: 'unicycle' is a plant and cannot be used in services"},
-        BadCase{"param_unknown", with("y0: -1.0", "y0: -1.0\n      z0: 3"), "t.yaml:10: robots.r1.plant.z0: unknown key"},
-        BadCase{"param_type", with("y0: -1.0", "y0: [1]"), "t.yaml:9: robots.r1.plant.y0: expected a finite number, got a list"},
+        BadCase{"param_unknown", with("y0: -1.0", "y0: -1.0\n      z0: 3"),
+                "t.yaml:10: robots.r1.plant.z0: unknown key"},
+        BadCase{"param_type", with("y0: -1.0", "y0: [1]"),
+                "t.yaml:9: robots.r1.plant.y0: expected a finite number, got a list"},
         BadCase{"param_missing", with("    v: 1.0\n", ""), "t.yaml:18: services.driver.v: required key is missing"},
         BadCase{"param_range", with("noise_std: 0.1", "noise_std: -0.1"),
                 "t.yaml:15: robots.r1.sensors.gps.noise_std: must be >= 0"},
@@ -131,20 +134,26 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"rate_not_divisor", with("rate: 5", "rate: 3"),
                 "t.yaml:13: robots.r1.sensors.gps.rate: must divide the base rate 10.000000 Hz: the period must be a "
                 "whole number of steps"},
-        BadCase{"sensor_seed", with("rate: 5", "rate: 5\n        seed: -1"), "t.yaml:14: robots.r1.sensors.gps.seed: must be >= 0"},
-        BadCase{"service_robot", with("robot: r1", "robot: r2"), "t.yaml:19: services.driver.robot: no robot 'r2' in robots"},
-        BadCase{"service_host", with("robot: r1", "robot: r1\n    host: pc"), "t.yaml:20: services.driver.host: no host 'pc' in hosts"},
-        BadCase{"service_qos", with("robot: r1", "robot: r1\n    qos: ''"), "t.yaml:20: services.driver.qos: must name a QoS profile"},
+        BadCase{"sensor_seed", with("rate: 5", "rate: 5\n        seed: -1"),
+                "t.yaml:14: robots.r1.sensors.gps.seed: must be >= 0"},
+        BadCase{"service_robot", with("robot: r1", "robot: r2"),
+                "t.yaml:19: services.driver.robot: no robot 'r2' in robots"},
+        BadCase{"service_host", with("robot: r1", "robot: r1\n    host: pc"),
+                "t.yaml:20: services.driver.host: no host 'pc' in hosts"},
+        BadCase{"service_qos", with("robot: r1", "robot: r1\n    qos: ''"),
+                "t.yaml:20: services.driver.qos: must name a QoS profile"},
         BadCase{"remap_unknown_port", with("robot: r1", "robot: r1\n    remap: {command: r1/cmd2}"),
                 "t.yaml:20: services.driver.remap: 'constant_command' has no port 'command'"},
         // A remap that takes a signal away from its reader is named, not the reader it starves.
         BadCase{"input_unbound", with("robot: r1", "robot: r1\n    remap: {cmd: r1/cmd2}"),
                 "t.yaml:20: services.driver.remap.cmd: sends driver's output 'cmd' to 'r1/cmd2', so nothing produces "
                 "'r1/cmd', read by t.yaml:8: robots.r1.plant (port 'cmd')"},
-        BadCase{"input_remapped_to_nothing", with("y0: -1.0", "y0: -1.0\n      remap: {cmd: r1/nothing}"),
-                "t.yaml:10: robots.r1.plant.remap.cmd: reads port 'cmd' from 'r1/nothing', which no component produces"},
-        BadCase{"input_without_producer", with("type: constant_command\n    robot: r1\n    v: 1.0\n    omega: 0.0",
-                                               "type: circle_reference\n    robot: r1\n    radius: 1.0\n    speed: 0.5"),
+        BadCase{
+            "input_remapped_to_nothing", with("y0: -1.0", "y0: -1.0\n      remap: {cmd: r1/nothing}"),
+            "t.yaml:10: robots.r1.plant.remap.cmd: reads port 'cmd' from 'r1/nothing', which no component produces"},
+        BadCase{"input_without_producer",
+                with("type: constant_command\n    robot: r1\n    v: 1.0\n    omega: 0.0",
+                     "type: circle_reference\n    robot: r1\n    radius: 1.0\n    speed: 0.5"),
                 "t.yaml:8: robots.r1.plant: input 'r1/cmd' (port 'cmd') is produced by no component; remap the port "
                 "or add its producer"},
         BadCase{"input_field", with("fields: [x, y]", "fields: [x, z]"),
@@ -154,30 +163,40 @@ INSTANTIATE_TEST_SUITE_P(
                 "already produces"},
         BadCase{"sensor_name", with("      gps:", "      g.ps:"),
                 "t.yaml:12: robots.r1.sensors.g.ps: invalid sensor name (letters, digits, '_' and '-', at most 64)"},
-        BadCase{"metrics_not_list", with("metrics:\n  - {name: final_x, type: value_final, signal: r1/truth/state, field: x}",
-                                         "metrics: {a: 1}"),
+        BadCase{"metrics_not_list",
+                with("metrics:\n  - {name: final_x, type: value_final, signal: r1/truth/state, field: x}",
+                     "metrics: {a: 1}"),
                 "t.yaml:22: metrics: expected a list, got a mapping"},
         BadCase{"metric_type", with("type: value_final", "type: value_last"),
                 "t.yaml:23: metrics.0.type: unknown metric type 'value_last' (known: "},
         BadCase{"metric_signal", with("signal: r1/truth/state", "signal: r1/pose"),
-                "t.yaml:23: metrics.0.signal: no signal 'r1/pose' in this scenario (signals: r1/truth/state, r1/gps, r1/cmd)"},
-        BadCase{"metric_field", with("field: x}", "field: q}"), "t.yaml:23: metrics.0.field: signal 'r1/truth/state' has no field 'q'"},
-        BadCase{"metric_window", with("field: x}", "field: x, from: 2}"), "t.yaml:23: metrics.0.from: must be in [0, duration]"},
-        BadCase{"metric_unknown_key", with("field: x}", "field: x, form: 0}"), "t.yaml:23: metrics.0.form: unknown key"},
-        BadCase{"metric_twice", with("metrics:\n", "metrics:\n  - {name: final_x, type: value_max, signal: r1/truth/state, field: x}\n"),
-                "t.yaml:24: metrics.1.name: metric 'final_x' is defined twice (or is 'digest')"},
+                "t.yaml:23: metrics.0.signal: no signal 'r1/pose' in this scenario (signals: r1/truth/state, r1/gps, "
+                "r1/cmd)"},
+        BadCase{"metric_field", with("field: x}", "field: q}"),
+                "t.yaml:23: metrics.0.field: signal 'r1/truth/state' has no field 'q'"},
+        BadCase{"metric_window", with("field: x}", "field: x, from: 2}"),
+                "t.yaml:23: metrics.0.from: must be in [0, duration]"},
+        BadCase{"metric_unknown_key", with("field: x}", "field: x, form: 0}"),
+                "t.yaml:23: metrics.0.form: unknown key"},
+        BadCase{
+            "metric_twice",
+            with("metrics:\n", "metrics:\n  - {name: final_x, type: value_max, signal: r1/truth/state, field: x}\n"),
+            "t.yaml:24: metrics.1.name: metric 'final_x' is defined twice (or is 'digest')"},
         BadCase{"metric_digest", with("name: final_x, type", "name: digest, type"),
                 "t.yaml:23: metrics.0.name: metric 'digest' is defined twice (or is 'digest')"},
-        BadCase{"error_fields", with("  - {name: final_x",
-                                     "  - {name: e, type: error_max, signal: r1/gps, reference: r1/truth/state, fields: [x, "
-                                     "theta]}\n  - {name: final_x"),
+        BadCase{"error_fields",
+                with("  - {name: final_x",
+                     "  - {name: e, type: error_max, signal: r1/gps, reference: r1/truth/state, fields: [x, "
+                     "theta]}\n  - {name: final_x"),
                 "t.yaml:23: metrics.0.fields: signal 'r1/gps' has no field 'theta'"},
         BadCase{"expectation_metric", with("final_x: \"<= 2\"", "final_y: \"<= 2\""),
                 "t.yaml:25: expectations.final_y: no metric 'final_y' in metrics"},
-        BadCase{"expectation_syntax", with("\"<= 2\"", "\"about 2\""),
-                "t.yaml:25: expectations.final_x: expected '<op> <number>' with op one of <=, >=, <, >, ==; got 'about 2'"},
-        BadCase{"expectation_number", with("\"<= 2\"", "\"<= two\""),
-                "t.yaml:25: expectations.final_x: expected '<op> <number>' with op one of <=, >=, <, >, ==; got '<= two'"},
+        BadCase{
+            "expectation_syntax", with("\"<= 2\"", "\"about 2\""),
+            "t.yaml:25: expectations.final_x: expected '<op> <number>' with op one of <=, >=, <, >, ==; got 'about 2'"},
+        BadCase{
+            "expectation_number", with("\"<= 2\"", "\"<= two\""),
+            "t.yaml:25: expectations.final_x: expected '<op> <number>' with op one of <=, >=, <, >, ==; got '<= two'"},
         BadCase{"yaml_syntax", "name: [t\n", "t.yaml:2: YAML syntax error: end of sequence flow not found"}),
     [](const ::testing::TestParamInfo<BadCase>& param_info) { return std::string(param_info.param.label); });
 

@@ -2,8 +2,8 @@
 
 #include <set>
 
-#include "plexus/runtime/security_cli.hpp"
 #include <sstream>
+#include "plexus/runtime/security_cli.hpp"
 
 namespace plexus::scenario {
 
@@ -14,8 +14,9 @@ void ServiceDdsOptions::add_to(CLI::App& app) {
   app.add_option("--service", service, "Name in heartbeats and logs (default: the executable and what it hosts)");
   app.add_option("--interface", interface_address, "Address of the one interface DDS uses (default 127.0.0.1)");
   app.add_option("--peers", peers, "Comma-separated unicast discovery peers (default 127.0.0.1)");
-  app.add_option("--transport", transport,
-                 "auto (today UDP), udp, or shm (Fast DDS: shared memory with same-host Fast DDS peers, else UDP) (default auto)");
+  app.add_option(
+      "--transport", transport,
+      "auto (today UDP), udp, or shm (Fast DDS: shared memory with same-host Fast DDS peers, else UDP) (default auto)");
   rt::add_security_options(app, security, identity, governance);
 }
 

@@ -32,7 +32,8 @@ std::string ports_of(const Scenario& sc) {
   for (const auto& c : sc.components) {
     for (const auto& in : c.component->inputs())
       if (!local.count(in->signal()))
-        out += "      in   " + in->signal() + "  " + (in->message().empty() ? "(in process only)" : in->message()) + "\n";
+        out +=
+            "      in   " + in->signal() + "  " + (in->message().empty() ? "(in process only)" : in->message()) + "\n";
     for (const auto& o : c.component->outputs())
       out += "      out  " + o->signal() + "  " + (o->message().empty() ? "(in process only)" : o->message()) + "\n";
   }
@@ -72,7 +73,8 @@ std::string hosted_help(const ServiceDeclaration& service) {
   } else if (service.role == ServiceRole::host) {
     out += "Hosts any component type (plexus sim --list names them); its topics are those of the type.\n";
   } else {
-    out += "Hosts (--type; default " + types.front() + "), with the topics of its example parameters "
+    out += "Hosts (--type; default " + types.front() +
+           "), with the topics of its example parameters "
            "(deploy/params/<type>.yaml) for robot r1:\n";
     for (const auto& t : types) {
       StandaloneSpec spec;
@@ -83,7 +85,8 @@ std::string hosted_help(const ServiceDeclaration& service) {
       out += describe(spec, t + "  (" + summary_of(t) + ")");
     }
   }
-  out += "Topics are <robot>/<port> (--robot); types are the IDL messages of idl/; QoS, ranges and units: docs/topics.md.";
+  out +=
+      "Topics are <robot>/<port> (--robot); types are the IDL messages of idl/; QoS, ranges and units: docs/topics.md.";
   spdlog::set_level(level);
   return out;
 }

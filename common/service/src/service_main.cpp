@@ -34,9 +34,9 @@
 #include "plexus/scenario/plugins.hpp"
 #include "plexus/scenario/registry.hpp"
 #include "plexus/service/dds_options.hpp"
-#include "service_help.hpp"
 #include "plexus/service/service_main.hpp"
 #include "plexus/service/standalone.hpp"
+#include "service_help.hpp"
 
 namespace {
 
@@ -49,7 +49,8 @@ namespace {
 
 // Whether a service hosts a component: its own types; a plant-side service also any plant or
 // sensor; a host any type. Else the one-line reason, naming where the type runs.
-std::string hosting_error(const plexus::scenario::ServiceDeclaration& self, const plexus::scenario::ScenarioComponent& c) {
+std::string hosting_error(const plexus::scenario::ServiceDeclaration& self,
+                          const plexus::scenario::ScenarioComponent& c) {
   using namespace plexus::scenario;
   if (self.role == ServiceRole::host) return "";
   const auto& own = self.component_types;
@@ -91,7 +92,8 @@ int plexus::service::run_service(int argc, char** argv, const std::string& self)
   scenario::StandaloneSpec alone;
   alone.program = self;
   alone.robot_section = hosts_plant;
-  if (hosts_plant) alone.command_rate_hz = scenario::kDefaultCommandRateHz;  // --input-rate cmd=1000: a 1 kHz arm controller
+  if (hosts_plant)
+    alone.command_rate_hz = scenario::kDefaultCommandRateHz;  // --input-rate cmd=1000: a 1 kHz arm controller
   alone.name = self;
   // A host runs whatever --type names; a service defaults to its first type.
   if (service.role != scenario::ServiceRole::host && !service.component_types.empty())
@@ -105,18 +107,22 @@ int plexus::service::run_service(int argc, char** argv, const std::string& self)
   if (!hosts_plant) app.add_option("--type", alone.type, "Component type (default: " + alone.type + ")");
   app.add_option("--step", alone.step, "Base step in s (default: 1 / its rate; plant_simulator 0.001)");
   app.add_option("--input-rate", alone.input_rates,
-                 hosts_plant ? "cmd=HZ: the command's rate (default 100); stale after 3 periods"
-                             : "PORT=HZ: the rate an input is produced at, when not its own (staleness: 3 of its periods)");
+                 hosts_plant
+                     ? "cmd=HZ: the command's rate (default 100); stale after 3 periods"
+                     : "PORT=HZ: the rate an input is produced at, when not its own (staleness: 3 of its periods)");
   app.add_option("--set", sets, "Parameter override key=value (with --part: dotted.key=value of the part)");
   net.add_to(app);
   app.add_option("--profile", profile, "QoS profile of the lockstep topics");
-  app.add_option("--timeout", timeout, "Seconds to wait for one input (lockstep) or for the start signal (--start-signal) before failing")->check(CLI::Validator(
-      [](std::string& v) {
-        char* end = nullptr;
-        const double x = std::strtod(v.c_str(), &end);
-        return end != v.c_str() && *end == '\0' && std::isfinite(x) && x > 0.0 ? std::string() : "must be > 0 s (got " + v + ")";
-      },
-      "SECONDS > 0"));
+  app.add_option("--timeout", timeout,
+                 "Seconds to wait for one input (lockstep) or for the start signal (--start-signal) before failing")
+      ->check(CLI::Validator(
+          [](std::string& v) {
+            char* end = nullptr;
+            const double x = std::strtod(v.c_str(), &end);
+            return end != v.c_str() && *end == '\0' && std::isfinite(x) && x > 0.0 ? std::string()
+                                                                                   : "must be > 0 s (got " + v + ")";
+          },
+          "SECONDS > 0"));
   app.add_option("--mode", mode, "realtime (default) or lockstep (steps with a plexus launch clock)")
       ->check(CLI::IsMember({"lockstep", "realtime"}));
   app.add_flag("--start-signal", start_signal, "Realtime: wait for the launcher's start signal (plexus launch)");
@@ -124,11 +130,12 @@ int plexus::service::run_service(int argc, char** argv, const std::string& self)
   app.add_option("--cpu", cpu, "Realtime: pin the loop to this CPU");
   app.add_option("--log-level", log_level, "trace, debug, info, warn, error");
   std::vector<std::string> plugins;
-  app.add_option("--plugin", plugins, "Load a shared library of component or message types first (docs/sdk.md); repeatable");
+  app.add_option("--plugin", plugins,
+                 "Load a shared library of component or message types first (docs/sdk.md); repeatable");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
+    if (e.get_exit_code() == 0) return app.exit(e);                                       // --help, --version
     std::fprintf(stderr, "%s: %s (--help lists the options)\n", self.c_str(), e.what());  // one line
     return kExitBadInput;
   }
@@ -178,11 +185,12 @@ int plexus::service::run_service(int argc, char** argv, const std::string& self)
       if (app.count("--timeout")) ro.start_timeout_s = timeout;  // the longest wait for the start signal too
       distributed::RealtimeHost host(sc, hosted, *participant, profiles, ro);
       const auto r = host.run(g_stop);
-      spdlog::info("ran {} ticks: {} holds, {} stale and {} late input reads, {} refused samples, jitter p99 {:.1f} us, "
-                   "{} overruns, {} blind estimator steps; {} loop iterations, compute p99 {:.1f} us, "
-                   "{} estimator steps run after their tick, {} late samples dropped or bridged",
-                   r.ticks, r.holds, r.stale_inputs, r.late_inputs, r.rejected_inputs, r.loop.jitter_p99_us, r.loop.overruns,
-                   r.blind_steps, r.loop.iterations, r.loop.compute_p99_us, r.deferred_steps, r.dropped_late_samples);
+      spdlog::info(
+          "ran {} ticks: {} holds, {} stale and {} late input reads, {} refused samples, jitter p99 {:.1f} us, "
+          "{} overruns, {} blind estimator steps; {} loop iterations, compute p99 {:.1f} us, "
+          "{} estimator steps run after their tick, {} late samples dropped or bridged",
+          r.ticks, r.holds, r.stale_inputs, r.late_inputs, r.rejected_inputs, r.loop.jitter_p99_us, r.loop.overruns,
+          r.blind_steps, r.loop.iterations, r.loop.compute_p99_us, r.deferred_steps, r.dropped_late_samples);
       return exit_within(0, kTeardownDeadlineS, self);  // armed before the participant is deleted
     }
     distributed::LockstepHost host(sc, hosted, *participant, profiles.get(profile), {.timeout_s = timeout});

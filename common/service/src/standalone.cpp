@@ -51,7 +51,8 @@ Scenario load_standalone(const StandaloneSpec& s, const std::vector<std::string>
   }
   // The robot's command at its default rate, unless --input-rate gave it (as cmd or r1/cmd).
   const std::string command = s.robot + "/cmd";
-  if (s.robot_section && s.command_rate_hz > 0.0 && !std::as_const(inputs)[command]) inputs[command]["rate"] = s.command_rate_hz;
+  if (s.robot_section && s.command_rate_hz > 0.0 && !std::as_const(inputs)[command])
+    inputs[command]["rate"] = s.command_rate_hz;
   if (inputs.size() > 0) root["inputs"] = inputs;
   return load_scenario_tree(root, origin, overrides, {.partial = true});
 }

@@ -74,8 +74,8 @@ robots:
   EXPECT_EQ(r.sensors[static_cast<std::size_t>(r.sensor_by_id[0x10])].spec->name, "r1/position");
   EXPECT_EQ(r.sensor_by_id[0x20], -1);
   EXPECT_EQ(r.command.layout->id, 0x80);
-  EXPECT_EQ(r.command.period_ns, 20'000'000);       // 50 Hz
-  EXPECT_EQ(r.command.deadline_ns, 60'000'000);     // 3 periods
+  EXPECT_EQ(r.command.period_ns, 20'000'000);    // 50 Hz
+  EXPECT_EQ(r.command.deadline_ns, 60'000'000);  // 3 periods
 }
 
 TEST_F(Routes, BalancingRobotRoutesEveryTopic) {

@@ -19,12 +19,15 @@ Command add_launch_command(CLI::App& root) {
   c.app = root.add_subcommand("launch", "Run a scenario distributed over DDS (lockstep), one process per service");
   c.app->add_option("scenario", o->scenario, "Scenario file (YAML; required but with the internal --remote)");
   c.app->add_option("--host", o->host, "Start only the processes assigned to this host of the scenario");
-  c.app->add_option("--dds", o->dds, "DDS vendor of the clock and of every process without a `dds` key in the scenario (default: dds.vendor, else fast)");
+  c.app->add_option("--dds", o->dds,
+                    "DDS vendor of the clock and of every process without a `dds` key in the scenario (default: "
+                    "dds.vendor, else fast)");
   c.app->add_option("--transport", o->transport,
-                    "auto, udp or shm: between processes of one host (docs/runtime.md, Transports; default: dds.transport, else auto)");
+                    "auto, udp or shm: between processes of one host (docs/runtime.md, Transports; default: "
+                    "dds.transport, else auto)");
   c.app->add_option("--kill", o->kills, "Fault injection (realtime): SIGKILL PROCESS at SECONDS, as PROCESS@SECONDS");
   c.app->add_option("--external", o->externals,
-                     "Do not start PROCESS: plexus replay or a hardware bridge provides its topics (repeatable)");
+                    "Do not start PROCESS: plexus replay or a hardware bridge provides its topics (repeatable)");
   c.app->add_option("--record", o->record,
                     "Lockstep: write every signal sample the clock receives to this recording (plexus replay)");
   c.app->add_option("--vendor", o->vendors, "Vendor of one process: PROCESS=fast|cyclone (repeatable)");
@@ -38,14 +41,20 @@ Command add_launch_command(CLI::App& root) {
   c.app->add_flag("--quiet,-q", o->quiet, "No live status line");
   c.app->add_flag("--strict", o->strict,
                   "Realtime: end the run (exit 2) when a loop of the scenario (loops:) cannot fit its timing budget");
-  c.app->add_flag("--report", o->report, "Then plot the run and print its metrics against the expectations (plexus report)");
-  c.app->add_option("--ssh-config", o->ssh_config,
-                    "Hosts reached over ssh (hosts.<h>.ssh): use this ssh configuration file (ssh -F; default ~/.ssh/config)");
-  c.app->add_flag("--allow-clock-offset", o->allow_clock_offset,
-                  "Realtime over ssh hosts: run even when a host's clock is beyond the offset bound (docs/distributed.md)");
-  c.app->add_flag("--remote", o->remote, "Internal: the share of one host, started over ssh by plexus launch")->group("");
-  c.app->add_option("--inject-clock-offset", o->clock_injections,
-                    "Tests: HOST=SECONDS added to that host's clock readings in the offset exchange")->group("");
+  c.app->add_flag("--report", o->report,
+                  "Then plot the run and print its metrics against the expectations (plexus report)");
+  c.app->add_option(
+      "--ssh-config", o->ssh_config,
+      "Hosts reached over ssh (hosts.<h>.ssh): use this ssh configuration file (ssh -F; default ~/.ssh/config)");
+  c.app->add_flag(
+      "--allow-clock-offset", o->allow_clock_offset,
+      "Realtime over ssh hosts: run even when a host's clock is beyond the offset bound (docs/distributed.md)");
+  c.app->add_flag("--remote", o->remote, "Internal: the share of one host, started over ssh by plexus launch")
+      ->group("");
+  c.app
+      ->add_option("--inject-clock-offset", o->clock_injections,
+                   "Tests: HOST=SECONDS added to that host's clock readings in the offset exchange")
+      ->group("");
   c.run = [o] { return run_launch(*o); };
   return c;
 }

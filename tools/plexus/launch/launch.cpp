@@ -4,11 +4,11 @@
 #include <cstdio>
 
 #include "child_process.hpp"
-#include "run_result.hpp"
-#include "stages.hpp"
 #include "plexus/base/clock.hpp"
 #include "plexus/base/teardown_deadline.hpp"
 #include "plexus/evaluation/run_folder.hpp"
+#include "run_result.hpp"
+#include "stages.hpp"
 
 namespace plexus::cli {
 

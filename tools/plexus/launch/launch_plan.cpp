@@ -1,8 +1,8 @@
 #include "launch_plan.hpp"
 
 #include <algorithm>
-#include <map>
 #include <filesystem>
+#include <map>
 #include <set>
 
 #include "plexus/base/input_error.hpp"
@@ -47,8 +47,8 @@ void check_process_groups(const scenario::Scenario& sc) {
       if (c.process.rfind(program, 0) == 0)
         throw InputError(key + ": '" + c.process + "' is the name of a plant-side process (" + program + ")");
     for (const auto& other : sc.components)
-      if (other.component->name() == c.process && other.process != c.process && other.kind != scenario::ComponentKind::plant &&
-          other.kind != scenario::ComponentKind::sensor)
+      if (other.component->name() == c.process && other.process != c.process &&
+          other.kind != scenario::ComponentKind::plant && other.kind != scenario::ComponentKind::sensor)
         throw InputError(key + ": '" + c.process + "' is the name of service " + other.where +
                          ", which runs in a process of its own");
     auto [it, first] = first_of.emplace(c.process, &c);
@@ -125,7 +125,7 @@ std::vector<Process> plan(const scenario::Scenario& sc, const std::string& host)
   std::map<HostProgram, std::string> robots_by_host;                    // (host, program) -> "r1,r2"
   std::map<HostProgram, std::vector<std::string>> robot_names_by_host;  // (host, program) -> {r1, r2}
   std::map<HostProgram, std::string> dds_by_host;                       // (host, program) -> the robots' `dds` key
-  std::vector<Process> sources;                       // robots fed by a bridge or a replay
+  std::vector<Process> sources;                                         // robots fed by a bridge or a replay
   for (const auto& c : sc.components) {
     if (!here(c.host)) continue;
     const std::size_t index = static_cast<std::size_t>(&c - sc.components.data());
@@ -152,9 +152,11 @@ std::vector<Process> plan(const scenario::Scenario& sc, const std::string& host)
       robot_names_by_host[key].push_back(robot);
       auto [it, first_robot] = dds_by_host.emplace(key, c.dds);
       if (!first_robot && it->second != c.dds)
-        throw InputError(c.where + ": the robots on one host share one " + key.second + " process, so their `dds` keys "
-                         "must agree ('" + c.dds + "' for " + robot + ", '" + it->second + "' for " +
-                         list.substr(0, list.rfind(',')) + ")");
+        throw InputError(c.where + ": the robots on one host share one " + key.second +
+                         " process, so their `dds` keys "
+                         "must agree ('" +
+                         c.dds + "' for " + robot + ", '" + it->second + "' for " + list.substr(0, list.rfind(',')) +
+                         ")");
     } else if (c.kind != scenario::ComponentKind::sensor) {
       join_group(procs, c, c.component->name(), {index}, scenario::executable_for(c.type));
     }
@@ -229,8 +231,12 @@ std::vector<std::string> replay_args(const scenario::Scenario& sc, const Process
     if (producer != sc.components.end() && physical(*producer) && s.name.rfind(robot + "/", 0) == 0)
       topics += (topics.empty() ? "" : ",") + s.name;
   }
-  return {"replay", sc.sources.at(robot).recording, "--topics", topics, "--restamp", "--service", p.service(),
-          "--wait", "10", "--linger", "0"};
+  return {"replay",    sc.sources.at(robot).recording,
+          "--topics",  topics,
+          "--restamp", "--service",
+          p.service(), "--wait",
+          "10",        "--linger",
+          "0"};
 }
 
 nlohmann::ordered_json process_table(const std::vector<Process>& procs) {

@@ -4,9 +4,9 @@
 
 #include <sys/types.h>
 
-#include <nlohmann/json.hpp>
 #include <yaml-cpp/yaml.h>
 #include <cstddef>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -29,8 +29,8 @@ struct Process {
   int64_t restart_at_ns = 0;      ///< monotonic time of a pending restart (0: none)
   std::vector<std::string> args;  ///< as started, to restart it the same way
   int restarts = 0;
-  int priority = 0;  ///< realtime: SCHED_FIFO priority of its loop (scenario `priority`; 0: none)
-  int cpu = -1;      ///< realtime: the CPU its loop is pinned to (scenario `cpu`; -1: none)
+  int priority = 0;        ///< realtime: SCHED_FIFO priority of its loop (scenario `priority`; 0: none)
+  int cpu = -1;            ///< realtime: the CPU its loop is pinned to (scenario `cpu`; -1: none)
   bool has_plant = false;  ///< a loop group with a robot's plant: never restarted
 
   /// The service name the process reports in its heartbeats and DDS participant.

@@ -43,14 +43,16 @@ nlohmann::ordered_json LaunchSecurity::to_json() const {
   j["pki"] = pki;
   j["governance"] = launcher.governance;
   nlohmann::ordered_json ids = nlohmann::ordered_json::object();
-  ids[kLauncherIdentity] = {{"identity", launcher.identity}, {"subject", rt::certificate_subject(launcher.certificate)}};
+  ids[kLauncherIdentity] = {{"identity", launcher.identity},
+                            {"subject", rt::certificate_subject(launcher.certificate)}};
   for (const auto& [process, s] : processes)
     ids[process] = {{"identity", s.identity}, {"subject", rt::certificate_subject(s.certificate)}};
   j["identities"] = ids;
   return j;
 }
 
-LaunchSecurity plan_security(const scenario::Scenario& sc, const std::vector<Process>& all, const std::string& launcher_vendor) {
+LaunchSecurity plan_security(const scenario::Scenario& sc, const std::vector<Process>& all,
+                             const std::string& launcher_vendor) {
   LaunchSecurity out;
   const auto& sec = sc.security;
   if (!sec.enabled) return out;
@@ -60,10 +62,12 @@ LaunchSecurity plan_security(const scenario::Scenario& sc, const std::vector<Pro
   std::string names = kLauncherIdentity;
   for (const auto& p : all) names += ", " + p.name;
   for (const auto& [process, where] : sec.identity_where)
-    if (process != kLauncherIdentity && std::none_of(all.begin(), all.end(), [&](const Process& p) { return p.name == process; }))
+    if (process != kLauncherIdentity &&
+        std::none_of(all.begin(), all.end(), [&](const Process& p) { return p.name == process; }))
       throw InputError(where + ": no process '" + process + "' in this scenario (processes: " + names + ")");
   std::error_code ec;
-  if (!std::filesystem::is_directory(sec.pki, ec)) throw InputError(sec.where + ".pki: " + sec.pki + ": no such folder");
+  if (!std::filesystem::is_directory(sec.pki, ec))
+    throw InputError(sec.where + ".pki: " + sec.pki + ": no such folder");
   if (!sec.governance.empty() && !std::filesystem::is_regular_file(sec.governance, ec))
     throw InputError(sec.where + ".governance: " + sec.governance + ": no such file");
   auto resolve = [&](const std::string& process) {
@@ -74,7 +78,8 @@ LaunchSecurity plan_security(const scenario::Scenario& sc, const std::vector<Pro
     try {
       rt::check_security_files(s, origin);
     } catch (const InputError& e) {
-      if (named == sec.identities.end() && !std::filesystem::is_directory(std::filesystem::path(sec.pki) / "identities" / id, ec))
+      if (named == sec.identities.end() &&
+          !std::filesystem::is_directory(std::filesystem::path(sec.pki) / "identities" / id, ec))
         throw InputError(std::string(e.what()) + " (process '" + process + "' uses identity '" + id +
                          "' unless security.identities names another; tools/security/make_test_pki.sh PKI " + id +
                          " creates it)");
@@ -95,13 +100,14 @@ LaunchSecurity plan_security(const scenario::Scenario& sc, const std::vector<Pro
   for (const auto& f : fast)
     for (const auto& c : cyclone)
       if (f.rank <= c.rank)
-        throw InputError(sec.where + ": " + describe(f) + " and " + describe(c) + " cannot authenticate: " +
-                         (f.rank < c.rank ? "the Fast DDS side's certificate subject ranks first (DDS Security 1.1, 9.3.3), "
-                                            "so it starts the handshake"
-                                          : "their certificate subjects rank equal, so the Fast DDS side may start the handshake") +
-                         ", and Fast DDS 2.9 sends a DH+MODP-2048-256 public key that Cyclone DDS 0.10 cannot decode (it "
-                         "expects ASN.1; cyclonedds#1547, Fast-DDS#3802); give every Cyclone DDS participant an identity "
-                         "that ranks first (make_test_pki.sh PKI NAME:cyclone, docs/security.md) or run both on one vendor");
+        throw InputError(
+            sec.where + ": " + describe(f) + " and " + describe(c) + " cannot authenticate: " +
+            (f.rank < c.rank ? "the Fast DDS side's certificate subject ranks first (DDS Security 1.1, 9.3.3), "
+                               "so it starts the handshake"
+                             : "their certificate subjects rank equal, so the Fast DDS side may start the handshake") +
+            ", and Fast DDS 2.9 sends a DH+MODP-2048-256 public key that Cyclone DDS 0.10 cannot decode (it "
+            "expects ASN.1; cyclonedds#1547, Fast-DDS#3802); give every Cyclone DDS participant an identity "
+            "that ranks first (make_test_pki.sh PKI NAME:cyclone, docs/security.md) or run both on one vendor");
   return out;
 }
 

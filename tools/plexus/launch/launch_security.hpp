@@ -45,6 +45,7 @@ std::string default_identity(const std::string& process);
 /// (its DH public key is raw bytes, Cyclone expects ASN.1), so every Fast DDS participant must
 /// rank after every Cyclone DDS one; otherwise the deployment is refused here, naming the pair,
 /// instead of running with participants that never authenticate. Throws InputError (exit 2).
-LaunchSecurity plan_security(const scenario::Scenario& sc, const std::vector<Process>& all, const std::string& launcher_vendor);
+LaunchSecurity plan_security(const scenario::Scenario& sc, const std::vector<Process>& all,
+                             const std::string& launcher_vendor);
 
 }  // namespace plexus::cli

@@ -25,7 +25,8 @@ LineReader::Result LineReader::next(std::string& line, int timeout_ms) {
     }
     int wait = -1;
     if (timeout_ms >= 0) {
-      const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(end - std::chrono::steady_clock::now()).count();
+      const auto left =
+          std::chrono::duration_cast<std::chrono::milliseconds>(end - std::chrono::steady_clock::now()).count();
       wait = left > 0 ? static_cast<int>(left) : 0;
     }
     pollfd p{fd_, POLLIN, 0};

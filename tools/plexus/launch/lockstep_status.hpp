@@ -9,9 +9,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "status_console.hpp"
 #include "plexus/distributed/lockstep.hpp"
 #include "plexus/scenario/scenario.hpp"
+#include "status_console.hpp"
 
 namespace plexus::cli {
 

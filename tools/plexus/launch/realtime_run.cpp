@@ -58,9 +58,9 @@ class RealtimeMonitor {
   StatusConsole& console_;
   scenario::StepExecutor wiring_;
   const std::vector<scenario::SignalSpec>& signals_;
-  std::vector<std::size_t> commands_;    // the signals the plants read from other processes
-  std::vector<int64_t> origin_offset_;   // by signal: the clock offset of its origin's host
-  std::vector<bool> corrected_;          // by signal: origin_offset_ applies
+  std::vector<std::size_t> commands_;   // the signals the plants read from other processes
+  std::vector<int64_t> origin_offset_;  // by signal: the clock offset of its origin's host
+  std::vector<bool> corrected_;         // by signal: origin_offset_ applies
   std::vector<std::unique_ptr<distributed::WireSubscriber>> subs_;
   std::vector<rt::Subscriber<msg::Heartbeat>> beats_;
   std::optional<rt::Publisher<msg::ClockStep>> go_;  // the start signal
@@ -71,7 +71,7 @@ class RealtimeMonitor {
   std::vector<uint32_t> pid_of_;
   double heartbeat_after_s_ = -1;  // first heartbeat from a new pid (a restarted process) after the kill
   int64_t t0_ = 0;
-  double safe_after_s_ = -1;                    // first all-zero command after an injected kill
+  double safe_after_s_ = -1;                   // first all-zero command after an injected kill
   std::vector<double> safe_after_by_command_;  // the same, per command signal
   scenario::SignalSample sample_;
   std::size_t bad_field_ = 0;
@@ -171,9 +171,10 @@ void RealtimeMonitor::wait_for_start(double start_timeout_s, double ready_wait_s
     if (silent.empty() && ready_by == 0) ready_by = now + static_cast<int64_t>(ready_wait_s * 1e9);
     if (silent.empty() && matching.empty()) break;
     if (silent.empty() && now > ready_by) {
-      spdlog::warn("realtime: starting with inputs not yet matched to their writers after {} s: {} (they hold "
-                   "their safe output until the inputs arrive)",
-                   scenario::format_number(ready_wait_s), matching);
+      spdlog::warn(
+          "realtime: starting with inputs not yet matched to their writers after {} s: {} (they hold "
+          "their safe output until the inputs arrive)",
+          scenario::format_number(ready_wait_s), matching);
       break;
     }
     if (stop) throw distributed::LockstepError("realtime: stopped before the start");
@@ -315,16 +316,12 @@ nlohmann::ordered_json RealtimeMonitor::fault_record() const {
 RealtimeResult RealtimeMonitor::result() {
   for (std::size_t i = 0; i < procs_.size(); ++i) {
     const auto& hb = last_[i];
-    res_.services[procs_[i].service()] = {{"loop_count", hb.loop_count()},
-                                          {"overruns", hb.overruns()},
-                                          {"stale_input_reads", hb.stale_inputs()},
-                                          {"late_input_reads", hb.late_inputs()},
-                                          {"rejected_inputs", hb.rejected_inputs()},
-                                          {"jitter_p50_us", hb.jitter_p50_us()},
-                                          {"jitter_p99_us", hb.jitter_p99_us()},
-                                          {"jitter_max_us", hb.jitter_max_us()},
-                                          {"compute_p50_us", hb.compute_p50_us()},
-                                          {"compute_p99_us", hb.compute_p99_us()}};
+    res_.services[procs_[i].service()] = {
+        {"loop_count", hb.loop_count()},           {"overruns", hb.overruns()},
+        {"stale_input_reads", hb.stale_inputs()},  {"late_input_reads", hb.late_inputs()},
+        {"rejected_inputs", hb.rejected_inputs()}, {"jitter_p50_us", hb.jitter_p50_us()},
+        {"jitter_p99_us", hb.jitter_p99_us()},     {"jitter_max_us", hb.jitter_max_us()},
+        {"compute_p50_us", hb.compute_p50_us()},   {"compute_p99_us", hb.compute_p99_us()}};
   }
   if (fault_.killed_ns.load()) res_.fault = fault_record();
   if (budget_) res_.loops = budget_->record();

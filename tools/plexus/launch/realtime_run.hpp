@@ -6,17 +6,17 @@
 #include <atomic>
 #include <cstdint>
 #include <map>
-#include <string>
 #include <nlohmann/json.hpp>
+#include <string>
 #include <vector>
 
 #include "launch_plan.hpp"
-#include "status_console.hpp"
-#include "timing_budget.hpp"
 #include "plexus/runtime/participant.hpp"
 #include "plexus/runtime/qos.hpp"
-#include "plexus/scenario/signal_log.hpp"
 #include "plexus/scenario/scenario.hpp"
+#include "plexus/scenario/signal_log.hpp"
+#include "status_console.hpp"
+#include "timing_budget.hpp"
 
 namespace plexus::cli {
 

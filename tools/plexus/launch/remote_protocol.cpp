@@ -9,15 +9,24 @@
 namespace plexus::cli {
 
 std::string RemoteRequest::to_line() const {
-  const nlohmann::json j = {{"host", host},       {"scenario_text", scenario_text}, {"scenario_origin", scenario_origin},
-                            {"sets", sets},       {"vendors", vendors},             {"externals", externals},
-                            {"dds", dds},         {"qos_file", qos_file},           {"out", out},
-                            {"domain", domain},   {"timeout", timeout},             {"clock_injection_ns", clock_injection_ns}};
+  const nlohmann::json j = {{"host", host},
+                            {"scenario_text", scenario_text},
+                            {"scenario_origin", scenario_origin},
+                            {"sets", sets},
+                            {"vendors", vendors},
+                            {"externals", externals},
+                            {"dds", dds},
+                            {"qos_file", qos_file},
+                            {"out", out},
+                            {"domain", domain},
+                            {"timeout", timeout},
+                            {"clock_injection_ns", clock_injection_ns}};
   return "request " + j.dump();
 }
 
 RemoteRequest RemoteRequest::from_line(const std::string& line, const std::string& where) {
-  if (line.rfind("request ", 0) != 0) throw InputError(where + ": expected the launcher's request, got '" + line.substr(0, 40) + "'");
+  if (line.rfind("request ", 0) != 0)
+    throw InputError(where + ": expected the launcher's request, got '" + line.substr(0, 40) + "'");
   try {
     const auto j = nlohmann::json::parse(line.substr(8));
     RemoteRequest r;

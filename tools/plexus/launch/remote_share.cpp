@@ -22,9 +22,9 @@
 #include "launch_plan.hpp"
 #include "line_reader.hpp"
 #include "piped_process.hpp"
-#include "preflight.hpp"
 #include "plexus/base/clock.hpp"
 #include "plexus/base/input_error.hpp"
+#include "preflight.hpp"
 
 namespace plexus::cli {
 namespace {
@@ -41,7 +41,7 @@ struct RemoteShares::Impl {
     std::string name, destination, address;
     PipedProcess proc;
     std::unique_ptr<LineReader> out, err;
-    std::vector<std::string> err_tail;  // its last stderr lines, for the error message
+    std::vector<std::string> err_tail;   // its last stderr lines, for the error message
     std::vector<std::string> processes;  // service names of its processes (log prefixes)
     ClockOffset offset;
     double ready_s = 0;
@@ -255,15 +255,18 @@ void RemoteShares::preflight(const std::string& version, const std::string& dige
   for (auto& h : m.hosts) {
     if (!m.next_line(*h, line, deadline)) {
       if (monotonic_ns() >= deadline)
-        m.fail_preflight(m.who(*h) + ": no answer within " + std::to_string(static_cast<int>(m.o.answer_timeout_s)) + " s");
+        m.fail_preflight(m.who(*h) + ": no answer within " + std::to_string(static_cast<int>(m.o.answer_timeout_s)) +
+                         " s");
       m.fail_preflight(m.why_ended(*h));
     }
     int protocol = 0;
     std::string theirs;
     if (!parse_hello(line, protocol, theirs))
-      m.fail_preflight(m.who(*h) + ": the program there is not a plexus launcher (it said '" + line.substr(0, 60) + "')");
+      m.fail_preflight(m.who(*h) + ": the program there is not a plexus launcher (it said '" + line.substr(0, 60) +
+                       "')");
     if (theirs != version || protocol != kRemoteProtocol)
-      m.fail_preflight(m.who(*h) + ": plexus " + theirs + " there, " + version + " here: install the same build on every host");
+      m.fail_preflight(m.who(*h) + ": plexus " + theirs + " there, " + version +
+                       " here: install the same build on every host");
   }
   // 2. The scenario, sent rather than assumed present; the host loads it and checks its address.
   for (auto& h : m.hosts) {
@@ -326,7 +329,8 @@ void RemoteShares::check_offsets(double base_step_s, bool realtime, bool allow) 
     std::snprintf(msg, sizeof msg,
                   "its clock is %+.3f ms from this one's, beyond the realtime bound of %.3f ms (a tenth of the %.3g ms "
                   "step): synchronise the clocks (NTP, PTP) or pass --allow-clock-offset",
-                  static_cast<double>(h->offset.offset_ns) * 1e-6, static_cast<double>(bound) * 1e-6, base_step_s * 1e3);
+                  static_cast<double>(h->offset.offset_ns) * 1e-6, static_cast<double>(bound) * 1e-6,
+                  base_step_s * 1e3);
     if (!allow) {
       impl_->close_all_and_reap(5.0);
       throw InputError(impl_->who(*h) + ": " + msg);
@@ -393,7 +397,8 @@ void RemoteShares::stop(double grace_s) {
   }
   std::unique_lock lk(m.mu);
   const auto all_reaped = [&] {
-    return std::all_of(m.hosts.begin(), m.hosts.end(), [](const auto& h) { return h->reaped || !h->monitor.joinable(); });
+    return std::all_of(m.hosts.begin(), m.hosts.end(),
+                       [](const auto& h) { return h->reaped || !h->monitor.joinable(); });
   };
   if (!m.reaped_cv.wait_for(lk, std::chrono::duration<double>(grace_s), all_reaped)) {
     for (auto& h : m.hosts)
@@ -437,7 +442,8 @@ std::unique_ptr<RemoteShares> preflight_hosts(const scenario::Scenario& sc, cons
   ro.request.scenario_text.assign(std::istreambuf_iterator<char>(text), {});
   ro.request.scenario_origin = a.scenario_file;
   ro.request.sets = a.sets, ro.request.vendors = a.vendors, ro.request.externals = a.externals;
-  ro.request.dds = a.dds, ro.request.qos_file = a.qos_file, ro.request.domain = a.domain, ro.request.timeout = a.timeout;
+  ro.request.dds = a.dds, ro.request.qos_file = a.qos_file, ro.request.domain = a.domain,
+  ro.request.timeout = a.timeout;
   ro.out = a.out;
   for (const auto& inj : a.clock_injections) {
     const auto eq = inj.find('=');

@@ -17,18 +17,18 @@
 
 #include "clock_offset.hpp"
 #include "log_relay.hpp"
+#include "plexus/scenario/scenario.hpp"
 #include "remote_protocol.hpp"
 #include "ssh_command.hpp"
-#include "plexus/scenario/scenario.hpp"
 
 namespace plexus::cli {
 
 struct RemoteShareOptions {
   SshOptions ssh;
   std::string ssh_program = "ssh";
-  std::string local_plexus;     ///< the plexus a host runs when it names none (this one's path)
-  RemoteRequest request;        ///< the common part; host and out are set per host
-  std::string out;              ///< --out given here: a host writes its folder to <out>-<host> (else its default)
+  std::string local_plexus;  ///< the plexus a host runs when it names none (this one's path)
+  RemoteRequest request;     ///< the common part; host and out are set per host
+  std::string out;           ///< --out given here: a host writes its folder to <out>-<host> (else its default)
   std::map<std::string, int64_t> clock_injection_ns;  ///< tests: --inject-clock-offset HOST=SECONDS
   int clock_samples = 16;
   double answer_timeout_s = 30.0;  ///< connect, start plexus there and load the scenario

@@ -14,7 +14,8 @@ std::string remote_launch_command(const scenario::Scenario::HostAccess& access, 
   if (access.plexus.empty()) return cmd + "exec " + shell_quote(local_plexus) + " launch --remote";
   // The host's `plexus:` is its plexus executable, or the prefix it is installed in (bin/plexus
   // there): the remote shell tells which.
-  return cmd + "P=" + shell_quote(access.plexus) + "; if [ -d \"$P\" ]; then P=\"$P/bin/plexus\"; fi; exec \"$P\" launch --remote";
+  return cmd + "P=" + shell_quote(access.plexus) +
+         "; if [ -d \"$P\" ]; then P=\"$P/bin/plexus\"; fi; exec \"$P\" launch --remote";
 }
 
 std::vector<std::string> ssh_arguments(const SshOptions& o, const std::string& destination,

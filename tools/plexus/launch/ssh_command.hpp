@@ -11,10 +11,10 @@
 namespace plexus::cli {
 
 struct SshOptions {
-  std::string config_file;         ///< ssh -F FILE (empty: the user's ~/.ssh/config)
-  int connect_timeout_s = 10;      ///< ssh ConnectTimeout
-  int alive_interval_s = 1;        ///< ServerAliveInterval: probes the link every second
-  int alive_count_max = 3;         ///< ServerAliveCountMax: a link silent for 3 probes is dead
+  std::string config_file;     ///< ssh -F FILE (empty: the user's ~/.ssh/config)
+  int connect_timeout_s = 10;  ///< ssh ConnectTimeout
+  int alive_interval_s = 1;    ///< ServerAliveInterval: probes the link every second
+  int alive_count_max = 3;     ///< ServerAliveCountMax: a link silent for 3 probes is dead
 };
 
 /// Single-quotes `s` for a POSIX shell (the remote login shell runs the command).

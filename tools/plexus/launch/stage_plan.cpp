@@ -4,12 +4,12 @@
 #include <map>
 #include <set>
 
-#include "preflight.hpp"
-#include "stages.hpp"
 #include "plexus/base/clock.hpp"
 #include "plexus/base/input_error.hpp"
 #include "plexus/runtime/transport.hpp"
 #include "plexus/runtime/vendor.hpp"
+#include "preflight.hpp"
+#include "stages.hpp"
 
 namespace plexus::cli {
 namespace {
@@ -127,9 +127,9 @@ LaunchSecurity security_of(const LaunchOptions& o, const LaunchPlan& plan) {
                                     [&](const std::string& v) { return v.rfind(p.name + "=", 0) == 0; });
     p.vendor = named != o.vendors.end() ? named->substr(p.name.size() + 1) : p.vendor.empty() ? plan.vendor : p.vendor;
   }
-  all_vendors.erase(std::remove_if(all_vendors.begin(), all_vendors.end(),
-                                   [&](const Process& p) { return plan.is_external(p); }),
-                    all_vendors.end());
+  all_vendors.erase(
+      std::remove_if(all_vendors.begin(), all_vendors.end(), [&](const Process& p) { return plan.is_external(p); }),
+      all_vendors.end());
   try {
     return plan_security(plan.sc, all_vendors, plan.vendor);
   } catch (const InputError& e) {  // a section set by --set has no line: name the override

@@ -8,12 +8,12 @@
 #include <thread>
 
 #include "lockstep_status.hpp"
-#include "timing_budget.hpp"
-#include "stages.hpp"
 #include "plexus/base/clock.hpp"
 #include "plexus/base/input_error.hpp"
 #include "plexus/distributed/lockstep.hpp"
 #include "plexus/evaluation/run_folder.hpp"
+#include "stages.hpp"
+#include "timing_budget.hpp"
 
 namespace plexus::cli {
 namespace {

@@ -7,14 +7,14 @@
 #include <string>
 #include <vector>
 
-#include "preflight.hpp"
-#include "run_result.hpp"
-#include "stages.hpp"
 #include "plexus/base/clock.hpp"
 #include "plexus/base/input_error.hpp"
 #include "plexus/base/logging.hpp"
-#include "plexus/runtime/vendor.hpp"
 #include "plexus/evaluation/run_folder.hpp"
+#include "plexus/runtime/vendor.hpp"
+#include "preflight.hpp"
+#include "run_result.hpp"
+#include "stages.hpp"
 
 namespace plexus::cli {
 namespace {
@@ -104,7 +104,8 @@ void start_launch(const LaunchOptions& o, LaunchPlan& plan, LaunchRun& run) {
   run.participant = launcher_participant(o, plan);
   auto kill_at = parse_kills(o.kills, plan.procs, plan.realtime);
   open_run_folder(o, plan, run);
-  run.supervisor.emplace(plan.procs, *run.relay, run.fault, run.run_active, g_launch_stop, plan.realtime, std::move(kill_at));
+  run.supervisor.emplace(plan.procs, *run.relay, run.fault, run.run_active, g_launch_stop, plan.realtime,
+                         std::move(kill_at));
   // Each process gets its own part of the scenario and builds only that (launch_plan.hpp).
   const std::filesystem::path parts_dir = std::filesystem::path(run.run_dir) / "parts";
   std::error_code ec;

@@ -2,9 +2,9 @@
 // the run folder (finish_run), the report with --report, the exit code (stages.hpp).
 #include <cstdio>
 
+#include "plexus/evaluation/run_folder.hpp"
 #include "run_result.hpp"
 #include "stages.hpp"
-#include "plexus/evaluation/run_folder.hpp"
 
 namespace plexus::cli {
 namespace {

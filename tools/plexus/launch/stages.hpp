@@ -27,6 +27,10 @@
 #include "launch_plan.hpp"
 #include "launch_security.hpp"
 #include "log_relay.hpp"
+#include "plexus/runtime/participant.hpp"
+#include "plexus/runtime/qos.hpp"
+#include "plexus/scenario/scenario.hpp"
+#include "plexus/scenario/signal_log.hpp"
 #include "realtime_run.hpp"
 #include "remote_protocol.hpp"
 #include "remote_session.hpp"
@@ -34,10 +38,6 @@
 #include "signal_recorder.hpp"
 #include "status_console.hpp"
 #include "supervisor.hpp"
-#include "plexus/runtime/participant.hpp"
-#include "plexus/runtime/qos.hpp"
-#include "plexus/scenario/scenario.hpp"
-#include "plexus/scenario/signal_log.hpp"
 
 namespace plexus::cli {
 

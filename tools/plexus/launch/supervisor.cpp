@@ -23,8 +23,7 @@ std::map<std::string, double> parse_kills(const std::vector<std::string>& kills,
     double when = -1;
     try {
       when = at == std::string::npos ? -1 : std::stod(k.substr(at + 1));
-    } catch (const std::exception&) {
-    }
+    } catch (const std::exception&) {}
     if (when < 0) throw InputError("--kill " + k + ": expected PROCESS@SECONDS");
     const std::string name = k.substr(0, at);
     if (std::none_of(procs.begin(), procs.end(), [&](const Process& p) { return p.name == name; }))

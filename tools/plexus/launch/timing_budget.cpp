@@ -1,10 +1,10 @@
 #include "timing_budget.hpp"
 
-#include <algorithm>
 #include <spdlog/spdlog.h>
+#include <algorithm>
 
-#include "plexus/distributed/realtime.hpp"
 #include <fmt/format.h>
+#include "plexus/distributed/realtime.hpp"
 
 namespace plexus::cli {
 
@@ -47,9 +47,8 @@ std::vector<LoopBudget> loop_budgets(const scenario::Scenario& sc, const std::ve
         hop.from = procs[static_cast<std::size_t>(from)].name;
         hop.to = procs[static_cast<std::size_t>(to)].name;
         hop.slot_s = gap * sc.step;
-        const bool known = std::any_of(b.hops.begin(), b.hops.end(), [&](const LoopHop& h) {
-          return h.name == hop.name && h.to == hop.to;
-        });
+        const bool known = std::any_of(b.hops.begin(), b.hops.end(),
+                                       [&](const LoopHop& h) { return h.name == hop.name && h.to == hop.to; });
         if (!known) b.hops.push_back(std::move(hop));
       }
     }
@@ -68,18 +67,18 @@ std::string budget_shortfall(const LoopBudget& loop) {
     sum_us += p99;
     const bool over = h.latency_ns.empty() || p99 > slot_us;
     late = late || over;
-    hops += (hops.empty() ? "" : "; ") + h.name + " " + h.from + " -> " + h.to + ": " +
-            (h.latency_ns.empty() ? std::string("no sample measured")
-                                  : "p50/p99 " + fmt::format("{:.0f}", p50) + "/" +
-                                        fmt::format("{:.0f}", p99) + " us") +
-            (over ? " > " : " <= ") + "slot " + fmt::format("{:.0f}", slot_us) + " us";
+    hops +=
+        (hops.empty() ? "" : "; ") + h.name + " " + h.from + " -> " + h.to + ": " +
+        (h.latency_ns.empty() ? std::string("no sample measured")
+                              : "p50/p99 " + fmt::format("{:.0f}", p50) + "/" + fmt::format("{:.0f}", p99) + " us") +
+        (over ? " > " : " <= ") + "slot " + fmt::format("{:.0f}", slot_us) + " us";
   }
   const double deadline_us = loop.deadline_s * 1e6;
   if (!late && sum_us <= deadline_us) return "";
   return "loop '" + loop.name + "' does not fit its budget under this placement (" + std::to_string(loop.hops.size()) +
          " hops between processes, p99 sum " + fmt::format("{:.0f}", sum_us) + " us, deadline " +
-         fmt::format("{:.0f}", deadline_us) + " us): " + hops +
-         " (run its members in one process: loops." + loop.name + ".process, docs/distributed.md)";
+         fmt::format("{:.0f}", deadline_us) + " us): " + hops + " (run its members in one process: loops." + loop.name +
+         ".process, docs/distributed.md)";
 }
 
 BudgetCheck::BudgetCheck(std::vector<LoopBudget> loops, bool strict) : loops_(std::move(loops)), strict_(strict) {

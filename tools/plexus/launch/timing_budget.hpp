@@ -27,9 +27,9 @@ namespace plexus::cli {
 
 /// One link of a loop between two processes.
 struct LoopHop {
-  std::string name;        ///< the signal
-  std::string from, to;    ///< producer's and reader's processes
-  double slot_s = 0.0;     ///< the time it has: the reader's tick after the producer's
+  std::string name;                 ///< the signal
+  std::string from, to;             ///< producer's and reader's processes
+  double slot_s = 0.0;              ///< the time it has: the reader's tick after the producer's
   std::vector<int64_t> latency_ns;  ///< measured: publish to arrival at the launcher
 };
 

@@ -43,10 +43,11 @@ class Recording : public ::testing::Test {
   void sql(const std::string& statements) {
     sqlite3* db = nullptr;
     ASSERT_EQ(sqlite3_open(path_.c_str(), &db), SQLITE_OK);
-    const std::string all = "CREATE TABLE topics(id, name, type, qos);"
-                            "CREATE TABLE messages(id INTEGER PRIMARY KEY, topic_id, receive_time_ns, seq_num,"
-                            " data_time_ns, origin_time_ns, publish_time_ns, cdr);" +
-                            statements;
+    const std::string all =
+        "CREATE TABLE topics(id, name, type, qos);"
+        "CREATE TABLE messages(id INTEGER PRIMARY KEY, topic_id, receive_time_ns, seq_num,"
+        " data_time_ns, origin_time_ns, publish_time_ns, cdr);" +
+        statements;
     EXPECT_EQ(sqlite3_exec(db, all.c_str(), nullptr, nullptr, nullptr), SQLITE_OK) << sqlite3_errmsg(db);
     sqlite3_close(db);
   }
@@ -94,7 +95,8 @@ TEST_F(Recording, WrittenMessagesReadBackInReceiveOrder) {
 // A NULL name must not be read as a null char* into std::string (a crash).
 TEST_F(Recording, TopicWithoutANameOrTypeIsRefused) {
   sql("INSERT INTO topics VALUES(1, NULL, 'plexus::msg::Pose2D', '');");
-  EXPECT_EQ(error_of([&] { RecordingReader r(path_); }), path_ + ": not a plexus recording: topic 1 without a name or a type");
+  EXPECT_EQ(error_of([&] { RecordingReader r(path_); }),
+            path_ + ": not a plexus recording: topic 1 without a name or a type");
 }
 
 TEST_F(Recording, TopicTwiceIsRefused) {
@@ -125,7 +127,9 @@ TEST_F(Recording, MessageColumnOfAnotherTypeIsRefused) {
   EXPECT_EQ(read_all(), path_ + ": not a plexus recording: message 5: receive_time_ns is not an integer");
 }
 
-RecordedTopic topic(const std::string& qos_json) { return {1, "r1/position", "plexus::msg::PositionMeasurement", qos_json}; }
+RecordedTopic topic(const std::string& qos_json) {
+  return {1, "r1/position", "plexus::msg::PositionMeasurement", qos_json};
+}
 
 TEST(RecordedQos, WhatPlexusRecordWritesIsReplayedAsRecorded) {
   const auto q = recorded_qos(topic(R"({"reliability":"reliable","durability":"transient","history":"keep_last",)"

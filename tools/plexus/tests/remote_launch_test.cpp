@@ -61,7 +61,8 @@ TEST(SshCommand, QuotesForThePosixShell) {
 
 TEST(SshCommand, RemoteCommandChangesToTheWorkdirAndRunsThatHostsPlexus) {
   scenario::Scenario::HostAccess a{"robot@10.0.0.2", "/opt/plexus dir", ""};
-  EXPECT_EQ(remote_launch_command(a, "/usr/bin/plexus"), "cd '/opt/plexus dir' && exec '/usr/bin/plexus' launch --remote");
+  EXPECT_EQ(remote_launch_command(a, "/usr/bin/plexus"),
+            "cd '/opt/plexus dir' && exec '/usr/bin/plexus' launch --remote");
   a.workdir.clear();
   a.plexus = "/opt/p/bin/plexus";
   EXPECT_EQ(remote_launch_command(a, "/usr/bin/plexus"),

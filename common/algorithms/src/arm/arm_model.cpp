@@ -30,8 +30,10 @@ void ArmModel::validate() const {
       validation::fail(kWhere, indexed("links", i, "inertia_o"),
                        "finite and > mass * com^2 = " + validation::format_value(l.mass * l.com * l.com), l.inertia_o);
     }
-    if (!std::isfinite(l.inertia_xx)) validation::fail(kWhere, indexed("links", i, "inertia_xx"), "finite", l.inertia_xx);
-    if (!std::isfinite(l.inertia_yy)) validation::fail(kWhere, indexed("links", i, "inertia_yy"), "finite", l.inertia_yy);
+    if (!std::isfinite(l.inertia_xx))
+      validation::fail(kWhere, indexed("links", i, "inertia_xx"), "finite", l.inertia_xx);
+    if (!std::isfinite(l.inertia_yy))
+      validation::fail(kWhere, indexed("links", i, "inertia_yy"), "finite", l.inertia_yy);
     const double a = l.inertia_xx_com(), b = l.inertia_yy_com(), c = l.inertia_zz_com();
     if (a + b < c || a + c < b || b + c < a) {
       validation::fail(kWhere, indexed("links", i, "inertia_xx"),

@@ -22,16 +22,19 @@ ArmChainDynamics::ArmChainDynamics(const ArmModel& model) : n_(model.dof()) {
   for (int i = 0; i < n_; ++i) {
     const ArmLink& l = model.links[static_cast<std::size_t>(i)];
     Link& k = links_[static_cast<std::size_t>(i)];
-    spatial::Vector13 theta = spatial::link_parameters(
-        l.mass, Eigen::Vector3d(l.com, 0.0, 0.0), Eigen::Vector3d(l.inertia_xx_com(), l.inertia_yy_com(), l.inertia_zz_com()));
+    spatial::Vector13 theta =
+        spatial::link_parameters(l.mass, Eigen::Vector3d(l.com, 0.0, 0.0),
+                                 Eigen::Vector3d(l.inertia_xx_com(), l.inertia_yy_com(), l.inertia_zz_com()));
     if (i + 1 == n_ && model.payload_mass > 0.0) {
-      theta += spatial::link_parameters(model.payload_mass, Eigen::Vector3d(l.length, 0.0, 0.0), Eigen::Vector3d::Zero());
+      theta +=
+          spatial::link_parameters(model.payload_mass, Eigen::Vector3d(l.length, 0.0, 0.0), Eigen::Vector3d::Zero());
     }
     k.inertia = spatial::spatial_inertia(theta);
     const double twist = i == 0 ? 0.0 : model.links[static_cast<std::size_t>(i - 1)].twist;
     const double ct = std::cos(twist), st = std::sin(twist);
     k.fixed_rotation << 1.0, 0.0, 0.0, 0.0, ct, -st, 0.0, st, ct;
-    k.from_parent.origin = Eigen::Vector3d(i == 0 ? 0.0 : model.links[static_cast<std::size_t>(i - 1)].length, 0.0, 0.0);
+    k.from_parent.origin =
+        Eigen::Vector3d(i == 0 ? 0.0 : model.links[static_cast<std::size_t>(i - 1)].length, 0.0, 0.0);
     k.from_parent.rotation = k.fixed_rotation;
     k.composite.setZero();
     k.v.setZero(), k.a.setZero(), k.f.setZero(), k.xv.setZero(), k.xa.setZero(), k.iv.setZero();
@@ -39,7 +42,8 @@ ArmChainDynamics::ArmChainDynamics(const ArmModel& model) : n_(model.dof()) {
   }
   const ArmLink& last = model.links.back();
   last_inertia_ = links_.back().inertia;
-  unit_point_ = spatial::spatial_inertia(spatial::link_parameters(1.0, Eigen::Vector3d(last.length, 0.0, 0.0), Eigen::Vector3d::Zero()));
+  unit_point_ = spatial::spatial_inertia(
+      spatial::link_parameters(1.0, Eigen::Vector3d(last.length, 0.0, 0.0), Eigen::Vector3d::Zero()));
   base_acceleration_.setZero();
   base_acceleration_.head<3>() = -model.gravity;
   qd_ = qdd_ = h_ = zero_ = unit_ = dtau_ = Eigen::VectorXd::Zero(n_);
@@ -87,8 +91,8 @@ void ArmChainDynamics::rnea(const Eigen::VectorXd& qd, const Eigen::VectorXd& qd
   }
 }
 
-void ArmChainDynamics::inverse_dynamics(const Eigen::VectorXd& q, const Eigen::VectorXd& qd,
-                                        const Eigen::VectorXd& qdd, Eigen::VectorXd& tau) {
+void ArmChainDynamics::inverse_dynamics(const Eigen::VectorXd& q, const Eigen::VectorXd& qd, const Eigen::VectorXd& qdd,
+                                        Eigen::VectorXd& tau) {
   frames(q);
   qd_ = qd, qdd_ = qdd;
   rnea(qd, qdd, tau);
@@ -111,14 +115,15 @@ void ArmChainDynamics::mass_matrix(const Eigen::VectorXd& q, Eigen::MatrixXd& m)
       spatial::Matrix6 half;
       for (int c = 0; c < 6; ++c) half.col(c) = spatial::force_to_parent(k.from_parent, k.composite.col(c));
       spatial::Matrix6 full;
-      for (int r = 0; r < 6; ++r) full.row(r) = spatial::force_to_parent(k.from_parent, half.row(r).transpose()).transpose();
+      for (int r = 0; r < 6; ++r)
+        full.row(r) = spatial::force_to_parent(k.from_parent, half.row(r).transpose()).transpose();
       links_[static_cast<std::size_t>(i - 1)].composite += full;
     }
   }
 }
 
-void ArmChainDynamics::forward_dynamics(const Eigen::VectorXd& q, const Eigen::VectorXd& qd,
-                                        const Eigen::VectorXd& tau, Eigen::VectorXd& qdd) {
+void ArmChainDynamics::forward_dynamics(const Eigen::VectorXd& q, const Eigen::VectorXd& qd, const Eigen::VectorXd& tau,
+                                        Eigen::VectorXd& qdd) {
   mass_matrix(q, mass_);  // also sets the frames
   rnea(qd, zero_, h_);    // C q' + G
   llt_.compute(mass_);

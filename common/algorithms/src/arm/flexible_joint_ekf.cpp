@@ -65,7 +65,8 @@ FlexibleJointEkf::FlexibleJointEkf(const FlexibleJointEkfParams& p)
 
 void FlexibleJointEkf::reset(const Vector& x0) {
   if (x0.size() != 4 * n_ && x0.size() != m_) {
-    validation::fail(kWhere, "x0 size", "4 n = " + std::to_string(4 * n_) + (m_ != 4 * n_ ? " or " + std::to_string(m_) : ""),
+    validation::fail(kWhere, "x0 size",
+                     "4 n = " + std::to_string(4 * n_) + (m_ != 4 * n_ ? " or " + std::to_string(m_) : ""),
                      static_cast<double>(x0.size()));
   }
   if (x0.size() == m_) {
@@ -145,12 +146,12 @@ void FlexibleJointEkf::jacobian(const Vector& x, const Vector& /*u*/, Matrix& f)
   }
   const int ip = iphi_, iv = iphi_ + n;
   for (int i = 0; i < n; ++i) {
-    f(i, n + i) = 1.0;          // d tau / d tau'
-    f(ip + i, iv + i) = 1.0;  // d phi / d phi'
-    f(iv + i, i) = -1.0 / j_(i);                 // d phi'' / d tau
-    f(iv + i, iv + i) = -f_(i) / j_(i);       // d phi'' / d phi'
-    f(n + i, iv + i) = -k_(i) * f_(i) / j_(i);   // K d phi'' / d phi'
-    f(n + i, i) = -k_(i) / j_(i);                    // K d phi'' / d tau
+    f(i, n + i) = 1.0;                          // d tau / d tau'
+    f(ip + i, iv + i) = 1.0;                    // d phi / d phi'
+    f(iv + i, i) = -1.0 / j_(i);                // d phi'' / d tau
+    f(iv + i, iv + i) = -f_(i) / j_(i);         // d phi'' / d phi'
+    f(n + i, iv + i) = -k_(i) * f_(i) / j_(i);  // K d phi'' / d phi'
+    f(n + i, i) = -k_(i) / j_(i);               // K d phi'' / d tau
     for (int c = 0; c < n; ++c) {
       // -K dq''/d(.) through tau directly (M^{-1}) and through q = phi - tau/K, q' = phi' - tau'/K.
       f(n + i, c) += -k_(i) * minv_(i, c) + k_(i) * a_(i, c) / k_(c);

@@ -19,7 +19,8 @@ FlexibleJointArmPlant::FlexibleJointArmPlant(const FlexibleJointArmParams& param
                        static_cast<double>(params.torque_limit.size()));
     }
     for (int i = 0; i < n_; ++i) {
-      validation::require_positive("flexible_joint_arm", "torque_limit[" + std::to_string(i) + "]", params.torque_limit(i));
+      validation::require_positive("flexible_joint_arm", "torque_limit[" + std::to_string(i) + "]",
+                                   params.torque_limit(i));
     }
   }
   k_.resize(n_), j_.resize(n_), f_.resize(n_);
@@ -69,14 +70,13 @@ void FlexibleJointArmPlant::derivative(const Eigen::VectorXd& x, const Eigen::Ve
   dx.segment(3 * n_, n_) = (u - f_.cwiseProduct(x.segment(3 * n_, n_)) - tau_).cwiseQuotient(j_);
 }
 
-void FlexibleJointArmPlant::step(const Eigen::VectorXd& u, double dt) {
-  step(u, no_disturbance_, dt);
-}
+void FlexibleJointArmPlant::step(const Eigen::VectorXd& u, double dt) { step(u, no_disturbance_, dt); }
 
 void FlexibleJointArmPlant::step(const Eigen::VectorXd& u, const Eigen::VectorXd& u_d, double dt) {
   if (!(dt > 0.0) || !u.allFinite()) return;
   u_applied_ = u;
-  if (params_.torque_limit.size() == n_) u_applied_ = u_applied_.cwiseMax(-params_.torque_limit).cwiseMin(params_.torque_limit);
+  if (params_.torque_limit.size() == n_)
+    u_applied_ = u_applied_.cwiseMax(-params_.torque_limit).cwiseMin(params_.torque_limit);
   u_total_ = u_applied_;
   if (u_d.size() == n_) u_total_ += u_d;
   const int substeps = std::max(1, static_cast<int>(std::ceil(dt / params_.max_substep - 1e-9)));
@@ -98,9 +98,7 @@ void FlexibleJointArmPlant::step(const Eigen::VectorXd& u, const Eigen::VectorXd
   state_.phid = x_.segment(3 * n_, n_);
 }
 
-void FlexibleJointArmPlant::spring_torque(Eigen::VectorXd& tau) const {
-  tau = k_.cwiseProduct(state_.phi - state_.q);
-}
+void FlexibleJointArmPlant::spring_torque(Eigen::VectorXd& tau) const { tau = k_.cwiseProduct(state_.phi - state_.q); }
 
 double FlexibleJointArmPlant::energy() {
   dyn_.mass_matrix(state_.q, mass_);

@@ -44,7 +44,11 @@ struct ArmRigidBodyDynamics::Kdl {
         gravity(model.gravity.x(), model.gravity.y(), model.gravity.z()),
         dyn(chain, gravity),
         rne(chain, gravity),
-        q(nj), qd(nj), qdd(nj), tau(nj), m(nj),
+        q(nj),
+        qd(nj),
+        qdd(nj),
+        tau(nj),
+        m(nj),
         no_wrenches(chain.getNrOfSegments(), KDL::Wrench::Zero()) {}
 
   void load(const Eigen::VectorXd& v, KDL::JntArray& out) const {
@@ -53,7 +57,10 @@ struct ArmRigidBodyDynamics::Kdl {
   void rne_torques(const Eigen::VectorXd& q_in, const Eigen::VectorXd& qd_in, const Eigen::VectorXd* qdd_in) {
     load(q_in, q);
     load(qd_in, qd);
-    if (qdd_in) load(*qdd_in, qdd); else qdd.data.setZero();
+    if (qdd_in)
+      load(*qdd_in, qdd);
+    else
+      qdd.data.setZero();
     rne.CartToJnt(q, qd, qdd, no_wrenches, tau);
   }
 

@@ -46,7 +46,7 @@ void ArmSineReference::sample(double t, ArmReferenceSample& out) const {
     const double w = 2.0 * std::numbers::pi * params_.frequency_hz(i);
     const double a = w * t + params_.phase(i);
     const double s = std::sin(a), c = std::cos(a);
-    out.q(i) = params_.offset(i) + params_.amplitude(i) * s;   // eq. (59)
+    out.q(i) = params_.offset(i) + params_.amplitude(i) * s;  // eq. (59)
     out.qd(i) = params_.amplitude(i) * w * c;
     out.qdd(i) = -params_.amplitude(i) * w * w * s;
     out.qddd(i) = -params_.amplitude(i) * w * w * w * c;

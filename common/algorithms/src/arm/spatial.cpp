@@ -34,12 +34,12 @@ Regressor inertia_regressor(const Vector6& x) {
   w.block<3, 3>(3, 1) = -skew(xv);
   // I_O xw: Ixx = th10 + th5 + th6, Iyy = th11 + th4 + th6, Izz = th12 + th4 + th5,
   // Ixy = -th7, Ixz = -th8, Iyz = -th9 (0-based indices).
-  w(4, 4) = wy, w(5, 4) = wz;                    // m cx^2
-  w(3, 5) = wx, w(5, 5) = wz;                    // m cy^2
-  w(3, 6) = wx, w(4, 6) = wy;                    // m cz^2
-  w(3, 7) = -wy, w(4, 7) = -wx;                  // m cx cy
-  w(3, 8) = -wz, w(5, 8) = -wx;                  // m cx cz
-  w(4, 9) = -wz, w(5, 9) = -wy;                  // m cy cz
+  w(4, 4) = wy, w(5, 4) = wz;                   // m cx^2
+  w(3, 5) = wx, w(5, 5) = wz;                   // m cy^2
+  w(3, 6) = wx, w(4, 6) = wy;                   // m cz^2
+  w(3, 7) = -wy, w(4, 7) = -wx;                 // m cx cy
+  w(3, 8) = -wz, w(5, 8) = -wx;                 // m cx cz
+  w(4, 9) = -wz, w(5, 9) = -wy;                 // m cy cz
   w(3, 10) = wx, w(4, 11) = wy, w(5, 12) = wz;  // central inertias
   return w;
 }
@@ -57,8 +57,8 @@ Regressor link_regressor(const Vector6& dvr, const Vector6& vr, const Vector6& v
 Vector13 link_parameters(double mass, const Eigen::Vector3d& c, const Eigen::Vector3d& central) {
   Vector13 th;
   th << mass, mass * c.x(), mass * c.y(), mass * c.z(), mass * c.x() * c.x(), mass * c.y() * c.y(),
-      mass * c.z() * c.z(), mass * c.x() * c.y(), mass * c.x() * c.z(), mass * c.y() * c.z(), central.x(),
-      central.y(), central.z();
+      mass * c.z() * c.z(), mass * c.x() * c.y(), mass * c.x() * c.z(), mass * c.y() * c.z(), central.x(), central.y(),
+      central.z();
   return th;
 }
 

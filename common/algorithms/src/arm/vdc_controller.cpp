@@ -24,7 +24,8 @@ void require_vector(const char* name, const Eigen::VectorXd& v, int n, Sign sign
     const std::string key = std::string(name) + "[" + std::to_string(i) + "]";
     if (sign == Sign::positive) validation::require_positive(kWhere, key, v(i));
     if (sign == Sign::non_negative) validation::require_non_negative(kWhere, key, v(i));
-    if (sign == Sign::negative && !(std::isfinite(v(i)) && v(i) < 0.0)) validation::fail(kWhere, key, "finite and < 0", v(i));
+    if (sign == Sign::negative && !(std::isfinite(v(i)) && v(i) < 0.0))
+      validation::fail(kWhere, key, "finite and < 0", v(i));
   }
 }
 
@@ -79,7 +80,8 @@ VdcController::VdcController(const VdcParams& p) : params_(p), n_(p.model.dof())
   require_vector("k_phi", p.k_phi, n_, Sign::positive);
   require_vector("k_tau", p.k_tau, n_, Sign::positive);
   validation::require_open_interval(kWhere, "theta_lower", p.theta_lower, 0.0, 1.0 + 1e-12);
-  if (!(std::isfinite(p.theta_upper) && p.theta_upper >= 1.0)) validation::fail(kWhere, "theta_upper", "finite and >= 1", p.theta_upper);
+  if (!(std::isfinite(p.theta_upper) && p.theta_upper >= 1.0))
+    validation::fail(kWhere, "theta_upper", "finite and >= 1", p.theta_upper);
   if (!(p.theta_initial >= p.theta_lower && p.theta_initial <= p.theta_upper)) {
     validation::fail(kWhere, "theta_initial",
                      "in [theta_lower, theta_upper] = [" + validation::format_value(p.theta_lower) + ", " +
@@ -167,7 +169,8 @@ void VdcController::link_torques(const Eigen::VectorXd& q, const Eigen::VectorXd
     spatial::Vector6 a = k.dvr + spatial::cross_motion(k.v, k.vr);
     a.head<3>() -= gravity_b;
     k.fr.noalias() = k.inertia * a;
-    k.fr += spatial::cross_force(k.v, k.inertia * k.vr) + params_.k_b(i) * (k.vr - k.v);  // F_r*; (15) adds the child below
+    k.fr +=
+        spatial::cross_force(k.v, k.inertia * k.vr) + params_.k_b(i) * (k.vr - k.v);  // F_r*; (15) adds the child below
     v_parent = k.v, vr_parent = k.vr, dvr_parent = k.dvr, r_parent = k.base_rotation;
   }
   // Tip -> base: B_iF_r = F_r*_i + B_iU_{B_{i+1}} B_{i+1}F_r (eq. (15)); tau_od = Z^T F_r.
@@ -216,7 +219,7 @@ const Eigen::VectorXd& VdcController::step(const ArmReferenceSample& ref, const 
     link_torques(q_e_, qd_e_, qr_d_e_, qr_dd_e_, m == 1 ? tau_od_1_ : tau_od_2_, false);
   }
   link_torques(fb.q, fb.qd, qr_d_, qr_dd_, tau_od_, true);  // with Y, for the adaptation
-  if (saturated_.cwiseAbs().maxCoeff() == 0.0) adapt();  // anti-windup: held while a drive saturates
+  if (saturated_.cwiseAbs().maxCoeff() == 0.0) adapt();     // anti-windup: held while a drive saturates
   for (int i = 0; i < n_; ++i) {
     const double ev = qr_d_(i) - fb.qd(i);      // q_r' - q'
     const double ea = qr_dd_(i) - fb.qdd(i);    // q_r'' - q''
@@ -227,18 +230,18 @@ const Eigen::VectorXd& VdcController::step(const ArmReferenceSample& ref, const 
     const double ts_acc = (ts_(i) > p.ts_min(i) && ts_(i) < p.ts_max(i)) ? p.k_i(i) * ea : 0.0;
     const double taud_od = (4.0 * tau_od_1_(i) - 3.0 * tau_od_(i) - tau_od_2_(i)) / (2.0 * e);
     const double taudd_od = (tau_od_(i) - 2.0 * tau_od_1_(i) + tau_od_2_(i)) / (e * e);
-    const double tau_r = tau_od_(i) - dist_(i) + p.k_p(i) * ev + ts_(i);                       // (20)
+    const double tau_r = tau_od_(i) - dist_(i) + p.k_p(i) * ev + ts_(i);  // (20)
     const double taud_r = taud_od + p.k_p(i) * ea + ts_rate_(i);
     const double taudd_r = taudd_od + p.k_p(i) * ej + ts_acc;
-    const double phi_d = fb.q(i) + tau_r / stiffness_(i);                                       // (22)
+    const double phi_d = fb.q(i) + tau_r / stiffness_(i);  // (22)
     const double phid_d = fb.qd(i) + taud_r / stiffness_(i);
     const double phidd_d = fb.qdd(i) + taudd_r / stiffness_(i);
     const double phir_d = phid_d + p.lambda_q(i) * ev + p.lambda_phi(i) * (phi_d - fb.phi(i)) +
-                          p.lambda_tau(i) * (tau_r - fb.tau(i));                                // (23)
+                          p.lambda_tau(i) * (tau_r - fb.tau(i));  // (23)
     const double phir_dd = phidd_d + p.lambda_q(i) * ea + p.lambda_phi(i) * (phid_d - fb.phid(i)) +
                            p.lambda_tau(i) * (taud_r - fb.taud(i));
     u_(i) = motor_inertia_(i) * phir_dd + friction_(i) * phir_d + p.k_phi(i) * (phir_d - fb.phid(i)) + tau_r +
-            p.k_tau(i) * (tau_r - fb.tau(i));                                                   // (18)
+            p.k_tau(i) * (tau_r - fb.tau(i));  // (18)
     saturated_(i) = 0.0;
     if (p.torque_limit.size() != 0) {
       const double limit = p.torque_limit(i);

@@ -35,8 +35,7 @@ AttitudeFilter::AttitudeFilter(const AttitudeFilterParams& params)
       aug2_(ukf_options(params)),
       add_(ukf_options(params)),
       ekf_() {
-  Q_ = Eigen::Vector3d(params.q_theta * params.q_theta, params.q_rate * params.q_rate,
-                       params.q_drift * params.q_drift)
+  Q_ = Eigen::Vector3d(params.q_theta * params.q_theta, params.q_rate * params.q_rate, params.q_drift * params.q_drift)
            .asDiagonal();
   reset(State::Zero());
 }
@@ -73,16 +72,18 @@ bool AttitudeFilter::step(double torque, double acc_tilt, double gyro) {
     case AttitudeFilterKind::kUkfAugmented:
       // The augmented form draws its points at predict time; with no predict yet (first
       // sample) it draws them with zero process noise around the prior.
-    {
-      const Eigen::Matrix3d Qk = predict ? Q_ : Eigen::Matrix3d::Zero();
-      auto f = [&](const State& x, const Eigen::Vector3d& w) -> State { return predict ? f_aug(x, w) : State(x + w); };
-      if (paper) {
-        if (!aug1_.predict(f, Qk, V1(Ra))) return false;
-        return aug1_.update<1>(z1, [&](const State& x, const V1& v) -> V1 { return h1(x) + v; });
+      {
+        const Eigen::Matrix3d Qk = predict ? Q_ : Eigen::Matrix3d::Zero();
+        auto f = [&](const State& x, const Eigen::Vector3d& w) -> State {
+          return predict ? f_aug(x, w) : State(x + w);
+        };
+        if (paper) {
+          if (!aug1_.predict(f, Qk, V1(Ra))) return false;
+          return aug1_.update<1>(z1, [&](const State& x, const V1& v) -> V1 { return h1(x) + v; });
+        }
+        if (!aug2_.predict(f, Qk, V2(Ra, Rg).asDiagonal().toDenseMatrix())) return false;
+        return aug2_.update<2>(z2, [&](const State& x, const V2& v) -> V2 { return h2(x) + v; });
       }
-      if (!aug2_.predict(f, Qk, V2(Ra, Rg).asDiagonal().toDenseMatrix())) return false;
-      return aug2_.update<2>(z2, [&](const State& x, const V2& v) -> V2 { return h2(x) + v; });
-    }
     case AttitudeFilterKind::kUkfAdditive:
       if (predict && !add_.predict(f_add, Q_)) return false;
       return paper ? add_.update<1>(z1, h1, V1(Ra)) : add_.update<2>(z2, h2, V2(Ra, Rg).asDiagonal().toDenseMatrix());
@@ -148,10 +149,8 @@ const AttitudeFilter::State& AttitudeFilter::state() const {
   switch (params_.kind) {
     case AttitudeFilterKind::kUkfAugmented:
       return params_.measurement == AttitudeMeasurementForm::kPaper ? aug1_.state() : aug2_.state();
-    case AttitudeFilterKind::kUkfAdditive:
-      return add_.state();
-    case AttitudeFilterKind::kEkf:
-      break;
+    case AttitudeFilterKind::kUkfAdditive: return add_.state();
+    case AttitudeFilterKind::kEkf: break;
   }
   return ekf_.state();
 }
@@ -160,10 +159,8 @@ const Eigen::Matrix3d& AttitudeFilter::covariance() const {
   switch (params_.kind) {
     case AttitudeFilterKind::kUkfAugmented:
       return params_.measurement == AttitudeMeasurementForm::kPaper ? aug1_.covariance() : aug2_.covariance();
-    case AttitudeFilterKind::kUkfAdditive:
-      return add_.covariance();
-    case AttitudeFilterKind::kEkf:
-      break;
+    case AttitudeFilterKind::kUkfAdditive: return add_.covariance();
+    case AttitudeFilterKind::kEkf: break;
   }
   return ekf_.covariance();
 }
@@ -172,11 +169,9 @@ int AttitudeFilter::sigma_points() const {
   switch (params_.kind) {
     case AttitudeFilterKind::kUkfAugmented:
       return params_.measurement == AttitudeMeasurementForm::kPaper ? AugmentedUkf<3, 3, 1>::kSigmaPoints
-                                                                     : AugmentedUkf<3, 3, 2>::kSigmaPoints;
-    case AttitudeFilterKind::kUkfAdditive:
-      return AdditiveUkf<3>::kSigmaPoints;
-    case AttitudeFilterKind::kEkf:
-      break;
+                                                                    : AugmentedUkf<3, 3, 2>::kSigmaPoints;
+    case AttitudeFilterKind::kUkfAdditive: return AdditiveUkf<3>::kSigmaPoints;
+    case AttitudeFilterKind::kEkf: break;
   }
   return 0;
 }

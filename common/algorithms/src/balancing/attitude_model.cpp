@@ -61,7 +61,7 @@ Eigen::Matrix3d AttitudeModel::jacobian(const State& x, double torque) const {
   double d_theta, d_rate;
   tilt_acceleration_partials(x(0), x(1), torque, d_theta, d_rate);
   Eigen::Matrix3d F;
-  F << 1.0, dt, 0.0,                        //
+  F << 1.0, dt, 0.0,                         //
       dt * d_theta, 1.0 + dt * d_rate, 0.0,  //
       0.0, 0.0, 1.0 + dt * params_.gamma1;
   return F;

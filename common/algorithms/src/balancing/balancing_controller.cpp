@@ -35,7 +35,8 @@ BalancingController::BalancingController(const BalancingControllerParams& p, con
       validation::fail("balancing_controller", name, "finite and < 0", p.poles[i]);
     }
     for (std::size_t j = 0; j < i; ++j) {
-      if (p.poles[j] == p.poles[i]) validation::fail("balancing_controller", name, "distinct from the others", p.poles[i]);
+      if (p.poles[j] == p.poles[i])
+        validation::fail("balancing_controller", name, "distinct from the others", p.poles[i]);
     }
   }
   // Ackermann: K = [0 0 0 1] C^-1 phi(A), C = [B, AB, A^2 B, A^3 B], phi the desired polynomial.

@@ -20,8 +20,7 @@ double PendulumCoefficients::linear_tilt_acceleration(double theta, double torqu
   return (alpha3 * theta + torque_gain * (1.0 + alpha4) * torque) / (1.0 - alpha1);
 }
 
-double PendulumCoefficients::axle_acceleration(double theta, double theta_dot, double theta_ddot,
-                                               double torque) const {
+double PendulumCoefficients::axle_acceleration(double theta, double theta_dot, double theta_ddot, double torque) const {
   return beta2 * torque + beta1 * (std::sin(theta) * theta_dot * theta_dot - std::cos(theta) * theta_ddot);
 }
 

@@ -21,8 +21,8 @@ DrivingPatternKind driving_pattern_kind_from_string(const std::string& name) {
   // finding 3); "figure_eight" is the name the paper-case scenarios use for it.
   if (name == "figure_eight" || name == "slalom") return DrivingPatternKind::kFigureEight;
   if (name == "segments") return DrivingPatternKind::kSegments;
-  throw std::invalid_argument("driving_pattern: kind must be straight, circle, slalom (figure_eight) or segments (got '" +
-                              name + "')");
+  throw std::invalid_argument(
+      "driving_pattern: kind must be straight, circle, slalom (figure_eight) or segments (got '" + name + "')");
 }
 
 DrivingPattern::DrivingPattern(const DrivingPatternParams& params) : params_(params) {
@@ -33,12 +33,8 @@ DrivingPattern::DrivingPattern(const DrivingPatternParams& params) : params_(par
       require_positive(kWhere, "period", params.period);
       require_finite(kWhere, "phase", params.phase);
       [[fallthrough]];
-    case DrivingPatternKind::kCircle:
-      require_finite(kWhere, "turn_rate", params.turn_rate);
-      [[fallthrough]];
-    case DrivingPatternKind::kStraight:
-      require_finite(kWhere, "speed", params.speed);
-      break;
+    case DrivingPatternKind::kCircle: require_finite(kWhere, "turn_rate", params.turn_rate); [[fallthrough]];
+    case DrivingPatternKind::kStraight: require_finite(kWhere, "speed", params.speed); break;
     case DrivingPatternKind::kSegments:
       if (params.segments.empty()) throw std::invalid_argument("driving_pattern: segments must not be empty");
       for (std::size_t i = 0; i < params.segments.size(); ++i) {
@@ -59,12 +55,11 @@ TrackSpeeds DrivingPattern::from_body(double v, double w) const {
 
 TrackSpeeds DrivingPattern::at(double t) const {
   switch (params_.kind) {
-    case DrivingPatternKind::kStraight:
-      return from_body(params_.speed, 0.0);
-    case DrivingPatternKind::kCircle:
-      return from_body(params_.speed, params_.turn_rate);
+    case DrivingPatternKind::kStraight: return from_body(params_.speed, 0.0);
+    case DrivingPatternKind::kCircle: return from_body(params_.speed, params_.turn_rate);
     case DrivingPatternKind::kFigureEight:
-      return from_body(params_.speed, params_.turn_rate * std::sin(2.0 * std::numbers::pi * t / params_.period + params_.phase));
+      return from_body(params_.speed,
+                       params_.turn_rate * std::sin(2.0 * std::numbers::pi * t / params_.period + params_.phase));
     case DrivingPatternKind::kSegments: {
       double local = t;
       if (params_.repeat) local = std::fmod(std::max(t, 0.0), total_);

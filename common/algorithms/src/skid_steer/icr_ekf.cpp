@@ -59,8 +59,9 @@ IcrEkf::IcrEkf(const IcrEkfParams& params) : params_(params) {
   validation::require_non_negative(kWhere, "track_side_margin", params.track_side_margin);
   if (params.enforce_track_sides &&
       !(params.initial_icr.y_l >= params.track_side_margin && params.initial_icr.y_r <= -params.track_side_margin)) {
-    throw std::invalid_argument("icr_ekf: initial_icr must have y_l >= track_side_margin and y_r <= -track_side_margin "
-                                "when enforce_track_sides is on");
+    throw std::invalid_argument(
+        "icr_ekf: initial_icr must have y_l >= track_side_margin and y_r <= -track_side_margin "
+        "when enforce_track_sides is on");
   }
   p0_ = params.p0_diag.asDiagonal();
   p_b_ = params.p_b_diag.asDiagonal();
@@ -105,7 +106,8 @@ IcrStep icr_step(const IcrVector& x, const TrackSpeeds& u, double dt) {
   const BodyVelocity b = icr_body_velocity({yl, yr, xg}, u);
   const double c = std::cos(x(2)), s = std::sin(x(2));
   IcrStep out;
-  out.pose = {x(0) + dt * (b.v_x * c - b.v_y * s), x(1) + dt * (b.v_x * s + b.v_y * c), x(2) + dt * b.omega};  // eq. (7)
+  out.pose = {x(0) + dt * (b.v_x * c - b.v_y * s), x(1) + dt * (b.v_x * s + b.v_y * c),
+              x(2) + dt * b.omega};  // eq. (7)
   // Partial derivatives of the body velocities (header comment).
   const double dvx_dyl = -yr * dv / d2, dvx_dyr = yl * dv / d2;
   const double dvy_dyl = -xg * dv / d2, dvy_dyr = xg * dv / d2, dvy_dxg = dv / d;
@@ -147,7 +149,7 @@ bool IcrEkf::predict(const TrackSpeeds& u, double dt) {
     ++rejected_;
     return false;
   }
-  double scale = 1.0;  // L Q L^T with L = I * sqrt(scale)
+  double scale = 1.0;                                                           // L Q L^T with L = I * sqrt(scale)
   if (params_.process_noise == ProcessNoiseModel::kDtSquared) scale = dt * dt;  // eq. (12): L = I dt
   if (params_.process_noise == ProcessNoiseModel::kContinuous) scale = dt;
   const IcrVector q = scale * params_.q_diag;  // Q is diagonal

@@ -14,7 +14,8 @@ KnnTieRule knn_tie_rule_from_string(const std::string& name) {
   if (name == "nearest") return KnnTieRule::kNearest;
   if (name == "lowest_label") return KnnTieRule::kLowestLabel;
   if (name == "shrink_k") return KnnTieRule::kShrinkK;
-  throw std::invalid_argument("knn_classifier: tie_rule must be nearest, lowest_label or shrink_k (got '" + name + "')");
+  throw std::invalid_argument("knn_classifier: tie_rule must be nearest, lowest_label or shrink_k (got '" + name +
+                              "')");
 }
 
 FeatureScaling feature_scaling_from_string(const std::string& name) {
@@ -24,7 +25,8 @@ FeatureScaling feature_scaling_from_string(const std::string& name) {
   throw std::invalid_argument("knn_classifier: scaling must be none, standardize or min_max (got '" + name + "')");
 }
 
-KnnClassifier::KnnClassifier(TrainingSet training, const KnnParams& params) : set_(std::move(training)), params_(params) {
+KnnClassifier::KnnClassifier(TrainingSet training, const KnnParams& params)
+    : set_(std::move(training)), params_(params) {
   const std::size_t n = set_.size();
   const std::size_t m = set_.layout.features;
   if (n == 0) throw std::invalid_argument("knn_classifier: the training set is empty");
@@ -42,7 +44,8 @@ KnnClassifier::KnnClassifier(TrainingSet training, const KnnParams& params) : se
   classes_.erase(std::unique(classes_.begin(), classes_.end()), classes_.end());
   for (int l : set_.labels) {
     if (l < 0) validation::fail("knn_classifier", "label", ">= 0", l);
-    class_index_.push_back(static_cast<std::size_t>(std::lower_bound(classes_.begin(), classes_.end(), l) - classes_.begin()));
+    class_index_.push_back(
+        static_cast<std::size_t>(std::lower_bound(classes_.begin(), classes_.end(), l) - classes_.begin()));
   }
   offset_.assign(m, 0.0);
   scale_.assign(m, 1.0);

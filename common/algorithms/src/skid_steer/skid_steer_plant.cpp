@@ -45,7 +45,9 @@ std::vector<TerrainSpec> paper_terrains() {
 }
 
 SkidSteerPlant::SkidSteerPlant(const SkidSteerPlantParams& params)
-    : params_(non_empty(params)), schedule_(params.schedule, params.terrains.size()), vibration_(vibration_params(params)) {
+    : params_(non_empty(params)),
+      schedule_(params.schedule, params.terrains.size()),
+      vibration_(vibration_params(params)) {
   state_.pose = params.initial_pose;
   state_.terrain = schedule_.terrain_at(0.0);
   state_.icr = params.terrains[static_cast<std::size_t>(state_.terrain)].icr;

@@ -116,7 +116,8 @@ TerrainIcrLibrary TerrainIcrAccumulator::library(const std::map<int, std::string
   for (const auto& [id, m] : moments_) {
     if (m.n < 1) continue;
     const double n = static_cast<double>(m.n);
-    const Eigen::Vector3d var = (m.n > 1 ? Eigen::Vector3d(m.m2 / (n - 1.0)) : Eigen::Vector3d::Zero()) + m.filter_var / n;
+    const Eigen::Vector3d var =
+        (m.n > 1 ? Eigen::Vector3d(m.m2 / (n - 1.0)) : Eigen::Vector3d::Zero()) + m.filter_var / n;
     TerrainIcrPrior p;
     p.mean = {m.mean(0), m.mean(1), m.mean(2)};
     p.sd = var.cwiseSqrt().cwiseMax(1e-6);

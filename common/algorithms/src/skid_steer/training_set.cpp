@@ -66,14 +66,18 @@ FeatureLayout FeatureLayout::of(const PsdFeatureExtractor& e) {
 
 std::string FeatureLayout::difference(const FeatureLayout& o) const {
   auto num = [](double v) { return validation::format_value(v); };
-  if (sample_rate_hz != o.sample_rate_hz) return "sample_rate_hz " + num(sample_rate_hz) + " vs " + num(o.sample_rate_hz);
-  if (window_samples != o.window_samples) return "window_samples " + num(window_samples) + " vs " + num(o.window_samples);
+  if (sample_rate_hz != o.sample_rate_hz)
+    return "sample_rate_hz " + num(sample_rate_hz) + " vs " + num(o.sample_rate_hz);
+  if (window_samples != o.window_samples)
+    return "window_samples " + num(window_samples) + " vs " + num(o.window_samples);
   if (min_hz != o.min_hz || max_hz != o.max_hz) {
     return "band_hz " + num(min_hz) + " " + num(max_hz) + " vs " + num(o.min_hz) + " " + num(o.max_hz);
   }
   if (taper != o.taper) return std::string("taper ") + to_string(taper) + " vs " + to_string(o.taper);
-  if (log10 != o.log10) return std::string("scale ") + (log10 ? "log10" : "linear") + " vs " + (o.log10 ? "log10" : "linear");
-  if (features != o.features) return "features " + num(static_cast<double>(features)) + " vs " + num(static_cast<double>(o.features));
+  if (log10 != o.log10)
+    return std::string("scale ") + (log10 ? "log10" : "linear") + " vs " + (o.log10 ? "log10" : "linear");
+  if (features != o.features)
+    return "features " + num(static_cast<double>(features)) + " vs " + num(static_cast<double>(o.features));
   return "";
 }
 
@@ -83,7 +87,8 @@ TrainingSet load_training_set(const std::string& path) {
   if (!in) p.fail(0, "cannot open the training file");
   TrainingSet set;
   std::set<std::string> seen;
-  const std::vector<std::string> required = {"sample_rate_hz", "window_samples", "band_hz", "taper", "scale", "features"};
+  const std::vector<std::string> required = {"sample_rate_hz", "window_samples", "band_hz",
+                                             "taper",          "scale",          "features"};
   bool magic = false;
   std::size_t line_no = 0;
   for (std::string line; std::getline(in, line);) {
@@ -115,7 +120,8 @@ TrainingSet load_training_set(const std::string& path) {
       set.labels.push_back(static_cast<int>(label));
       for (std::size_t i = 0; i < n; ++i) {
         const double v = p.number(line_no, tk[i + 2], "feature " + std::to_string(i + 1));
-        if (!set.layout.log10 && v < 0.0) p.fail(line_no, "feature " + std::to_string(i + 1) + ": a PSD must be >= 0, got " + tk[i + 2]);
+        if (!set.layout.log10 && v < 0.0)
+          p.fail(line_no, "feature " + std::to_string(i + 1) + ": a PSD must be >= 0, got " + tk[i + 2]);
         set.features.push_back(v);
       }
       continue;
@@ -193,7 +199,8 @@ TrainingSetWriter::TrainingSetWriter(const std::string& path, const FeatureLayou
 }
 
 void TrainingSetWriter::append(int label, std::span<const double> features) {
-  if (label < 0) throw std::invalid_argument("training_set_writer: label must be >= 0 (got " + std::to_string(label) + ")");
+  if (label < 0)
+    throw std::invalid_argument("training_set_writer: label must be >= 0 (got " + std::to_string(label) + ")");
   if (features.size() != layout_.features) throw std::invalid_argument("training_set_writer: wrong number of features");
   out_ << "sample " << label;
   for (double v : features) out_ << ' ' << v;

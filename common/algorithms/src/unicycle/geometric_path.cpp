@@ -41,8 +41,7 @@ void validate(const PolynomialPath& p) {
       const double c = p.c(i, j);
       validation::require_finite(kWhere, name, c);
       if (i + j > PolynomialPath::kMaxDegree && c != 0.0) {
-        validation::fail(kWhere, name, "0 (total degree above " + std::to_string(PolynomialPath::kMaxDegree) + ")",
-                         c);
+        validation::fail(kWhere, name, "0 (total degree above " + std::to_string(PolynomialPath::kMaxDegree) + ")", c);
       }
       if (i + j > 0 && c != 0.0) non_constant = true;
     }

@@ -45,8 +45,8 @@ void HeadingObserver::update(double dt, const Eigen::Vector2d& position, const U
     return;
   }
   const double L = params_.L;
-  const double a = L * input.v * dt;         // decay exponent of e^{M h}, M = -L v I + omega J
-  const double turn = input.omega * dt;      // rotation of e^{M h}
+  const double a = L * input.v * dt;     // decay exponent of e^{M h}, M = -L v I + omega J
+  const double turn = input.omega * dt;  // rotation of e^{M h}
   const Eigen::Vector2d dp = position - state_.position;
   // Homogeneous part: e^{M h} z_hat = e^{-L v h} R(omega h) z_hat  (paper 000, eq. (5) with p held).
   Eigen::Vector2d z = std::exp(-a) * rotate(state_.z_hat, turn);

@@ -27,8 +27,7 @@ PositionSensorKind position_sensor_kind_from_string(const std::string& name) {
   if (name == "exact") return PositionSensorKind::kExact;
   if (name == "gaussian") return PositionSensorKind::kGaussian;
   if (name == "rfid_grid") return PositionSensorKind::kRfidGrid;
-  throw std::invalid_argument("position_sensor: kind must be one of exact, gaussian, rfid_grid (got \"" + name +
-                              "\")");
+  throw std::invalid_argument("position_sensor: kind must be one of exact, gaussian, rfid_grid (got \"" + name + "\")");
 }
 
 }  // namespace plexus::algorithms

@@ -20,8 +20,7 @@ void validate(const TrackingControllerParams& p) {
 
 }  // namespace
 
-TrajectoryTrackingController::TrajectoryTrackingController(const TrackingControllerParams& params)
-    : params_(params) {
+TrajectoryTrackingController::TrajectoryTrackingController(const TrackingControllerParams& params) : params_(params) {
   validate(params);
 }
 
@@ -87,9 +86,10 @@ std::optional<std::string> check_gain_condition(const TrackingControllerParams& 
   const double k_max = params.gamma * 2.0 / std::numbers::pi * v_rm;  // largest k1 = k2 / sqrt(2) norm
   std::string msg = "tracking_controller: gain condition (15) of paper 000 violated: k1^2 + k2^2 = ";
   msg += validation::format_value(lhs) + " (k1 = " + validation::format_value(params.k1) +
-         ", k2 = " + validation::format_value(params.k2) + ") > gamma^2 (4/pi^2) v_rm^2 = " +
-         validation::format_value(rhs) + " (gamma = " + validation::format_value(params.gamma) +
-         ", v_rm = " + validation::format_value(v_rm) + " m/s), " + validation::format_value(lhs / rhs) +
+         ", k2 = " + validation::format_value(params.k2) +
+         ") > gamma^2 (4/pi^2) v_rm^2 = " + validation::format_value(rhs) +
+         " (gamma = " + validation::format_value(params.gamma) + ", v_rm = " + validation::format_value(v_rm) +
+         " m/s), " + validation::format_value(lhs / rhs) +
          "x over; sqrt(k1^2 + k2^2) must be <= " + validation::format_value(k_max) +
          ". The speed v >= (1 - gamma) v_rm is then not guaranteed and v may approach 0"
          " (theta*' uses the min_speed_for_turn floor there).";

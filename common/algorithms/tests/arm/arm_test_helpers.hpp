@@ -4,9 +4,9 @@
 
 #include <Eigen/Core>
 
+#include "../support/validation_message.hpp"  // invalid_argument_message<T>(args...)
 #include "plexus/algorithms/arm/arm_model.hpp"
 #include "plexus/algorithms/core/random.hpp"
-#include "../support/validation_message.hpp"  // invalid_argument_message<T>(args...)
 
 namespace plexus::algorithms::testing {
 

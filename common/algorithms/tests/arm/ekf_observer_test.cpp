@@ -168,8 +168,8 @@ TEST(FlexibleJointEkf, LinkJerkIsTheRateOfTheLinkAcceleration) {
       largest = std::max(largest, jerk.cwiseAbs().maxCoeff());
     }
   }
-  EXPECT_GT(largest, 100.0);          // the springs ring: the jerk is large (~2000 rad/s^3)
-  EXPECT_LT(worst, 0.01 * largest);   // measured 0.06 %
+  EXPECT_GT(largest, 100.0);         // the springs ring: the jerk is large (~2000 rad/s^3)
+  EXPECT_LT(worst, 0.01 * largest);  // measured 0.06 %
 }
 
 }  // namespace

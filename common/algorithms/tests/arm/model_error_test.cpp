@@ -79,7 +79,7 @@ TEST(FlexibleJointEkf, TipMassStateLearnsAnUnknownPayload) {
   const double robust_error = drive_with_unknown_payload(robust, 1.2, &learned);
   const double paper_error = drive_with_unknown_payload(paper, 1.2, nullptr);
   EXPECT_NEAR(learned, 1.2, 0.12);
-  EXPECT_LT(robust_error, 1e-4);        // 0.1 mrad
+  EXPECT_LT(robust_error, 1e-4);  // 0.1 mrad
   EXPECT_GT(paper_error, 10 * robust_error);
 }
 
@@ -107,7 +107,8 @@ TEST(VdcController, AntiWindupHoldsTheIntegralWhileTheOutputIsClamped) {
   VdcParams limited = p;
   limited.torque_limit = Eigen::Vector2d(50, 15);
   VdcController free_run(p), clamped(limited);
-  ArmReferenceSample r{Eigen::Vector2d(0.05, 0.05), Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero()};
+  ArmReferenceSample r{Eigen::Vector2d(0.05, 0.05), Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero(),
+                       Eigen::Vector2d::Zero()};
   ArmFeedback fb = ArmFeedback::zero(2);
   for (int k = 0; k < 500; ++k) {
     free_run.step(r, fb);
@@ -115,8 +116,8 @@ TEST(VdcController, AntiWindupHoldsTheIntegralWhileTheOutputIsClamped) {
     EXPECT_LE(u.cwiseAbs().maxCoeff(), 50.0);
   }
   EXPECT_EQ(clamped.saturation(), Eigen::Vector2d(1, 1));
-  EXPECT_GT(free_run.ts().minCoeff(), 400.0);   // wound up towards ts_max = 500
-  EXPECT_LT(clamped.ts().maxCoeff(), 5.0);      // held (one step's integration at most)
+  EXPECT_GT(free_run.ts().minCoeff(), 400.0);  // wound up towards ts_max = 500
+  EXPECT_LT(clamped.ts().maxCoeff(), 5.0);     // held (one step's integration at most)
 }
 
 }  // namespace

@@ -13,8 +13,6 @@
 #include "plexus/algorithms/arm/flexible_joint_plant.hpp"
 #include "plexus/algorithms/arm/vdc_controller.hpp"
 
-
-
 namespace plexus::algorithms {
 namespace {
 
@@ -85,7 +83,7 @@ TEST(ArmNoAllocation, RobustTuningAndTorqueLimitDoNotAllocate) {
   }
   const long after = plexus::test::allocations();
   EXPECT_EQ(after - before, 0);  // neither operator new nor Eigen's malloc
-  EXPECT_GT(saturated, 0.0);  // the limit was reached: the anti-windup path ran
+  EXPECT_GT(saturated, 0.0);     // the limit was reached: the anti-windup path ran
   EXPECT_TRUE(std::isfinite(u.sum() + ekf.payload()));
 }
 

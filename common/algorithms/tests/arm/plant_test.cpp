@@ -116,7 +116,8 @@ TEST(FlexibleJointPlant, InMotionStartHasNoLinkAccelerationAndNoSpringRate) {
   plant.dynamics().forward_dynamics(q, qd, tau, qdd);
   EXPECT_LT(qdd.norm(), 1e-9);
   Eigen::VectorXd u(2);  // motor torque that keeps phi'' = 0: tau + F phi'
-  for (int i = 0; i < 2; ++i) u(i) = tau(i) + plant.dynamics().model().joints[static_cast<std::size_t>(i)].friction * qd(i);
+  for (int i = 0; i < 2; ++i)
+    u(i) = tau(i) + plant.dynamics().model().joints[static_cast<std::size_t>(i)].friction * qd(i);
   const double dt = 1e-4;
   plant.step(u, dt);
   EXPECT_LT((plant.state().qd - qd).norm(), 1e-2 * dt);

@@ -17,14 +17,16 @@ Vector6 random6(Rng& rng) {
 
 Transform random_transform(Rng& rng) {
   Transform t;
-  t.rotation = Eigen::AngleAxisd(rng.uniform(-3, 3), Eigen::Vector3d(rng.uniform(-1, 1), rng.uniform(-1, 1), 1).normalized())
-                   .toRotationMatrix();
+  t.rotation =
+      Eigen::AngleAxisd(rng.uniform(-3, 3), Eigen::Vector3d(rng.uniform(-1, 1), rng.uniform(-1, 1), 1).normalized())
+          .toRotationMatrix();
   t.origin = Eigen::Vector3d(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
   return t;
 }
 
 Vector13 random_theta(Rng& rng) {
-  return link_parameters(rng.uniform(1, 5), Eigen::Vector3d(rng.uniform(-0.3, 0.3), rng.uniform(-0.3, 0.3), rng.uniform(-0.3, 0.3)),
+  return link_parameters(rng.uniform(1, 5),
+                         Eigen::Vector3d(rng.uniform(-0.3, 0.3), rng.uniform(-0.3, 0.3), rng.uniform(-0.3, 0.3)),
                          Eigen::Vector3d(rng.uniform(0.1, 0.2), rng.uniform(0.1, 0.2), rng.uniform(0.1, 0.2)));
 }
 
@@ -34,7 +36,7 @@ TEST(Spatial, TransformsConservePowerAndMatchTheMatrixForm) {
     const Transform t = random_transform(rng);
     const Vector6 va = random6(rng), fb = random6(rng);
     const Vector6 vb = velocity_to_child(t, va), fa = force_to_parent(t, fb);
-    EXPECT_NEAR(va.dot(fa), vb.dot(fb), 1e-12);  // virtual power is frame independent
+    EXPECT_NEAR(va.dot(fa), vb.dot(fb), 1e-12);                            // virtual power is frame independent
     EXPECT_TRUE(vb.isApprox(force_transform(t).transpose() * va, 1e-12));  // eq. (2)
     EXPECT_TRUE(fa.isApprox(force_transform(t) * fb, 1e-12));              // eq. (3)
   }
@@ -66,7 +68,7 @@ TEST(Spatial, RegressorMatchesNewtonEulerAndCoriolisIsSkew) {
       crf.col(c) = cross_force(v, Vector6::Unit(c));
     }
     const Matrix6 c = crf * m + m * crm;
-    EXPECT_TRUE((c + c.transpose()).isZero(1e-12));   // skew: (Vr - V)^T C (Vr - V) = 0
+    EXPECT_TRUE((c + c.transpose()).isZero(1e-12));  // skew: (Vr - V)^T C (Vr - V) = 0
     EXPECT_TRUE(crf.isApprox(-crm.transpose(), 1e-14));
     Vector6 gvec = Vector6::Zero();
     gvec.head<3>() = -g;

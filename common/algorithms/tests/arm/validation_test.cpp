@@ -48,8 +48,10 @@ TEST(ArmValidation, ModelErrors) {
       {"arm_model: links[0].inertia_yy must be finite (got nan)", [](ArmModel& m) { m.links[0].inertia_yy = kNan; }},
       {"arm_model: links[1].inertia_xx must be such that the central inertias satisfy the triangle inequality (got 1)",
        [](ArmModel& m) { m.links[1].inertia_xx = 1.0; }},
-      {"arm_model: joints[0].motor_inertia must be finite and > 0 (got -2)", [](ArmModel& m) { m.joints[0].motor_inertia = -2; }},
-      {"arm_model: joints[1].friction must be finite and >= 0 (got -0.5)", [](ArmModel& m) { m.joints[1].friction = -0.5; }},
+      {"arm_model: joints[0].motor_inertia must be finite and > 0 (got -2)",
+       [](ArmModel& m) { m.joints[0].motor_inertia = -2; }},
+      {"arm_model: joints[1].friction must be finite and >= 0 (got -0.5)",
+       [](ArmModel& m) { m.joints[1].friction = -0.5; }},
       {"arm_model: joints[1].stiffness must be finite and > 0 (got 0)", [](ArmModel& m) { m.joints[1].stiffness = 0; }},
       {"arm_model: gravity must be finite (got nan)", [](ArmModel& m) { m.gravity.y() = kNan; }},
       {"arm_model: payload_mass must be finite and >= 0 (got -1)", [](ArmModel& m) { m.payload_mass = -1; }},
@@ -131,7 +133,8 @@ TEST(ArmValidation, EkfErrors) {
 
 TEST(ArmValidation, CtPdAndReferenceErrors) {
   const std::vector<Case<CtPdParams>> ct = {
-      {"ct_pd_controller: k_p size must be the joint count 2 (got 1)", [](CtPdParams& p) { p.k_p = Eigen::VectorXd::Ones(1); }},
+      {"ct_pd_controller: k_p size must be the joint count 2 (got 1)",
+       [](CtPdParams& p) { p.k_p = Eigen::VectorXd::Ones(1); }},
       {"ct_pd_controller: k_v[1] must be finite and >= 0 (got -1)", [](CtPdParams& p) { p.k_v(1) = -1; }},
       {"ct_pd_controller: k_d[0] must be finite and >= 0 (got nan)", [](CtPdParams& p) { p.k_d(0) = kNan; }},
   };
@@ -143,7 +146,8 @@ TEST(ArmValidation, CtPdAndReferenceErrors) {
   using R = ArmSineReferenceParams;
   const std::vector<Case<R>> ref = {
       {"arm_sine_reference: amplitude must be a non-empty list (got 0)", [](R& p) { p = R{}; }},
-      {"arm_sine_reference: offset size must be the joint count 2 (got 3)", [](R& p) { p.offset = Eigen::Vector3d::Zero(); }},
+      {"arm_sine_reference: offset size must be the joint count 2 (got 3)",
+       [](R& p) { p.offset = Eigen::Vector3d::Zero(); }},
       {"arm_sine_reference: phase[1] must be finite (got nan)", [](R& p) { p.phase(1) = kNan; }},
       {"arm_sine_reference: frequency_hz[0] must be finite and >= 0 (got -1)", [](R& p) { p.frequency_hz(0) = -1; }},
   };

@@ -32,7 +32,8 @@ ArmFeedback truth(FlexibleJointArmPlant& plant) {
   ArmFeedback fb = ArmFeedback::zero(n);
   fb.q = s.q, fb.qd = s.qd, fb.phi = s.phi, fb.phid = s.phid;
   plant.spring_torque(fb.tau);
-  for (int i = 0; i < n; ++i) fb.taud(i) = plant.dynamics().model().joints[static_cast<std::size_t>(i)].stiffness * (s.phid(i) - s.qd(i));
+  for (int i = 0; i < n; ++i)
+    fb.taud(i) = plant.dynamics().model().joints[static_cast<std::size_t>(i)].stiffness * (s.phid(i) - s.qd(i));
   plant.dynamics().forward_dynamics(s.q, s.qd, fb.tau, fb.qdd);
   // q''' by a central difference of the forward dynamics along (q', q'', tau').
   const double e = 1e-5;

@@ -22,9 +22,10 @@ TEST(AttitudeFilter, SigmaPointCountsOfThePaper) {
   EXPECT_EQ(AttitudeFilter(filter_params(plant, AttitudeFilterKind::kUkfAdditive, AttitudeMeasurementForm::kPaper, {}))
                 .sigma_points(),
             7);
-  EXPECT_EQ(AttitudeFilter(filter_params(plant, AttitudeFilterKind::kUkfAugmented, AttitudeMeasurementForm::kObservable, {}))
-                .sigma_points(),
-            17);
+  EXPECT_EQ(
+      AttitudeFilter(filter_params(plant, AttitudeFilterKind::kUkfAugmented, AttitudeMeasurementForm::kObservable, {}))
+          .sigma_points(),
+      17);
 }
 
 // Paper form: the drift never meets a measurement. Its estimate follows the open-loop
@@ -66,7 +67,8 @@ TEST(AttitudeFilter, DriftUnobservableInPaperFormAndEstimatedWithGyro) {
 }
 
 TEST(AttitudeFilter, RefusesNonFiniteInput) {
-  AttitudeFilter f(filter_params(WheeledInvertedPendulum({}), AttitudeFilterKind::kEkf, AttitudeMeasurementForm::kObservable, {}));
+  AttitudeFilter f(
+      filter_params(WheeledInvertedPendulum({}), AttitudeFilterKind::kEkf, AttitudeMeasurementForm::kObservable, {}));
   EXPECT_FALSE(f.step(NAN, 0.0, 0.0));
   EXPECT_FALSE(f.step(0.0, INFINITY, 0.0));
   EXPECT_EQ(f.state(), Eigen::Vector3d::Zero());
@@ -84,11 +86,15 @@ TEST(AttitudeFilter, EveryValidationError) {
   EXPECT_EQ(msg([](auto& p) { p.q_drift = -1; }), "attitude_filter: q_drift must be finite and >= 0 (got -1)");
   EXPECT_EQ(msg([](auto& p) { p.r_tilt = 0; }), "attitude_filter: r_tilt must be finite and > 0 (got 0)");
   EXPECT_EQ(msg([](auto& p) { p.r_gyro = 0; }), "attitude_filter: r_gyro must be finite and > 0 (got 0)");
-  EXPECT_EQ(msg([](auto& p) { p.initial_theta_std = 0; }), "attitude_filter: initial_theta_std must be finite and > 0 (got 0)");
-  EXPECT_EQ(msg([](auto& p) { p.initial_rate_std = 0; }), "attitude_filter: initial_rate_std must be finite and > 0 (got 0)");
-  EXPECT_EQ(msg([](auto& p) { p.initial_drift_std = 0; }), "attitude_filter: initial_drift_std must be finite and > 0 (got 0)");
+  EXPECT_EQ(msg([](auto& p) { p.initial_theta_std = 0; }),
+            "attitude_filter: initial_theta_std must be finite and > 0 (got 0)");
+  EXPECT_EQ(msg([](auto& p) { p.initial_rate_std = 0; }),
+            "attitude_filter: initial_rate_std must be finite and > 0 (got 0)");
+  EXPECT_EQ(msg([](auto& p) { p.initial_drift_std = 0; }),
+            "attitude_filter: initial_drift_std must be finite and > 0 (got 0)");
   EXPECT_EQ(msg([](auto& p) { p.sigma.alpha = 0; }), "augmented_ukf: alpha must be finite and > 0 (got 0)");
-  EXPECT_EQ(msg([](auto& p) { p.sigma.kappa = -3.5; }), "additive_ukf: kappa must be > -L = -3 (L + kappa > 0) (got -3.5)");
+  EXPECT_EQ(msg([](auto& p) { p.sigma.kappa = -3.5; }),
+            "additive_ukf: kappa must be > -L = -3 (L + kappa > 0) (got -3.5)");
   EXPECT_EQ(msg([](auto& p) { p.model.dt = 0; }), "attitude_model: dt must be finite and > 0 (got 0)");
 }
 

@@ -27,7 +27,7 @@ TEST(AttitudeModel, JacobiansAgreeWithFiniteDifferences) {
   for (auto process : {AttitudeProcessModel::kNonlinear, AttitudeProcessModel::kLinear}) {
     AttitudeModel m(params(process));
     for (const Eigen::Vector3d& x : {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(0.3, -1.2, 0.01),
-                                    Eigen::Vector3d(-0.8, 2.5, -0.02), Eigen::Vector3d(1.2, 0.4, 0.0)}) {
+                                     Eigen::Vector3d(-0.8, 2.5, -0.02), Eigen::Vector3d(1.2, 0.4, 0.0)}) {
       for (double T : {-1.0, 0.0, 0.7}) {
         const Eigen::Matrix3d F = m.jacobian(x, T);
         const Eigen::RowVector3d H = m.accelerometer_tilt_gradient(x, T);
@@ -95,14 +95,17 @@ TEST(AttitudeModel, EveryValidationError) {
   EXPECT_EQ(msg([](auto& p) { p.dt = 0; }), "attitude_model: dt must be finite and > 0 (got 0)");
   EXPECT_EQ(msg([](auto& p) { p.gamma1 = NAN; }), "attitude_model: gamma1 must be finite (got nan)");
   EXPECT_EQ(msg([](auto& p) { p.gamma2 = INFINITY; }), "attitude_model: gamma2 must be finite (got inf)");
-  EXPECT_EQ(msg([](auto& p) { p.gyro_range = -1; }), "attitude_model: gyro_range must be > 0 (infinity allowed) (got -1)");
-  EXPECT_EQ(msg([](auto& p) { p.accelerometer_height = NAN; }), "attitude_model: accelerometer_height must be finite (got nan)");
+  EXPECT_EQ(msg([](auto& p) { p.gyro_range = -1; }),
+            "attitude_model: gyro_range must be > 0 (infinity allowed) (got -1)");
+  EXPECT_EQ(msg([](auto& p) { p.accelerometer_height = NAN; }),
+            "attitude_model: accelerometer_height must be finite (got nan)");
   EXPECT_EQ(msg([](auto& p) { p.gravity = 0; }), "attitude_model: gravity must be finite and > 0 (got 0)");
   EXPECT_EQ(msg([](auto& p) { p.coefficients.alpha1 = 1.0; }), "attitude_model: alpha1 must be in [0, 1) (got 1)");
   EXPECT_EQ(msg([](auto& p) { p.coefficients.alpha2 = NAN; }), "attitude_model: alpha2 must be finite (got nan)");
   EXPECT_EQ(msg([](auto& p) { p.coefficients.alpha3 = NAN; }), "attitude_model: alpha3 must be finite (got nan)");
   EXPECT_EQ(msg([](auto& p) { p.coefficients.alpha4 = NAN; }), "attitude_model: alpha4 must be finite (got nan)");
-  EXPECT_EQ(msg([](auto& p) { p.coefficients.torque_gain = NAN; }), "attitude_model: torque_gain must be finite (got nan)");
+  EXPECT_EQ(msg([](auto& p) { p.coefficients.torque_gain = NAN; }),
+            "attitude_model: torque_gain must be finite (got nan)");
 }
 
 }  // namespace

@@ -14,7 +14,8 @@ namespace {
 // Ackermann's formula places exactly the requested poles on the linearisation.
 TEST(BalancingController, PlacesThePoles) {
   WheeledInvertedPendulum plant({});
-  for (const std::array<double, 4> poles : {std::array<double, 4>{-2, -3, -9, -10}, std::array<double, 4>{-1, -4, -6, -15}}) {
+  for (const std::array<double, 4> poles :
+       {std::array<double, 4>{-2, -3, -9, -10}, std::array<double, 4>{-1, -4, -6, -15}}) {
     BalancingController ctl({poles}, plant);
     const Eigen::Matrix4d Acl = plant.linear_a() - plant.linear_b() * ctl.gain();
     Eigen::Vector4d ev = Acl.eigenvalues().real();

@@ -54,8 +54,8 @@ inline AttitudeFilterParams filter_params(const WheeledInvertedPendulum& plant, 
 
 /// filters[0] closes the loop.
 inline ClosedLoopResult run_closed_loop(const WheeledInvertedPendulum& plant, std::vector<AttitudeFilter>& filters,
-                                        const GyroParams& gyro, const AccelerometerParams& acc,
-                                        std::uint64_t seed, double duration = 5.0, double dt = 0.01) {
+                                        const GyroParams& gyro, const AccelerometerParams& acc, std::uint64_t seed,
+                                        double duration = 5.0, double dt = 0.01) {
   ImuSensor imu(gyro, acc, plant.params().gravity, seed);
   BalancingController ctl({}, plant);
   MotionProfile profile({});

@@ -67,15 +67,22 @@ TEST(ImuSensor, EveryValidationError) {
     mutate(g, a, gravity);
     return testing::invalid_argument_message<ImuSensor>(g, a, gravity, std::uint64_t{1});
   };
-  EXPECT_EQ(msg([](auto& g, auto&, auto&) { g.noise_std = -1; }), "imu_sensor: gyro.noise_std must be finite and >= 0 (got -1)");
+  EXPECT_EQ(msg([](auto& g, auto&, auto&) { g.noise_std = -1; }),
+            "imu_sensor: gyro.noise_std must be finite and >= 0 (got -1)");
   EXPECT_EQ(msg([](auto& g, auto&, auto&) { g.gamma1 = NAN; }), "imu_sensor: gyro.gamma1 must be finite (got nan)");
   EXPECT_EQ(msg([](auto& g, auto&, auto&) { g.gamma2 = NAN; }), "imu_sensor: gyro.gamma2 must be finite (got nan)");
-  EXPECT_EQ(msg([](auto& g, auto&, auto&) { g.drift_noise_psd = -1; }), "imu_sensor: gyro.drift_noise_psd must be finite and >= 0 (got -1)");
-  EXPECT_EQ(msg([](auto& g, auto&, auto&) { g.initial_drift = INFINITY; }), "imu_sensor: gyro.initial_drift must be finite (got inf)");
-  EXPECT_EQ(msg([](auto& g, auto&, auto&) { g.range = 0; }), "imu_sensor: gyro.range must be > 0 (infinity allowed) (got 0)");
-  EXPECT_EQ(msg([](auto&, auto& a, auto&) { a.noise_std = -1; }), "imu_sensor: accelerometer.noise_std must be finite and >= 0 (got -1)");
-  EXPECT_EQ(msg([](auto&, auto& a, auto&) { a.height = NAN; }), "imu_sensor: accelerometer.height must be finite (got nan)");
-  EXPECT_EQ(msg([](auto&, auto& a, auto&) { a.range = -3; }), "imu_sensor: accelerometer.range must be > 0 (infinity allowed) (got -3)");
+  EXPECT_EQ(msg([](auto& g, auto&, auto&) { g.drift_noise_psd = -1; }),
+            "imu_sensor: gyro.drift_noise_psd must be finite and >= 0 (got -1)");
+  EXPECT_EQ(msg([](auto& g, auto&, auto&) { g.initial_drift = INFINITY; }),
+            "imu_sensor: gyro.initial_drift must be finite (got inf)");
+  EXPECT_EQ(msg([](auto& g, auto&, auto&) { g.range = 0; }),
+            "imu_sensor: gyro.range must be > 0 (infinity allowed) (got 0)");
+  EXPECT_EQ(msg([](auto&, auto& a, auto&) { a.noise_std = -1; }),
+            "imu_sensor: accelerometer.noise_std must be finite and >= 0 (got -1)");
+  EXPECT_EQ(msg([](auto&, auto& a, auto&) { a.height = NAN; }),
+            "imu_sensor: accelerometer.height must be finite (got nan)");
+  EXPECT_EQ(msg([](auto&, auto& a, auto&) { a.range = -3; }),
+            "imu_sensor: accelerometer.range must be > 0 (infinity allowed) (got -3)");
   EXPECT_EQ(msg([](auto&, auto&, auto& gr) { gr = 0; }), "imu_sensor: gravity must be finite and > 0 (got 0)");
 }
 

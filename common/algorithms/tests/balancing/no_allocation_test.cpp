@@ -8,11 +8,10 @@
 #include <cstdlib>
 #include <new>
 
+#include "closed_loop.hpp"
 #include "plexus/algorithms/balancing/attitude_filter.hpp"
 #include "plexus/algorithms/balancing/balancing_controller.hpp"
 #include "plexus/algorithms/balancing/imu_sensor.hpp"
-#include "closed_loop.hpp"
-
 
 namespace plexus::algorithms {
 namespace {
@@ -23,10 +22,14 @@ TEST(NoAllocation, BalancingHotPathsDoNotAllocate) {
   ImuSensor imu(gyro, {}, 9.81, 1);
   BalancingController ctl({}, plant);
   MotionProfile profile({});
-  AttitudeFilter f1(testing::filter_params(plant, AttitudeFilterKind::kUkfAugmented, AttitudeMeasurementForm::kObservable, gyro));
-  AttitudeFilter f2(testing::filter_params(plant, AttitudeFilterKind::kUkfAdditive, AttitudeMeasurementForm::kPaper, gyro));
-  AttitudeFilter f3(testing::filter_params(plant, AttitudeFilterKind::kEkf, AttitudeMeasurementForm::kObservable, gyro));
-  AttitudeFilter f4(testing::filter_params(plant, AttitudeFilterKind::kUkfAugmented, AttitudeMeasurementForm::kPaper, gyro));
+  AttitudeFilter f1(
+      testing::filter_params(plant, AttitudeFilterKind::kUkfAugmented, AttitudeMeasurementForm::kObservable, gyro));
+  AttitudeFilter f2(
+      testing::filter_params(plant, AttitudeFilterKind::kUkfAdditive, AttitudeMeasurementForm::kPaper, gyro));
+  AttitudeFilter f3(
+      testing::filter_params(plant, AttitudeFilterKind::kEkf, AttitudeMeasurementForm::kObservable, gyro));
+  AttitudeFilter f4(
+      testing::filter_params(plant, AttitudeFilterKind::kUkfAugmented, AttitudeMeasurementForm::kPaper, gyro));
   WheeledPendulumState s;
   double T = 0;
   const long before = plexus::test::allocations();

@@ -95,16 +95,24 @@ TEST(WheeledInvertedPendulum, EveryValidationError) {
     mutate(p);
     return invalid_argument_message<WheeledInvertedPendulum>(p);
   };
-  EXPECT_EQ(msg([](auto& p) { p.body_mass = 0; }), "wheeled_inverted_pendulum: body_mass must be finite and > 0 (got 0)");
-  EXPECT_EQ(msg([](auto& p) { p.com_height = -1; }), "wheeled_inverted_pendulum: com_height must be finite and > 0 (got -1)");
-  EXPECT_EQ(msg([](auto& p) { p.body_inertia = -1; }), "wheeled_inverted_pendulum: body_inertia must be finite and >= 0 (got -1)");
-  EXPECT_EQ(msg([](auto& p) { p.wheel_mass = NAN; }), "wheeled_inverted_pendulum: wheel_mass must be finite and >= 0 (got nan)");
-  EXPECT_EQ(msg([](auto& p) { p.wheel_radius = 0; }), "wheeled_inverted_pendulum: wheel_radius must be finite and > 0 (got 0)");
-  EXPECT_EQ(msg([](auto& p) { p.wheel_inertia = -2; }), "wheeled_inverted_pendulum: wheel_inertia must be finite and >= 0 (got -2)");
+  EXPECT_EQ(msg([](auto& p) { p.body_mass = 0; }),
+            "wheeled_inverted_pendulum: body_mass must be finite and > 0 (got 0)");
+  EXPECT_EQ(msg([](auto& p) { p.com_height = -1; }),
+            "wheeled_inverted_pendulum: com_height must be finite and > 0 (got -1)");
+  EXPECT_EQ(msg([](auto& p) { p.body_inertia = -1; }),
+            "wheeled_inverted_pendulum: body_inertia must be finite and >= 0 (got -1)");
+  EXPECT_EQ(msg([](auto& p) { p.wheel_mass = NAN; }),
+            "wheeled_inverted_pendulum: wheel_mass must be finite and >= 0 (got nan)");
+  EXPECT_EQ(msg([](auto& p) { p.wheel_radius = 0; }),
+            "wheeled_inverted_pendulum: wheel_radius must be finite and > 0 (got 0)");
+  EXPECT_EQ(msg([](auto& p) { p.wheel_inertia = -2; }),
+            "wheeled_inverted_pendulum: wheel_inertia must be finite and >= 0 (got -2)");
   EXPECT_EQ(msg([](auto& p) { p.gravity = 0; }), "wheeled_inverted_pendulum: gravity must be finite and > 0 (got 0)");
-  EXPECT_EQ(msg([](auto& p) { p.max_torque = 0; }), "wheeled_inverted_pendulum: max_torque must be > 0 (infinity allowed) (got 0)");
+  EXPECT_EQ(msg([](auto& p) { p.max_torque = 0; }),
+            "wheeled_inverted_pendulum: max_torque must be > 0 (infinity allowed) (got 0)");
   EXPECT_EQ(msg([](auto& p) { p.body_inertia = 0, p.wheel_mass = 0, p.wheel_inertia = 0; }),
-            "wheeled_inverted_pendulum: body_inertia must be > 0 when wheel_mass and wheel_inertia are 0 (alpha1 < 1) (got 0)");
+            "wheeled_inverted_pendulum: body_inertia must be > 0 when wheel_mass and wheel_inertia are 0 (alpha1 < 1) "
+            "(got 0)");
   EXPECT_EQ(msg([](auto& p) { p.max_torque = std::numeric_limits<double>::infinity(); }), "");
 }
 

@@ -182,7 +182,6 @@ TEST(Ekf, RejectsNonFiniteInputsAndKeepsEstimate) {
   EXPECT_EQ(ekf.covariance(), Mat2::Identity());
 }
 
-
 TEST(Ekf, EveryValidationError) {
   EkfOptions o;
   o.min_eigenvalue = -1.0;

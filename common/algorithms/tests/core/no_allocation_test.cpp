@@ -14,7 +14,6 @@
 #include "plexus/algorithms/core/ekf.hpp"
 #include "plexus/algorithms/core/ukf.hpp"
 
-
 namespace plexus::algorithms {
 namespace {
 

@@ -26,8 +26,8 @@ double rel(const auto& a, const auto& b) { return (a - b).norm() / (1.0 + b.norm
 // Both UKF forms equal the Kalman filter on a linear-Gaussian problem, step by step,
 // for several sigma-point scalings (paper 002's alpha range included).
 TEST(Ukf, EqualsKalmanFilterOnLinearGaussianProblem) {
-  for (const UnscentedParams p : {UnscentedParams{1.0, 2.0, 0.0}, UnscentedParams{0.1, 2.0, 0.0},
-                                  UnscentedParams{0.5, 2.0, 1.0}}) {
+  for (const UnscentedParams p :
+       {UnscentedParams{1.0, 2.0, 0.0}, UnscentedParams{0.1, 2.0, 0.0}, UnscentedParams{0.5, 2.0, 1.0}}) {
     Rng rng(11);
     const Mat3 A = Mat3::Identity() + random_matrix<3, 3>(rng, 0.1);
     const Vec3 b = random_matrix<3, 1>(rng);
@@ -49,7 +49,8 @@ TEST(Ukf, EqualsKalmanFilterOnLinearGaussianProblem) {
       ASSERT_TRUE(aug.predict([&](const Vec3& x, const Vec3& w) -> Vec3 { return A * x + b + w; }, Q, R));
       const Vec2 z = random_matrix<2, 1>(rng, 2.0);
       kf.update<2>(z, H, R);
-      ASSERT_TRUE(add.update<2>(z, [&](const Vec3& x) -> Vec2 { return H * x; }, R));
+      ASSERT_TRUE(add.update<2>(
+          z, [&](const Vec3& x) -> Vec2 { return H * x; }, R));
       ASSERT_TRUE(aug.update<2>(z, [&](const Vec3& x, const Vec2& v) -> Vec2 { return H * x + v; }));
       const double tol = 1e-9 / (p.alpha * p.alpha);
       ASSERT_LT(rel(add.state(), kf.x), tol) << "alpha " << p.alpha << " k " << k;
@@ -73,8 +74,8 @@ TEST(Ukf, AugmentedAndAdditiveAgreeWhenNoiseIsAdditive) {
   const Mat3 Q = Vec3(1e-5, 4e-4, 1e-6).asDiagonal();
   const Eigen::Matrix<double, 1, 1> R(1e-4);
   UkfOptions oa, ob;
-  oa.sigma = {0.8, 2.0, 0.0};                  // L = 3 + 3 + 1 = 7: alpha^2 (7 + 0)
-  ob.sigma = {0.8, 2.0, 4.0};                  // L = 3: alpha^2 (3 + 4), same spread
+  oa.sigma = {0.8, 2.0, 0.0};  // L = 3 + 3 + 1 = 7: alpha^2 (7 + 0)
+  ob.sigma = {0.8, 2.0, 4.0};  // L = 3: alpha^2 (3 + 4), same spread
   AugmentedUkf<3, 3, 1> aug(oa);
   AdditiveUkf<3> add(ob);
   const Vec3 x0(0.2, -0.5, 0.01);
@@ -91,7 +92,9 @@ TEST(Ukf, AugmentedAndAdditiveAgreeWhenNoiseIsAdditive) {
   Rng rng(3);
   for (int k = 0; k < 200; ++k) {
     const Eigen::Matrix<double, 1, 1> z(std::sin(0.2 + 0.001 * k) + rng.normal(0.0, 0.01));
-    ASSERT_TRUE(aug.update<1>(z, [&](const Vec3& x, const Eigen::Matrix<double, 1, 1>& v) -> Eigen::Matrix<double, 1, 1> { return h(x) + v; }));
+    ASSERT_TRUE(aug.update<1>(
+        z,
+        [&](const Vec3& x, const Eigen::Matrix<double, 1, 1>& v) -> Eigen::Matrix<double, 1, 1> { return h(x) + v; }));
     ASSERT_TRUE(add.update<1>(z, h, R));
     ASSERT_TRUE(aug.predict([&](const Vec3& x, const Vec3& w) -> Vec3 { return g(x) + w; }, Q, R));
     ASSERT_TRUE(add.predict(g, Q));
@@ -121,11 +124,14 @@ TEST(Ukf, CovarianceStaysSymmetricPositiveDefinite) {
   ukf.reset(Vec2(1.0, 0.0), Mat2::Identity());
   Rng rng(5);
   for (int k = 0; k < 2000; ++k) {
-    ASSERT_TRUE(ukf.predict([](const Vec2& x) -> Vec2 { return {x(0) + 0.01 * x(1), x(1) - 0.01 * std::sin(x(0))}; },
-                            Vec2(1e-10, 1e-8).asDiagonal()));
+    ASSERT_TRUE(ukf.predict(
+        [](const Vec2& x) -> Vec2 {
+          return {x(0) + 0.01 * x(1), x(1) - 0.01 * std::sin(x(0))};
+        },
+        Vec2(1e-10, 1e-8).asDiagonal()));
     const Eigen::Matrix<double, 1, 1> z(rng.normal(0.0, 1e-6));
-    ASSERT_TRUE(ukf.update<1>(z, [](const Vec2& x) { return Eigen::Matrix<double, 1, 1>(x(0)); },
-                              Eigen::Matrix<double, 1, 1>(1e-12)));
+    ASSERT_TRUE(ukf.update<1>(
+        z, [](const Vec2& x) { return Eigen::Matrix<double, 1, 1>(x(0)); }, Eigen::Matrix<double, 1, 1>(1e-12)));
     const Mat2& P = ukf.covariance();
     ASSERT_EQ(P, P.transpose());
     ASSERT_TRUE(is_symmetric_positive_definite<2>(P)) << k;
@@ -143,9 +149,9 @@ TEST(Ukf, AngularStateAcrossPi) {
   EXPECT_NEAR(ukf.state()(0), -pi + 0.03, 1e-9);
   EXPECT_LT(ukf.covariance()(0, 0), 0.02);
   // Measuring the angle (wrapped) near -pi + 0.03 with a reading of pi - 0.01 is a residual of -0.04.
-  ASSERT_TRUE(ukf.update<1>(Eigen::Matrix<double, 1, 1>(pi - 0.01),
-                            [](const Vec2& x) { return Eigen::Matrix<double, 1, 1>(x(0)); },
-                            Eigen::Matrix<double, 1, 1>(1e-4), 0b1));
+  ASSERT_TRUE(ukf.update<1>(
+      Eigen::Matrix<double, 1, 1>(pi - 0.01), [](const Vec2& x) { return Eigen::Matrix<double, 1, 1>(x(0)); },
+      Eigen::Matrix<double, 1, 1>(1e-4), 0b1));
   EXPECT_NEAR(ukf.state()(0), pi - 0.0099, 2e-3);
 }
 
@@ -170,7 +176,6 @@ TEST(Ukf, RejectsNonFiniteInputsAndKeepsEstimate) {
   EXPECT_EQ(ukf.state(), Vec2(1, 2));
   EXPECT_EQ(ukf.covariance(), Mat2::Identity());
 }
-
 
 TEST(Ukf, EveryValidationError) {
   UkfOptions o;

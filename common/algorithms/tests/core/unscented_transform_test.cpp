@@ -56,8 +56,8 @@ TEST(UnscentedWeights, EveryValidationError) {
 // exactly: y = A x + b has mean A x + b, covariance A P A^T, cross-covariance P A^T.
 TEST(UnscentedTransform, ExactForAffineMaps) {
   Rng rng(7);
-  for (const UnscentedParams p : {UnscentedParams{1.0, 2.0, 0.0}, UnscentedParams{1e-2, 2.0, 0.0},
-                                  UnscentedParams{0.3, 1.0, 2.0}}) {
+  for (const UnscentedParams p :
+       {UnscentedParams{1.0, 2.0, 0.0}, UnscentedParams{1e-2, 2.0, 0.0}, UnscentedParams{0.3, 1.0, 2.0}}) {
     for (int trial = 0; trial < 20; ++trial) {
       const auto w = UnscentedWeights<5>::make(p, "ut");
       Eigen::Matrix<double, 5, 1> x;
@@ -106,7 +106,8 @@ TEST(UnscentedTransform, SemiDefiniteCovarianceUsesEigenSquareRoot) {
   Eigen::Matrix<double, 3, 7> X;
   ASSERT_TRUE(make_sigma_points<3>(Eigen::Vector3d(1, 2, 3), P, w, X));
   Eigen::Matrix3d Px = Eigen::Matrix3d::Zero();
-  for (int i = 0; i < 7; ++i) Px += w.cov_weight(i) * (X.col(i) - Eigen::Vector3d(1, 2, 3)) * (X.col(i) - Eigen::Vector3d(1, 2, 3)).transpose();
+  for (int i = 0; i < 7; ++i)
+    Px += w.cov_weight(i) * (X.col(i) - Eigen::Vector3d(1, 2, 3)) * (X.col(i) - Eigen::Vector3d(1, 2, 3)).transpose();
   EXPECT_LT((Px - P).norm(), 1e-12);
   P(1, 1) = NAN;
   EXPECT_FALSE(make_sigma_points<3>(Eigen::Vector3d(1, 2, 3), P, w, X));

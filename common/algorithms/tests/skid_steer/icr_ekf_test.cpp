@@ -6,11 +6,11 @@
 #include <functional>
 #include <numbers>
 
+#include "../support/validation_message.hpp"
 #include "plexus/algorithms/core/random.hpp"
 #include "plexus/algorithms/skid_steer/driving_pattern.hpp"
 #include "plexus/algorithms/skid_steer/skid_steer_plant.hpp"
 #include "plexus/algorithms/skid_steer/skid_steer_sensors.hpp"
-#include "../support/validation_message.hpp"
 
 namespace plexus::algorithms {
 namespace {
@@ -32,8 +32,7 @@ TEST(IcrEkf, AnalyticJacobianMatchesFiniteDifferences) {
   for (int trial = 0; trial < 500; ++trial) {
     IcrVector x;
     const double yr = rng.uniform(-1.5, -0.05);
-    x << rng.uniform(-10, 10), rng.uniform(-10, 10), rng.uniform(-7, 7), rng.uniform(0.05, 1.5), yr,
-        rng.uniform(-1, 1);
+    x << rng.uniform(-10, 10), rng.uniform(-10, 10), rng.uniform(-7, 7), rng.uniform(0.05, 1.5), yr, rng.uniform(-1, 1);
     const TrackSpeeds u{rng.uniform(-1, 1), rng.uniform(-1, 1)};
     const double dt = rng.uniform(0.001, 0.1);
     const IcrMatrix F = IcrEkf::jacobian(x, u, dt);
@@ -100,7 +99,8 @@ TEST(IcrEkf, ConvergesToTheTrueIcrsOnOneTerrain) {
 }
 
 TEST(IcrEkf, CovarianceStaysSymmetricPositiveDefiniteOverLongRuns) {
-  for (const auto model : {ProcessNoiseModel::kDtSquared, ProcessNoiseModel::kContinuous, ProcessNoiseModel::kPerStep}) {
+  for (const auto model :
+       {ProcessNoiseModel::kDtSquared, ProcessNoiseModel::kContinuous, ProcessNoiseModel::kPerStep}) {
     IcrEkfParams p;
     p.process_noise = model;
     SimRun run{p, {{0.0, 0}, {100.0, 1}, {200.0, 2}}};

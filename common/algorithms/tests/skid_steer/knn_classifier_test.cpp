@@ -33,8 +33,15 @@ KnnParams params(int k, KnnTieRule tie = KnnTieRule::kNearest, FeatureScaling sc
 std::vector<double> q(double x, double y) { return {x, y}; }
 
 TEST(KnnClassifier, SeparatedClustersAreClassifiedByMajority) {
-  const TrainingSet s = make_set({{0, {0, 0}}, {0, {0, 1}}, {0, {1, 0}}, {1, {10, 10}}, {1, {10, 11}}, {1, {11, 10}},
-                                  {2, {0, 10}}, {2, {1, 10}}, {2, {0, 11}}});
+  const TrainingSet s = make_set({{0, {0, 0}},
+                                  {0, {0, 1}},
+                                  {0, {1, 0}},
+                                  {1, {10, 10}},
+                                  {1, {10, 11}},
+                                  {1, {11, 10}},
+                                  {2, {0, 10}},
+                                  {2, {1, 10}},
+                                  {2, {0, 11}}});
   for (int k : {1, 3, 5}) {
     const KnnClassifier c(s, params(k));
     EXPECT_EQ(c.classify(q(0.2, 0.3)).label, 0) << k;
@@ -66,7 +73,7 @@ TEST(KnnClassifier, TieRules) {
   EXPECT_EQ(KnnClassifier(s, params(4, KnnTieRule::kNearest)).classify(q(0, 0)).label, 5);
   EXPECT_EQ(KnnClassifier(s, params(4, KnnTieRule::kLowestLabel)).classify(q(0, 0)).label, 2);
   const KnnResult shrink = KnnClassifier(s, params(4, KnnTieRule::kShrinkK)).classify(q(0, 0));
-  EXPECT_EQ(shrink.label, 5);      // k = 3: class 5 has 2 of 3
+  EXPECT_EQ(shrink.label, 5);  // k = 3: class 5 has 2 of 3
   EXPECT_EQ(shrink.neighbours, 3);
   // k = 2: shrink_k drops to k = 1 (the nearest, class 5); lowest_label says 2.
   EXPECT_EQ(KnnClassifier(s, params(2, KnnTieRule::kShrinkK)).classify(q(0, 0)).neighbours, 1);
@@ -80,8 +87,8 @@ TEST(KnnClassifier, EqualDistancesGoToTheEarlierTrainingSample) {
 
 TEST(KnnClassifier, StandardizingStopsOneLargeFeatureFromDominating) {
   // Feature 0 spans thousands but says nothing; feature 1 separates the classes by 1.
-  const TrainingSet s = make_set({{0, {0, 0}}, {0, {2900, 0.1}}, {0, {1500, 0}}, {1, {0, 1}}, {1, {3000, 1.1}},
-                                  {1, {1500, 1}}});
+  const TrainingSet s =
+      make_set({{0, {0, 0}}, {0, {2900, 0.1}}, {0, {1500, 0}}, {1, {0, 1}}, {1, {3000, 1.1}}, {1, {1500, 1}}});
   const auto query = q(2900, 0.95);  // clearly class 1 on feature 1
   EXPECT_EQ(KnnClassifier(s, params(1, KnnTieRule::kNearest, FeatureScaling::kNone)).classify(query).label, 0);
   EXPECT_EQ(KnnClassifier(s, params(1, KnnTieRule::kNearest, FeatureScaling::kStandardize)).classify(query).label, 1);
@@ -90,7 +97,8 @@ TEST(KnnClassifier, StandardizingStopsOneLargeFeatureFromDominating) {
 
 TEST(KnnClassifier, ConstantFeatureDoesNotDivideByZero) {
   const TrainingSet s = make_set({{0, {1, 0}}, {1, {1, 1}}});
-  const KnnResult r = KnnClassifier(s, params(1, KnnTieRule::kNearest, FeatureScaling::kStandardize)).classify(q(1, 0.9));
+  const KnnResult r =
+      KnnClassifier(s, params(1, KnnTieRule::kNearest, FeatureScaling::kStandardize)).classify(q(1, 0.9));
   EXPECT_EQ(r.label, 1);
   EXPECT_TRUE(std::isfinite(r.nearest_distance));
 }
@@ -102,14 +110,16 @@ TEST(KnnClassifier, RejectsBadParameters) {
             "knn_classifier: k must be in 1..2 (the training samples) (got 0)");
   EXPECT_EQ(invalid_argument_message<KnnClassifier>(s, params(3)),
             "knn_classifier: k must be in 1..2 (the training samples) (got 3)");
-  EXPECT_EQ(invalid_argument_message<KnnClassifier>(TrainingSet{}, params(1)), "knn_classifier: the training set is empty");
+  EXPECT_EQ(invalid_argument_message<KnnClassifier>(TrainingSet{}, params(1)),
+            "knn_classifier: the training set is empty");
   TrainingSet bad = s;
   bad.features.pop_back();
   EXPECT_EQ(invalid_argument_message<KnnClassifier>(bad, params(1)),
             "knn_classifier: training features do not match labels x features");
   bad = s;
   bad.features[0] = std::nan("");
-  EXPECT_EQ(invalid_argument_message<KnnClassifier>(bad, params(1)), "knn_classifier: training features must be finite");
+  EXPECT_EQ(invalid_argument_message<KnnClassifier>(bad, params(1)),
+            "knn_classifier: training features must be finite");
   bad = s;
   bad.labels[0] = -1;
   EXPECT_EQ(invalid_argument_message<KnnClassifier>(bad, params(1)), "knn_classifier: label must be >= 0 (got -1)");

@@ -19,7 +19,6 @@
 #include "plexus/algorithms/skid_steer/terrain_change_detector.hpp"
 #include "plexus/algorithms/skid_steer/terrain_features.hpp"
 
-
 namespace plexus::algorithms {
 namespace {
 
@@ -39,7 +38,8 @@ TEST(NoAllocation, HotPathsDoNotAllocate) {
   set.layout.features = features.size();
   for (int i = 0; i < 45; ++i) {
     set.labels.push_back(i % 3);
-    for (std::size_t j = 0; j < features.size(); ++j) set.features.push_back(0.01 * (i % 3) + 0.001 * static_cast<double>(j));
+    for (std::size_t j = 0; j < features.size(); ++j)
+      set.features.push_back(0.01 * (i % 3) + 0.001 * static_cast<double>(j));
   }
   const KnnClassifier knn(set, {});
   TerrainChangeDetector detector;

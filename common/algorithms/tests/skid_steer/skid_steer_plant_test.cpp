@@ -7,11 +7,11 @@
 #include <numbers>
 #include <vector>
 
+#include "../support/validation_message.hpp"
 #include "plexus/algorithms/skid_steer/driving_pattern.hpp"
 #include "plexus/algorithms/skid_steer/icr_odometry.hpp"
 #include "plexus/algorithms/skid_steer/terrain_change_detector.hpp"
 #include "plexus/algorithms/skid_steer/terrain_features.hpp"
-#include "../support/validation_message.hpp"
 
 namespace plexus::algorithms {
 namespace {
@@ -199,7 +199,7 @@ TEST(DrivingPattern, PatternsGiveTheirNominalMotion) {
   p.kind = DrivingPatternKind::kFigureEight;
   p.period = 20;
   const DrivingPattern eight(p);
-  EXPECT_GT(eight.at(5.0).v_r, eight.at(5.0).v_l);   // left turn in the first half
+  EXPECT_GT(eight.at(5.0).v_r, eight.at(5.0).v_l);    // left turn in the first half
   EXPECT_LT(eight.at(15.0).v_r, eight.at(15.0).v_l);  // right turn in the second
   // A figure-eight closes: the no-slip heading returns to 0 after one period.
   double heading = 0;
@@ -226,7 +226,8 @@ TEST(DrivingPattern, RejectsBadParameters) {
   p.kind = DrivingPatternKind::kSegments;
   EXPECT_EQ(invalid_argument_message<DrivingPattern>(p), "driving_pattern: segments must not be empty");
   p.segments = {{0.0, 0.1, 0.1}};
-  EXPECT_EQ(invalid_argument_message<DrivingPattern>(p), "driving_pattern: segments[0].duration_s must be finite and > 0 (got 0)");
+  EXPECT_EQ(invalid_argument_message<DrivingPattern>(p),
+            "driving_pattern: segments[0].duration_s must be finite and > 0 (got 0)");
   p = {};
   p.period = -1;
   EXPECT_EQ(invalid_argument_message<DrivingPattern>(p), "driving_pattern: period must be finite and > 0 (got -1)");

@@ -8,8 +8,8 @@
 #include <thread>
 #include <vector>
 
-#include "plexus/algorithms/core/random.hpp"
 #include "../support/validation_message.hpp"
+#include "plexus/algorithms/core/random.hpp"
 
 namespace plexus::algorithms {
 namespace {
@@ -106,7 +106,8 @@ TEST(PsdFeatures, RejectsBadParametersAndSizes) {
             "psd_features: max_hz must be > min_hz and <= the Nyquist frequency 50 Hz (got 60)");
   p = {};
   p.sample_rate_hz = 0;
-  EXPECT_EQ(invalid_argument_message<PsdFeatureExtractor>(p), "psd_features: sample_rate_hz must be finite and > 0 (got 0)");
+  EXPECT_EQ(invalid_argument_message<PsdFeatureExtractor>(p),
+            "psd_features: sample_rate_hz must be finite and > 0 (got 0)");
   p = {};
   p.min_hz = 1.2;
   p.max_hz = 1.8;
@@ -125,8 +126,14 @@ TEST(PsdFeatures, RejectsBadParametersAndSizes) {
 TEST(PsdFeatures, ExtractorsOnSeveralThreadsAgree) {
   std::vector<double> a(50), b(50);
   const auto x = tone(13, 100, 100, 1.0, 0.0);
-  std::thread t1([&] { PsdFeatureExtractor e({}); e.compute(x, a); });
-  std::thread t2([&] { PsdFeatureExtractor e({}); e.compute(x, b); });
+  std::thread t1([&] {
+    PsdFeatureExtractor e({});
+    e.compute(x, a);
+  });
+  std::thread t2([&] {
+    PsdFeatureExtractor e({});
+    e.compute(x, b);
+  });
   t1.join();
   t2.join();
   EXPECT_EQ(a, b);

@@ -70,7 +70,8 @@ TEST(TerrainIcrLibrary, BadFilesNameTheLineAndWhatIsWrong) {
   EXPECT_EQ(error_of(head + "class 0 a 1 -1 0 1 1 1\n"),
             ":2: class: expected id, name, y_l, y_r, x_G, sd_y_l, sd_y_r, sd_x_G, samples");
   EXPECT_EQ(error_of(head + "class 0 a 1 -1 nan 1 1 1 5\n"), ":2: x_G: expected a finite number, got 'nan'");
-  EXPECT_EQ(error_of(head + "class 0 a -1 1 0 1 1 1 5\n"), ":2: y_l must be greater than y_r (left track left of the right one)");
+  EXPECT_EQ(error_of(head + "class 0 a -1 1 0 1 1 1 5\n"),
+            ":2: y_l must be greater than y_r (left track left of the right one)");
   EXPECT_EQ(error_of(head + "class 0 a 1 -1 0 1 0 1 5\n"), ":2: sd: must be > 0");
   EXPECT_EQ(error_of(head + "class 0 a 1 -1 0 1 1 1 5\nclass 0 b 1 -1 0 1 1 1 5\n"), ":3: class 0 is listed twice");
   EXPECT_EQ(error_of(head + "class -1 a 1 -1 0 1 1 1 5\n"), ":2: class id: must be an integer >= 0");

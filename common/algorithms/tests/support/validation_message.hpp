@@ -1,4 +1,5 @@
-// Test helper shared by the family test binaries: the std::invalid_argument message raised by constructing T from args, "" if none.
+// Test helper shared by the family test binaries: the std::invalid_argument message raised by constructing T from args,
+// "" if none.
 #pragma once
 
 #include <stdexcept>

@@ -17,7 +17,6 @@
 #include "plexus/algorithms/unicycle/tracking_controller.hpp"
 #include "plexus/algorithms/unicycle/velocity_heading_observer.hpp"
 
-
 namespace plexus::algorithms {
 namespace {
 

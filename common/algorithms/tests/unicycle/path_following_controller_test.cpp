@@ -45,8 +45,8 @@ TEST(PathFollowing, StateFeedbackFollowsTheLinearisedErrorDynamics) {
 }
 
 struct ObserverRun {
-  double h = 0, h_dot = 0, e = 0;            // at the end
-  double max_abs_h_tail = 0;                 // max |h| over the last 5 s
+  double h = 0, h_dot = 0, e = 0;  // at the end
+  double max_abs_h_tail = 0;       // max |h| over the last 5 s
   bool saturated = false;
 };
 
@@ -84,8 +84,7 @@ ObserverRun run_observer_based(const GeometricPath& path, UnicycleState s, Eigen
 
 TEST(PathFollowing, ObserverBasedOnTheUnitCircleDrivesPathAndObserverErrorsToZero) {
   GeometricPath circle(CirclePath{});
-  const ObserverRun r =
-      run_observer_based(circle, {1.2, 0.0, std::numbers::pi / 2 + 0.3}, {0.3, 0.6}, 20.0, true);
+  const ObserverRun r = run_observer_based(circle, {1.2, 0.0, std::numbers::pi / 2 + 0.3}, {0.3, 0.6}, 20.0, true);
   EXPECT_FALSE(r.saturated);
   EXPECT_LT(std::abs(r.h), 1e-6);
   EXPECT_LT(std::abs(r.h_dot), 1e-6);

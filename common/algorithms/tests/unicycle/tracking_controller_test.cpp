@@ -162,8 +162,8 @@ TEST(TrajectoryTracking, FiniteAndContinuousWhenSpeedVanishes) {
       // Documented bound: |theta*'| <= v (|x_r''| + |f'|) / max(v, v_eps)^2 with
       // |f_i'| <= k_i (v + |x_r'|): the feedforward vanishes with v instead of diverging.
       const double v = out.input.v;
-      const double bound = v * (ref.ddp.norm() + (p.k1 + p.k2) * (v + ref.dp.norm())) /
-                           std::pow(std::max(v, p.min_speed_for_turn), 2);
+      const double bound =
+          v * (ref.ddp.norm() + (p.k1 + p.k2) * (v + ref.dp.norm())) / std::pow(std::max(v, p.min_speed_for_turn), 2);
       EXPECT_LE(std::abs(out.theta_star_dot), bound * (1 + 1e-12) + 1e-300);
       EXPECT_EQ(out.speed_floored, v < p.min_speed_for_turn);
     }
@@ -223,8 +223,8 @@ TEST(TrajectoryTracking, GainConditionWarnsForThePaperGains) {
   EXPECT_NE(warning->find("k1 = 0.11"), std::string::npos);
   EXPECT_NE(warning->find("v_rm = 0.06959"), std::string::npos);
   // The ratio is about 12 (paper 000, docs/papers.md): lhs 0.0242 vs (4 / pi^2) v_rm^2 = 0.00196.
-  const double ratio = 0.0242 / (p.gamma * p.gamma * 4 / (std::numbers::pi * std::numbers::pi) *
-                                 std::pow(ref.min_speed(), 2));
+  const double ratio =
+      0.0242 / (p.gamma * p.gamma * 4 / (std::numbers::pi * std::numbers::pi) * std::pow(ref.min_speed(), 2));
   EXPECT_NEAR(ratio, 12.3, 0.1);
   EXPECT_NE(warning->find("12.3"), std::string::npos) << *warning;
   // Gains that satisfy (15) give no warning; invalid inputs throw.

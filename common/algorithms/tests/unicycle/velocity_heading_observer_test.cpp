@@ -47,9 +47,9 @@ TEST_P(VelocityObserverRate, ErrorNormDecaysAtMinGain) {
 }
 
 INSTANTIATE_TEST_SUITE_P(PaperAndVariants, VelocityObserverRate,
-                         ::testing::Values(Case{2.0, 2.0, 1.0, 1.0, 0.0},    // paper 003, section 5
-                                           Case{2.0, 3.0, 0.8, 0.2, 0.5},    // u2 above |L2 - L4| / 2
-                                           Case{1.5, 6.0, 1.2, 0.3, 0.2},    // |L2 - L4| / 2 > |u2|
+                         ::testing::Values(Case{2.0, 2.0, 1.0, 1.0, 0.0},  // paper 003, section 5
+                                           Case{2.0, 3.0, 0.8, 0.2, 0.5},  // u2 above |L2 - L4| / 2
+                                           Case{1.5, 6.0, 1.2, 0.3, 0.2},  // |L2 - L4| / 2 > |u2|
                                            Case{3.0, 2.0, -0.7, -2.0, 1.0}));
 
 TEST(VelocityHeadingObserver, PaperStatesAndHeldPositionVariant) {

@@ -141,25 +141,25 @@ const MetricRegistration kAngleErrorStdDifference{
       };
     }};
 
-const MetricRegistration kAngleDeg{
-    "angle_deg", "statistic of one angle field, deg (stat: mean, std, max, min, max_abs, rms, final)",
-    [](const MetricSetup& s) -> MetricFunction {
-      const SignalSpec& sig = s.signal("signal");
-      const int f = s.field(sig, "field");
-      const Stat stat = parse_stat(s.params());
-      const auto span = s.window();
-      const double from = span.first, to = span.second;
-      return [=, a = sig.name, step = s.base_step()](const RunLog& log) {
-        const SignalTrace& ta = *log.find(a);
-        MetricResult r;
-        for (std::size_t i = 0; i < ta.size(); ++i) {
-          const double t = log.time(ta.steps[i]);
-          if (in_window(t, from, to, step)) r.series.emplace_back(t, ta.at(i, f) * kDeg);
-        }
-        r.value = reduce(r.series, stat);
-        return r;
-      };
-    }};
+const MetricRegistration kAngleDeg{"angle_deg",
+                                   "statistic of one angle field, deg (stat: mean, std, max, min, max_abs, rms, final)",
+                                   [](const MetricSetup& s) -> MetricFunction {
+                                     const SignalSpec& sig = s.signal("signal");
+                                     const int f = s.field(sig, "field");
+                                     const Stat stat = parse_stat(s.params());
+                                     const auto span = s.window();
+                                     const double from = span.first, to = span.second;
+                                     return [=, a = sig.name, step = s.base_step()](const RunLog& log) {
+                                       const SignalTrace& ta = *log.find(a);
+                                       MetricResult r;
+                                       for (std::size_t i = 0; i < ta.size(); ++i) {
+                                         const double t = log.time(ta.steps[i]);
+                                         if (in_window(t, from, to, step)) r.series.emplace_back(t, ta.at(i, f) * kDeg);
+                                       }
+                                       r.value = reduce(r.series, stat);
+                                       return r;
+                                     };
+                                   }};
 
 }  // namespace
 }  // namespace plexus::scenario

@@ -33,19 +33,19 @@ MetricFunction part(const MetricSetup& s, const std::string& key) {
   return f;
 }
 
-const MetricRegistration kRatio{
-    "ratio", "one metric of the run divided by another (numerator, denominator: metric entries)",
-    [](const MetricSetup& s) -> MetricFunction {
-      MetricFunction num = part(s, "numerator");
-      MetricFunction den = part(s, "denominator");
-      return [num = std::move(num), den = std::move(den)](const RunLog& log) {
-        MetricResult r;
-        const double a = num(log).value;
-        const double b = den(log).value;
-        r.value = b != 0.0 ? a / b : std::numeric_limits<double>::quiet_NaN();
-        return r;
-      };
-    }};
+const MetricRegistration kRatio{"ratio",
+                                "one metric of the run divided by another (numerator, denominator: metric entries)",
+                                [](const MetricSetup& s) -> MetricFunction {
+                                  MetricFunction num = part(s, "numerator");
+                                  MetricFunction den = part(s, "denominator");
+                                  return [num = std::move(num), den = std::move(den)](const RunLog& log) {
+                                    MetricResult r;
+                                    const double a = num(log).value;
+                                    const double b = den(log).value;
+                                    r.value = b != 0.0 ? a / b : std::numeric_limits<double>::quiet_NaN();
+                                    return r;
+                                  };
+                                }};
 
 }  // namespace
 }  // namespace plexus::scenario

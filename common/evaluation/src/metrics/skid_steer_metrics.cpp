@@ -53,7 +53,8 @@ Columns columns(const MetricSetup& s, const std::string& key, const std::vector<
   const SignalSpec& sig = s.signal(key);
   Columns c{sig.name, {}};
   for (const auto& f : s.fields({&sig}, "fields", names)) {
-    c.index.push_back(static_cast<std::size_t>(std::find(sig.fields.begin(), sig.fields.end(), f) - sig.fields.begin()));
+    c.index.push_back(
+        static_cast<std::size_t>(std::find(sig.fields.begin(), sig.fields.end(), f) - sig.fields.begin()));
   }
   return c;
 }
@@ -81,7 +82,9 @@ struct Held {
   }
 };
 
-bool in_window(double t, double from, double to, double step) { return t >= from - 1e-9 * step && t <= to + 1e-9 * step; }
+bool in_window(double t, double from, double to, double step) {
+  return t >= from - 1e-9 * step && t <= to + 1e-9 * step;
+}
 
 /// (t, largest |estimate - truth| over the fields, truth values) at every estimate sample in the window.
 struct ErrorSample {
@@ -111,65 +114,68 @@ std::vector<ErrorSample> errors(const RunLog& log, const Columns& est, const Col
   return out;
 }
 
-const MetricRegistration kRiseTime{
-    "icr_rise_time", "largest 10%->90% rise time of the ICR estimates towards their final values, s",
-    [](const MetricSetup& s) -> MetricFunction {
-      const Columns est = columns(s, "estimate", kIcrFields);
-      const auto span = s.window();
-      const double from = span.first, to = span.second;
-      const double avg = s.params().optional<double>("final_average_s", 1.0);
-      if (!(avg > 0.0) || avg > to - from) s.params().fail("final_average_s", "must be > 0 and fit in the window");
-      return [=](const RunLog& log) {
-        const SignalTrace& e = *log.find(est.signal);
-        std::vector<std::size_t> rows;
-        for (std::size_t i = 0; i < e.size(); ++i) {
-          if (in_window(log.time(e.steps[i]), from, to, log.base_step)) rows.push_back(i);
-        }
-        MetricResult r;
-        if (rows.size() < 2) return r;
-        double worst = -1.0;
-        for (std::size_t f : est.index) {
-          const double p0 = e.at(rows.front(), f);
-          double pf = 0.0;
-          int n = 0;
-          for (std::size_t i : rows) {
-            if (log.time(e.steps[i]) >= to - avg) pf += e.at(i, f), ++n;
-          }
-          pf /= n;
-          double t10 = kNaN, t90 = kNaN;
-          std::vector<std::pair<double, double>> progress;
-          for (std::size_t i : rows) {
-            const double t = log.time(e.steps[i]);
-            const double x = pf == p0 ? 1.0 : (e.at(i, f) - p0) / (pf - p0);
-            progress.emplace_back(t, x);
-            if (std::isnan(t10) && x >= 0.1) t10 = t;
-            if (std::isnan(t90) && x >= 0.9) t90 = t;
-          }
-          const double rise = std::isnan(t90) || std::isnan(t10) ? to - from : t90 - t10;
-          if (rise > worst) {
-            worst = rise;
-            r.series = std::move(progress);
-          }
-        }
-        r.value = worst;
-        return r;
-      };
-    }};
+const MetricRegistration kRiseTime{"icr_rise_time",
+                                   "largest 10%->90% rise time of the ICR estimates towards their final values, s",
+                                   [](const MetricSetup& s) -> MetricFunction {
+                                     const Columns est = columns(s, "estimate", kIcrFields);
+                                     const auto span = s.window();
+                                     const double from = span.first, to = span.second;
+                                     const double avg = s.params().optional<double>("final_average_s", 1.0);
+                                     if (!(avg > 0.0) || avg > to - from)
+                                       s.params().fail("final_average_s", "must be > 0 and fit in the window");
+                                     return [=](const RunLog& log) {
+                                       const SignalTrace& e = *log.find(est.signal);
+                                       std::vector<std::size_t> rows;
+                                       for (std::size_t i = 0; i < e.size(); ++i) {
+                                         if (in_window(log.time(e.steps[i]), from, to, log.base_step))
+                                           rows.push_back(i);
+                                       }
+                                       MetricResult r;
+                                       if (rows.size() < 2) return r;
+                                       double worst = -1.0;
+                                       for (std::size_t f : est.index) {
+                                         const double p0 = e.at(rows.front(), f);
+                                         double pf = 0.0;
+                                         int n = 0;
+                                         for (std::size_t i : rows) {
+                                           if (log.time(e.steps[i]) >= to - avg) pf += e.at(i, f), ++n;
+                                         }
+                                         pf /= n;
+                                         double t10 = kNaN, t90 = kNaN;
+                                         std::vector<std::pair<double, double>> progress;
+                                         for (std::size_t i : rows) {
+                                           const double t = log.time(e.steps[i]);
+                                           const double x = pf == p0 ? 1.0 : (e.at(i, f) - p0) / (pf - p0);
+                                           progress.emplace_back(t, x);
+                                           if (std::isnan(t10) && x >= 0.1) t10 = t;
+                                           if (std::isnan(t90) && x >= 0.9) t90 = t;
+                                         }
+                                         const double rise = std::isnan(t90) || std::isnan(t10) ? to - from : t90 - t10;
+                                         if (rise > worst) {
+                                           worst = rise;
+                                           r.series = std::move(progress);
+                                         }
+                                       }
+                                       r.value = worst;
+                                       return r;
+                                     };
+                                   }};
 
-const MetricRegistration kErrorFinal{
-    "icr_error_final", "largest absolute ICR estimate error at the end of the window, m",
-    [](const MetricSetup& s) -> MetricFunction {
-      const Columns est = columns(s, "estimate", kIcrFields);
-      const Columns tru = columns(s, "truth", kIcrFields);
-      const auto span = s.window();
-      const double from = span.first, to = span.second;
-      return [=](const RunLog& log) {
-        MetricResult r;
-        for (const ErrorSample& e : errors(log, est, tru, from, to)) r.series.emplace_back(e.t, e.error);
-        if (!r.series.empty()) r.value = r.series.back().second;
-        return r;
-      };
-    }};
+const MetricRegistration kErrorFinal{"icr_error_final",
+                                     "largest absolute ICR estimate error at the end of the window, m",
+                                     [](const MetricSetup& s) -> MetricFunction {
+                                       const Columns est = columns(s, "estimate", kIcrFields);
+                                       const Columns tru = columns(s, "truth", kIcrFields);
+                                       const auto span = s.window();
+                                       const double from = span.first, to = span.second;
+                                       return [=](const RunLog& log) {
+                                         MetricResult r;
+                                         for (const ErrorSample& e : errors(log, est, tru, from, to))
+                                           r.series.emplace_back(e.t, e.error);
+                                         if (!r.series.empty()) r.value = r.series.back().second;
+                                         return r;
+                                       };
+                                     }};
 
 /// One change of the truth (a terrain switch): samples [begin, end) lie on the new truth;
 /// the switch happened between samples begin - 1 and begin, at t = samples[begin - 1].t.
@@ -298,7 +304,8 @@ const MetricRegistration kAccuracy{
           bool uniform = true;
           for (std::size_t j = 0; j < t.size(); ++j) {
             const double tj = log.time(t.steps[j]);
-            const bool held_at_start = tj <= ti - window && (j + 1 == t.size() || log.time(t.steps[j + 1]) > ti - window);
+            const bool held_at_start =
+                tj <= ti - window && (j + 1 == t.size() || log.time(t.steps[j + 1]) > ti - window);
             if (tj > ti + 1e-9 * log.base_step || (!held_at_start && tj <= ti - window)) continue;
             const double v = t.at(j, tru.index[0]);
             if (std::isnan(terrain)) terrain = v;
@@ -333,7 +340,8 @@ std::vector<std::pair<double, double>> position_errors(const RunLog& log, const 
 }
 
 const MetricRegistration kOdometryRatio{
-    "odometry_error_ratio", "final position error of one dead reckoning divided by another's (< 1: the first is better)",
+    "odometry_error_ratio",
+    "final position error of one dead reckoning divided by another's (< 1: the first is better)",
     [](const MetricSetup& s) -> MetricFunction {
       const Columns sig = columns_of(s, "signal", {"x", "y"});
       const Columns other = columns_of(s, "other", {"x", "y"});
@@ -345,7 +353,8 @@ const MetricRegistration kOdometryRatio{
         const auto b = position_errors(log, other, ref, from, to);
         MetricResult r;
         for (std::size_t i = 0; i < a.size() && i < b.size(); ++i) {
-          if (a[i].first == b[i].first && b[i].second > 0.0) r.series.emplace_back(a[i].first, a[i].second / b[i].second);
+          if (a[i].first == b[i].first && b[i].second > 0.0)
+            r.series.emplace_back(a[i].first, a[i].second / b[i].second);
         }
         if (!a.empty() && !b.empty() && b.back().second > 0.0) r.value = a.back().second / b.back().second;
         return r;

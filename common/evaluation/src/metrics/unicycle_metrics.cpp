@@ -136,8 +136,9 @@ MetricFunction observer_decay_rate(const MetricSetup& s) {
 }
 
 MetricFunction observer_rate_bound(const MetricSetup& s) {
-  return series_metric(s, fields_of(s, "estimate", {"L"}) + fields_of(s, "cmd", {"v"}),
-                       [](const std::vector<double>& v) { return 2.0 * v[0] * v[1]; }, min_value);
+  return series_metric(
+      s, fields_of(s, "estimate", {"L"}) + fields_of(s, "cmd", {"v"}),
+      [](const std::vector<double>& v) { return 2.0 * v[0] * v[1]; }, min_value);
 }
 
 const MetricRegistration kObserverDecayRate{
@@ -171,8 +172,7 @@ const MetricRegistration kVelocityObserverError{
     }};
 
 const MetricRegistration kValueNormFinal{
-    "value_norm_final", "Euclidean norm of some fields of a signal at the end of the window",
-    [](const MetricSetup& s) {
+    "value_norm_final", "Euclidean norm of some fields of a signal at the end of the window", [](const MetricSetup& s) {
       const SignalSpec& sig = s.signal("signal");
       std::vector<Field> fields;
       for (const auto& f : s.fields({&sig}, "fields", {})) fields.push_back({sig.name, f});

@@ -144,8 +144,8 @@ bool sd_untyped_to_sample(const struct ddsi_sertype*, const struct ddsi_serdata*
 void sd_free(struct ddsi_serdata* d) { std::free(d); }
 
 size_t sd_print(const struct ddsi_sertype* type, const struct ddsi_serdata* d, char* buf, size_t size) {
-  return static_cast<size_t>(std::snprintf(buf, size, "%s (%u bytes CDR)", type->type_name,
-                                           reinterpret_cast<const CdrSerdata*>(d)->size));
+  return static_cast<size_t>(
+      std::snprintf(buf, size, "%s (%u bytes CDR)", type->type_name, reinterpret_cast<const CdrSerdata*>(d)->size));
 }
 
 void sd_get_keyhash(const struct ddsi_serdata*, struct ddsi_keyhash* buf, bool) {
@@ -209,7 +209,7 @@ const struct ddsi_sertype_ops kSertypeOps = {
     .free_samples = st_free_samples,
     .equal = st_equal,
     .hash = st_hash,
-    .type_id = nullptr,    // no type information: interop rule (docs/architecture.md)
+    .type_id = nullptr,  // no type information: interop rule (docs/architecture.md)
     .type_map = nullptr,
     .type_info = nullptr,
     .derive_sertype = nullptr,  // XCDR1 only

@@ -16,10 +16,12 @@ EndpointQos endpoint_qos(const dds_qos_t* q) {
   dds_reliability_kind_t rk;
   dds_duration_t blocking;
   if (dds_qget_reliability(q, &rk, &blocking))
-    e.reliability = rk == DDS_RELIABILITY_RELIABLE ? QosProfile::Reliability::reliable : QosProfile::Reliability::best_effort;
+    e.reliability =
+        rk == DDS_RELIABILITY_RELIABLE ? QosProfile::Reliability::reliable : QosProfile::Reliability::best_effort;
   dds_durability_kind_t dk;
   if (dds_qget_durability(q, &dk)) {
-    e.durability = dk == DDS_DURABILITY_VOLATILE ? QosProfile::Durability::volatile_ : QosProfile::Durability::transient_local;
+    e.durability =
+        dk == DDS_DURABILITY_VOLATILE ? QosProfile::Durability::volatile_ : QosProfile::Durability::transient_local;
     e.durability_stronger = dk == DDS_DURABILITY_TRANSIENT || dk == DDS_DURABILITY_PERSISTENT;
   }
   dds_history_kind_t hk;
@@ -33,7 +35,7 @@ EndpointQos endpoint_qos(const dds_qos_t* q) {
   if (dds_qget_deadline(q, &d)) e.deadline_s = seconds(d);
   dds_liveliness_kind_t lk;
   if (dds_qget_liveliness(q, &lk, &d)) {
-    e.liveliness = lk == DDS_LIVELINESS_AUTOMATIC              ? QosProfile::Liveliness::automatic
+    e.liveliness = lk == DDS_LIVELINESS_AUTOMATIC               ? QosProfile::Liveliness::automatic
                    : lk == DDS_LIVELINESS_MANUAL_BY_PARTICIPANT ? QosProfile::Liveliness::manual_by_participant
                                                                 : QosProfile::Liveliness::manual_by_topic;
     e.liveliness_lease_s = seconds(d);

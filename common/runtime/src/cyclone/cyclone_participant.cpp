@@ -36,16 +36,17 @@ std::string cyc_error(const char* what, dds_return_t rc) {
 
 dds_qos_t* make_qos(const QosProfile& p) {
   dds_qos_t* q = dds_create_qos();
-  dds_qset_reliability(q, p.reliability == QosProfile::Reliability::reliable ? DDS_RELIABILITY_RELIABLE
-                                                                             : DDS_RELIABILITY_BEST_EFFORT,
-                       p.max_blocking_time_s > 0 ? to_duration(p.max_blocking_time_s) : DDS_INFINITY);
+  dds_qset_reliability(
+      q, p.reliability == QosProfile::Reliability::reliable ? DDS_RELIABILITY_RELIABLE : DDS_RELIABILITY_BEST_EFFORT,
+      p.max_blocking_time_s > 0 ? to_duration(p.max_blocking_time_s) : DDS_INFINITY);
   dds_qset_durability(q, p.durability == QosProfile::Durability::transient_local ? DDS_DURABILITY_TRANSIENT_LOCAL
                                                                                  : DDS_DURABILITY_VOLATILE);
   dds_qset_history(q, p.history == QosProfile::History::keep_all ? DDS_HISTORY_KEEP_ALL : DDS_HISTORY_KEEP_LAST,
                    p.depth);
   if (p.durability == QosProfile::Durability::transient_local)
-    dds_qset_durability_service(q, 0, p.history == QosProfile::History::keep_all ? DDS_HISTORY_KEEP_ALL : DDS_HISTORY_KEEP_LAST,
-                                p.depth, DDS_LENGTH_UNLIMITED, DDS_LENGTH_UNLIMITED, DDS_LENGTH_UNLIMITED);
+    dds_qset_durability_service(
+        q, 0, p.history == QosProfile::History::keep_all ? DDS_HISTORY_KEEP_ALL : DDS_HISTORY_KEEP_LAST, p.depth,
+        DDS_LENGTH_UNLIMITED, DDS_LENGTH_UNLIMITED, DDS_LENGTH_UNLIMITED);
   dds_qset_deadline(q, to_duration(p.deadline_s));
   dds_liveliness_kind_t lk = DDS_LIVELINESS_AUTOMATIC;
   if (p.liveliness == QosProfile::Liveliness::manual_by_participant) lk = DDS_LIVELINESS_MANUAL_BY_PARTICIPANT;
@@ -79,7 +80,8 @@ std::string policy_value(const dds_qos_t* q, const std::string& policy) {
     if (dds_qget_durability(q, &k)) return "DURABILITY=" + std::to_string(static_cast<int>(k));
   } else if (policy == "DEADLINE") {
     dds_duration_t d;
-    if (dds_qget_deadline(q, &d)) return d == DDS_INFINITY ? "DEADLINE=infinite" : "DEADLINE=" + std::to_string(d * 1e-9) + "s";
+    if (dds_qget_deadline(q, &d))
+      return d == DDS_INFINITY ? "DEADLINE=infinite" : "DEADLINE=" + std::to_string(d * 1e-9) + "s";
   }
   return "";
 }
@@ -281,12 +283,20 @@ std::string CycloneParticipant::config_xml(const NetworkOptions& net) {
   // period while samples are unacknowledged, a request for repair 1 ms after one.
   const std::string hb = std::to_string(std::max<long long>(1, std::llround(net.reliable_heartbeat_s * 1e3))) + " ms";
   return "<CycloneDDS><Domain Id=\"any\">"
-         "<General><Interfaces><NetworkInterface address=\"" + net.interface_address + "\"/></Interfaces>"
+         "<General><Interfaces><NetworkInterface address=\"" +
+         net.interface_address +
+         "\"/></Interfaces>"
          "<AllowMulticast>false</AllowMulticast></General>"
          "<Discovery><ParticipantIndex>auto</ParticipantIndex>"
-         "<MaxAutoParticipantIndex>" + std::to_string(net.max_participants_per_host - 1) + "</MaxAutoParticipantIndex>"
-         "<Peers>" + peers + "</Peers></Discovery>"
-         "<Internal><HeartbeatInterval min=\"" + hb + "\" minsched=\"" + hb + "\">" + hb + "</HeartbeatInterval>"
+         "<MaxAutoParticipantIndex>" +
+         std::to_string(net.max_participants_per_host - 1) +
+         "</MaxAutoParticipantIndex>"
+         "<Peers>" +
+         peers +
+         "</Peers></Discovery>"
+         "<Internal><HeartbeatInterval min=\"" +
+         hb + "\" minsched=\"" + hb + "\">" + hb +
+         "</HeartbeatInterval>"
          "<NackDelay>1 ms</NackDelay></Internal>"
          "</Domain></CycloneDDS>";
 }
@@ -325,10 +335,11 @@ CycloneParticipant::CycloneParticipant(const ParticipantOptions& o) : Participan
   participant_ = dds_create_participant(domain, pq, nullptr);
   dds_delete_qos(pq);
   if (participant_ < 0)
-    throw std::runtime_error(cyc_error(o.security.enabled ? ("cannot create participant with DDS Security (identity '" +
-                                                             o.security.identity + "')").c_str()
-                                                          : "cannot create participant",
-                                       participant_));
+    throw std::runtime_error(
+        cyc_error(o.security.enabled
+                      ? ("cannot create participant with DDS Security (identity '" + o.security.identity + "')").c_str()
+                      : "cannot create participant",
+                  participant_));
   builtin_participants_ = dds_create_reader(participant_, DDS_BUILTIN_TOPIC_DCPSPARTICIPANT, nullptr, nullptr);
   builtin_publications_ = dds_create_reader(participant_, DDS_BUILTIN_TOPIC_DCPSPUBLICATION, nullptr, nullptr);
   builtin_subscriptions_ = dds_create_reader(participant_, DDS_BUILTIN_TOPIC_DCPSSUBSCRIPTION, nullptr, nullptr);
@@ -354,11 +365,11 @@ CycloneParticipant::Topic CycloneParticipant::topic(const msg::TypeSupport& type
   return topics_[name] = Topic{t, st};
 }
 
-std::unique_ptr<WriterBackend> CycloneParticipant::make_writer(const msg::TypeSupport& type, const std::string& topic_name,
-                                                               const QosProfile& qos) {
+std::unique_ptr<WriterBackend> CycloneParticipant::make_writer(const msg::TypeSupport& type,
+                                                               const std::string& topic_name, const QosProfile& qos) {
   const Topic t = topic(type, topic_name);
-  auto w = std::make_unique<CycloneWriter>(*this, topic_name, detail::local_endpoint(options().name, true, qos),
-                                           t.sertype);
+  auto w =
+      std::make_unique<CycloneWriter>(*this, topic_name, detail::local_endpoint(options().name, true, qos), t.sertype);
   dds_listener_t* l = CycloneWriter::listener(w.get());
   dds_qos_t* q = make_qos(qos);
   const dds_entity_t dw = dds_create_writer(participant_, t.entity, q, l);
@@ -369,8 +380,8 @@ std::unique_ptr<WriterBackend> CycloneParticipant::make_writer(const msg::TypeSu
   return w;
 }
 
-std::unique_ptr<ReaderBackend> CycloneParticipant::make_reader(const msg::TypeSupport& type, const std::string& topic_name,
-                                                               const QosProfile& qos) {
+std::unique_ptr<ReaderBackend> CycloneParticipant::make_reader(const msg::TypeSupport& type,
+                                                               const std::string& topic_name, const QosProfile& qos) {
   const Topic t = topic(type, topic_name);
   auto r = std::make_unique<CycloneReader>(*this, topic_name, detail::local_endpoint(options().name, false, qos));
   dds_listener_t* l = CycloneReader::listener(r.get(), false);

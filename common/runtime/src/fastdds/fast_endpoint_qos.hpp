@@ -18,15 +18,17 @@ EndpointQos endpoint_qos_from_fast(const Q& q) {
   namespace fdds = eprosima::fastdds::dds;
   EndpointQos e;
   e.reliability = q.m_reliability.kind == fdds::RELIABLE_RELIABILITY_QOS ? QosProfile::Reliability::reliable
-                                                                          : QosProfile::Reliability::best_effort;
+                                                                         : QosProfile::Reliability::best_effort;
   e.durability = q.m_durability.kind == fdds::VOLATILE_DURABILITY_QOS ? QosProfile::Durability::volatile_
                                                                       : QosProfile::Durability::transient_local;
-  e.durability_stronger = q.m_durability.kind == fdds::TRANSIENT_DURABILITY_QOS ||
-                          q.m_durability.kind == fdds::PERSISTENT_DURABILITY_QOS;
+  e.durability_stronger =
+      q.m_durability.kind == fdds::TRANSIENT_DURABILITY_QOS || q.m_durability.kind == fdds::PERSISTENT_DURABILITY_QOS;
   e.deadline_s = fast_seconds(q.m_deadline.period);
   switch (q.m_liveliness.kind) {
     case fdds::AUTOMATIC_LIVELINESS_QOS: e.liveliness = QosProfile::Liveliness::automatic; break;
-    case fdds::MANUAL_BY_PARTICIPANT_LIVELINESS_QOS: e.liveliness = QosProfile::Liveliness::manual_by_participant; break;
+    case fdds::MANUAL_BY_PARTICIPANT_LIVELINESS_QOS:
+      e.liveliness = QosProfile::Liveliness::manual_by_participant;
+      break;
     case fdds::MANUAL_BY_TOPIC_LIVELINESS_QOS: e.liveliness = QosProfile::Liveliness::manual_by_topic; break;
   }
   e.liveliness_lease_s = fast_seconds(q.m_liveliness.lease_duration);

@@ -1,6 +1,9 @@
 // Fast DDS 2.9 back end.
 #include "fast_participant.hpp"
 
+#include <fastdds/rtps/transport/UDPv4TransportDescriptor.h>
+#include <fastdds/rtps/transport/shared_mem/SharedMemTransportDescriptor.h>
+#include <fastrtps/utils/IPLocator.h>
 #include <fastdds/dds/domain/DomainParticipant.hpp>
 #include <fastdds/dds/domain/DomainParticipantFactory.hpp>
 #include <fastdds/dds/domain/DomainParticipantListener.hpp>
@@ -15,9 +18,6 @@
 #include <fastdds/dds/subscriber/Subscriber.hpp>
 #include <fastdds/dds/topic/Topic.hpp>
 #include <fastdds/dds/topic/TypeSupport.hpp>
-#include <fastdds/rtps/transport/UDPv4TransportDescriptor.h>
-#include <fastdds/rtps/transport/shared_mem/SharedMemTransportDescriptor.h>
-#include <fastrtps/utils/IPLocator.h>
 
 #include <atomic>
 #include <functional>
@@ -60,7 +60,8 @@ void apply_common(Q& q, const QosProfile& p, bool data_sharing) {
   q.reliability().max_blocking_time = to_duration(p.max_blocking_time_s);
   q.durability().kind = p.durability == QosProfile::Durability::transient_local ? fdds::TRANSIENT_LOCAL_DURABILITY_QOS
                                                                                 : fdds::VOLATILE_DURABILITY_QOS;
-  q.history().kind = p.history == QosProfile::History::keep_all ? fdds::KEEP_ALL_HISTORY_QOS : fdds::KEEP_LAST_HISTORY_QOS;
+  q.history().kind =
+      p.history == QosProfile::History::keep_all ? fdds::KEEP_ALL_HISTORY_QOS : fdds::KEEP_LAST_HISTORY_QOS;
   q.history().depth = p.depth;
   q.deadline().period = to_duration(p.deadline_s);
   switch (p.liveliness) {
@@ -123,7 +124,7 @@ class FastWriter final : public WriterBackend, public fdds::DataWriterListener {
   int matched_count() const override { return events_.matched_count(); }
   bool wait_for_acks(int64_t timeout_ns) override {
     const eprosima::fastrtps::Duration_t max_wait(static_cast<int32_t>(timeout_ns / 1'000'000'000),
-                                    static_cast<uint32_t>(timeout_ns % 1'000'000'000));
+                                                  static_cast<uint32_t>(timeout_ns % 1'000'000'000));
     return writer_->wait_for_acknowledgments(max_wait) == eprosima::fastrtps::types::ReturnCode_t::RETCODE_OK;
   }
 
@@ -179,7 +180,8 @@ class FastReader final : public ReaderBackend, public fdds::DataReaderListener {
   }
   bool wait(int64_t timeout_ns) override {
     if (reader_->get_unread_count() > 0) return true;
-    return reader_->wait_for_unread_message(eprosima::fastrtps::Duration_t(static_cast<long double>(timeout_ns) * 1e-9L));
+    return reader_->wait_for_unread_message(
+        eprosima::fastrtps::Duration_t(static_cast<long double>(timeout_ns) * 1e-9L));
   }
   int matched_count() const override { return events_.matched_count(); }
   uint64_t malformed_count() const override { return malformed_; }
@@ -235,7 +237,8 @@ class FastParticipant::Discovery final : public fdds::DomainParticipantListener 
     DiscoveredEndpoint endpoint;  // for discovered_endpoints()
   };
 
-  void on_participant_discovery(fdds::DomainParticipant*, eprosima::fastrtps::rtps::ParticipantDiscoveryInfo&& info) override {
+  void on_participant_discovery(fdds::DomainParticipant*,
+                                eprosima::fastrtps::rtps::ParticipantDiscoveryInfo&& info) override {
     std::lock_guard lk(mu_);
     std::ostringstream g;
     g << info.info.m_guid.guidPrefix;
@@ -245,7 +248,8 @@ class FastParticipant::Discovery final : public fdds::DomainParticipantListener 
       for (auto it = remotes_.begin(); it != remotes_.end();)
         it = it->first.rfind(g.str(), 0) == 0 ? remotes_.erase(it) : std::next(it);
   }
-  void on_subscriber_discovery(fdds::DomainParticipant*, eprosima::fastrtps::rtps::ReaderDiscoveryInfo&& info) override {
+  void on_subscriber_discovery(fdds::DomainParticipant*,
+                               eprosima::fastrtps::rtps::ReaderDiscoveryInfo&& info) override {
     const auto& r = info.info;
     Remote rem;
     rem.is_writer = false;
@@ -327,9 +331,11 @@ class FastParticipant::Discovery final : public fdds::DomainParticipantListener 
   }
   static std::string policy_value(const Remote& r, const std::string& policy) {
     if (policy == "RELIABILITY")
-      return std::string("offers RELIABILITY=") + (r.reliability == fdds::RELIABLE_RELIABILITY_QOS ? "reliable" : "best_effort");
+      return std::string("offers RELIABILITY=") +
+             (r.reliability == fdds::RELIABLE_RELIABILITY_QOS ? "reliable" : "best_effort");
     if (policy == "DURABILITY")
-      return std::string("DURABILITY=") + (r.durability == fdds::VOLATILE_DURABILITY_QOS ? "volatile" : "transient_local+");
+      return std::string("DURABILITY=") +
+             (r.durability == fdds::VOLATILE_DURABILITY_QOS ? "volatile" : "transient_local+");
     if (policy == "DEADLINE") return "DEADLINE=" + std::to_string(r.deadline.to_ns() * 1e-9) + "s";
     if (policy == "LIVELINESS") return "LIVELINESS kind=" + std::to_string(static_cast<int>(r.liveliness));
     return "";
@@ -340,7 +346,8 @@ class FastParticipant::Discovery final : public fdds::DomainParticipantListener 
   std::map<std::string, Remote> remotes_;
 };
 
-FastParticipant::FastParticipant(const ParticipantOptions& o) : Participant(o), discovery_(std::make_unique<Discovery>()) {
+FastParticipant::FastParticipant(const ParticipantOptions& o)
+    : Participant(o), discovery_(std::make_unique<Discovery>()) {
   // Fast DDS logs to stdout by default, where tools print their results (`plexus topic list
   // --json`): its own log goes to stderr instead. Security errors (a failed handshake with a
   // participant of another CA, for one) would otherwise break the JSON.
@@ -379,7 +386,8 @@ FastParticipant::FastParticipant(const ParticipantOptions& o) : Participant(o), 
   // waits up to one period for its first sample (about 0.5 s on Cyclone DDS). Measured on a
   // 100 Hz writer: with 3 s half of the joining readers got nothing within 2 s; with 0.5 s
   // each gets its first samples in about 0.5 s.
-  pq.wire_protocol().builtin.discovery_config.leaseDuration_announcementperiod = eprosima::fastrtps::Duration_t(0, 500'000'000);
+  pq.wire_protocol().builtin.discovery_config.leaseDuration_announcementperiod =
+      eprosima::fastrtps::Duration_t(0, 500'000'000);
   const auto& ports = pq.wire_protocol().port;
   for (const auto& peer : o.network.peers) {
     for (int pid = 0; pid < o.network.max_participants_per_host; ++pid) {

@@ -12,8 +12,8 @@
 // reader does.
 #pragma once
 
-#include <fastdds/dds/topic/TopicDataType.hpp>
 #include <fastdds/rtps/common/SerializedPayload.h>
+#include <fastdds/dds/topic/TopicDataType.hpp>
 
 #include <exception>
 

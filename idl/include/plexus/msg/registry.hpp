@@ -21,7 +21,7 @@ namespace plexus::msg {
 /// The message member one signal field occupies.
 struct WireSlot {
   enum class Kind : uint8_t { f64, f32, i8, u8, i16, u16, i32, u32, i64, u64, boolean };
-  std::string field;                         ///< the field name components use ("x", "q3")
+  std::string field;  ///< the field name components use ("x", "q3")
   Kind kind = Kind::f64;
   void* (*member)(void* message) = nullptr;  ///< the member's address (an array's first element)
   std::size_t index = 0;                     ///< element within an array member
@@ -33,9 +33,9 @@ struct WireSlot {
 
 /// One IDL message type as signals see it.
 struct WireType {
-  const char* name = "";                     ///< short IDL name ("Pose2D")
+  const char* name = "";  ///< short IDL name ("Pose2D")
   const TypeSupport* support = nullptr;
-  std::vector<WireSlot> slots;               ///< member order; aliases right after their primary name
+  std::vector<WireSlot> slots;  ///< member order; aliases right after their primary name
   /// Types with a [count] member (joint arrays): the number of valid array entries.
   uint16_t* (*count)(void* message) = nullptr;
 };

@@ -29,10 +29,10 @@
 #include <string>
 #include <vector>
 
+#include "plexus/distributed/wire.hpp"
 #include "plexus/runtime/participant.hpp"
 #include "plexus/scenario/executor.hpp"
 #include "plexus/scenario/scenario.hpp"
-#include "plexus/distributed/wire.hpp"
 #include "plexus/scenario/step_executor.hpp"
 
 namespace plexus::distributed {
@@ -101,8 +101,8 @@ class LockstepClock {
 
   /// Called with every signal sample the clock takes (signal index, the message type, the
   /// message as received, its metadata), for `plexus launch --record`.
-  using SampleTap = std::function<void(std::size_t signal, const msg::TypeSupport& type, const void* message,
-                                       const rt::SampleMeta&)>;
+  using SampleTap =
+      std::function<void(std::size_t signal, const msg::TypeSupport& type, const void* message, const rt::SampleMeta&)>;
   /// Runs every step and returns the log (the same as `plexus sim`'s). Throws LockstepError.
   scenario::RunLog run(const std::atomic<bool>& stop, const scenario::StepObserver& observer = {},
                        const SampleTap& tap = {});

@@ -74,31 +74,32 @@ msg::Heartbeat heartbeat_of(const std::string& service, const std::string& robot
 double stage_phase(const scenario::Scenario& sc, const std::vector<bool>& hosted);
 
 /// The QoS profile of a signal: its producer's `qos` key, else "state".
-const rt::QosProfile& signal_qos(const scenario::Scenario& sc, const std::string& producer, const rt::QosProfiles& profiles);
+const rt::QosProfile& signal_qos(const scenario::Scenario& sc, const std::string& producer,
+                                 const rt::QosProfiles& profiles);
 /// The QoS profile a reader uses for a signal: its producer's, from the part's `inputs:` when
 /// the producer runs in another process.
 const rt::QosProfile& input_qos(const scenario::Scenario& sc, const scenario::SignalSpec& spec,
                                 const rt::QosProfiles& profiles);
 
 struct RealtimeOptions {
-  std::string service;           ///< name in heartbeats and logs
-  rt::LoopOptions loop;          ///< rate_hz is set from the scenario's base step
+  std::string service;   ///< name in heartbeats and logs
+  rt::LoopOptions loop;  ///< rate_hz is set from the scenario's base step
   /// Under `plexus launch`: wait for the launcher's start signal (the run's common grid).
   /// Alone: start at once, on a grid of its own.
   bool wait_for_start = false;
-  double start_timeout_s = 30;   ///< longest wait for the launcher's start signal
+  double start_timeout_s = 30;  ///< longest wait for the launcher's start signal
 };
 
 /// What a realtime host did, for the launcher and the logs.
 struct RealtimeReport {
   int64_t ticks = 0;
-  uint64_t holds = 0;            ///< controller steps replaced by the safe output
-  uint64_t blind_steps = 0;      ///< estimator steps with no fresh measurement (outputs not published)
-  uint64_t stale_inputs = 0;     ///< input reads that found a stale sample
-  uint64_t late_inputs = 0;      ///< input reads that found an older sample than the sim would read
-  uint64_t deferred_steps = 0;   ///< estimator steps run after their tick, once their samples had arrived
+  uint64_t holds = 0;                 ///< controller steps replaced by the safe output
+  uint64_t blind_steps = 0;           ///< estimator steps with no fresh measurement (outputs not published)
+  uint64_t stale_inputs = 0;          ///< input reads that found a stale sample
+  uint64_t late_inputs = 0;           ///< input reads that found an older sample than the sim would read
+  uint64_t deferred_steps = 0;        ///< estimator steps run after their tick, once their samples had arrived
   uint64_t dropped_late_samples = 0;  ///< samples the components dropped or bridged by their late-sample rules
-  uint64_t rejected_inputs = 0;  ///< received samples refused at the edge (non-finite, malformed)
+  uint64_t rejected_inputs = 0;       ///< received samples refused at the edge (non-finite, malformed)
   rt::LoopStats loop;
 };
 

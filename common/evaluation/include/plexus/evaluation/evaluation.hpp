@@ -14,7 +14,7 @@
 namespace plexus::scenario {
 
 struct Evaluation {
-  std::string digest;                                          ///< 16 hex digits, see digest.hpp
+  std::string digest;                                         ///< 16 hex digits, see digest.hpp
   std::vector<std::pair<std::string, MetricResult>> metrics;  ///< in scenario order
   /// One line per failed expectation: "expectation failed: <metric> = <value>, bound <op> <bound>".
   std::vector<std::string> failures;
@@ -25,6 +25,5 @@ struct Evaluation {
 
 /// Computes every metric of the scenario and checks its expectations.
 Evaluation evaluate(const Scenario& scenario, const RunLog& log);
-
 
 }  // namespace plexus::scenario

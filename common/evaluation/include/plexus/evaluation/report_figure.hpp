@@ -14,11 +14,11 @@ namespace plexus::scenario {
 
 struct Curve {
   enum class Style { line, dashed, points };
-  std::string file;     ///< CSV, relative to the run folder
-  std::string x, y;     ///< gnuplot `using` expressions: a column number ("3") or "($3*1000)"
-  std::string title;    ///< legend entry
+  std::string file;   ///< CSV, relative to the run folder
+  std::string x, y;   ///< gnuplot `using` expressions: a column number ("3") or "($3*1000)"
+  std::string title;  ///< legend entry
   Style style = Style::line;
-  int colour = 0;       ///< gnuplot linetype (an estimate and its truth share one); 0: black
+  int colour = 0;  ///< gnuplot linetype (an estimate and its truth share one); 0: black
 };
 
 /// A line across a panel: vertical at a time (a terrain switch, the start of a metric's
@@ -43,7 +43,7 @@ struct Panel {
 };
 
 struct Figure {
-  std::string file;     ///< "plots/<name>.png", relative to the run folder
+  std::string file;  ///< "plots/<name>.png", relative to the run folder
   std::string title;
   std::string caption;  ///< a sentence under the figure in report.html
   std::string section;  ///< "paper", "signals" or "series" (report.html's sections)

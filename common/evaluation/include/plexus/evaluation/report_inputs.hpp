@@ -7,20 +7,20 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
 #include <yaml-cpp/yaml.h>
+#include <nlohmann/json.hpp>
 
 namespace plexus::scenario {
 
 /// One CSV of the run folder (a signal, or a metric's series) and what is known of it.
 struct ReportTable {
-  std::string name;      ///< the signal ("wmr/truth/state") or the metric
-  std::string stem;      ///< file name without .csv ("wmr.truth.state")
-  std::string path;      ///< relative to the run folder ("signals/wmr.truth.state.csv")
-  std::string robot;     ///< the robot it belongs to ("" for none)
-  std::string producer;  ///< the component that produced it ("" if unknown)
-  std::vector<std::string> columns;                 ///< the header: t, step, fields...
-  std::vector<std::optional<std::string>> units;    ///< per column (t: "s")
+  std::string name;                               ///< the signal ("wmr/truth/state") or the metric
+  std::string stem;                               ///< file name without .csv ("wmr.truth.state")
+  std::string path;                               ///< relative to the run folder ("signals/wmr.truth.state.csv")
+  std::string robot;                              ///< the robot it belongs to ("" for none)
+  std::string producer;                           ///< the component that produced it ("" if unknown)
+  std::vector<std::string> columns;               ///< the header: t, step, fields...
+  std::vector<std::optional<std::string>> units;  ///< per column (t: "s")
 
   /// 1-based gnuplot column of a field, or 0.
   int column(const std::string& field) const;
@@ -32,10 +32,10 @@ struct ReportTable {
 
 struct ReportInputs {
   std::filesystem::path dir;
-  YAML::Node scenario;              ///< scenario.resolved.yaml
-  nlohmann::ordered_json metrics;   ///< metrics.json
-  std::vector<ReportTable> signals; ///< signals/*.csv, by name
-  std::vector<ReportTable> series;  ///< series/*.csv, by name
+  YAML::Node scenario;               ///< scenario.resolved.yaml
+  nlohmann::ordered_json metrics;    ///< metrics.json
+  std::vector<ReportTable> signals;  ///< signals/*.csv, by name
+  std::vector<ReportTable> series;   ///< series/*.csv, by name
 
   const ReportTable* signal(const std::string& name) const;
   /// The robot's true state signal (`<robot>/truth/state`), or nullptr.

@@ -26,8 +26,8 @@ struct FieldUnit {
 
 /// The fields of one panel, in signal order.
 struct FieldGroup {
-  std::string quantity;              ///< "position", "angle", "standard deviation", a stem
-  std::optional<std::string> unit;   ///< the fields' common unit
+  std::string quantity;             ///< "position", "angle", "standard deviation", a stem
+  std::optional<std::string> unit;  ///< the fields' common unit
   std::vector<std::string> fields;
 };
 

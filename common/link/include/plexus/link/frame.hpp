@@ -17,7 +17,7 @@
 namespace plexus::link {
 
 inline constexpr uint8_t kProtocolVersion = 1;
-inline constexpr std::size_t kHeaderSize = 4;   ///< version, id, seq
+inline constexpr std::size_t kHeaderSize = 4;  ///< version, id, seq
 inline constexpr std::size_t kCrcSize = 2;
 inline constexpr std::size_t kMaxPayload = 128;  ///< bytes: 16 little-endian f64
 inline constexpr std::size_t kMaxRawFrame = kHeaderSize + kMaxPayload + kCrcSize;

@@ -21,10 +21,10 @@ enum class Direction : uint8_t { to_host, to_device };
 struct MessageLayout {
   uint8_t id = 0;
   Direction direction = Direction::to_host;
-  const char* topic = "";     ///< `<robot>/<topic>` suffix: "position", "truth/state", "cmd"
-  const char* idl_type = "";  ///< short IDL type name: "PositionMeasurement"
+  const char* topic = "";           ///< `<robot>/<topic>` suffix: "position", "truth/state", "cmd"
+  const char* idl_type = "";        ///< short IDL type name: "PositionMeasurement"
   std::vector<const char*> fields;  ///< payload: one f64 each, in this order
-  const char* meaning = "";   ///< one line for docs and errors
+  const char* meaning = "";         ///< one line for docs and errors
   std::size_t payload_size() const { return fields.size() * 8; }
 };
 

@@ -20,7 +20,7 @@ namespace plexus::rt {
 struct EndpointQos {
   QosProfile::Reliability reliability = QosProfile::Reliability::best_effort;
   QosProfile::Durability durability = QosProfile::Durability::volatile_;
-  bool durability_stronger = false;      ///< transient or persistent (reported as transient_local+)
+  bool durability_stronger = false;  ///< transient or persistent (reported as transient_local+)
   bool history_known = false;
   QosProfile::History history = QosProfile::History::keep_last;
   int32_t depth = 1;
@@ -39,8 +39,8 @@ struct DiscoveredEndpoint {
   std::string topic;
   std::string type_name;
   bool is_writer = false;
-  bool local = false;              ///< belongs to this participant
-  std::string participant;         ///< participant (service) name, or its GUID prefix
+  bool local = false;       ///< belongs to this participant
+  std::string participant;  ///< participant (service) name, or its GUID prefix
   std::string guid;
   EndpointQos qos;
 };

@@ -27,8 +27,8 @@ class WriterBackend {
 
 /// Per-sample metadata a reader gets besides the data.
 struct SampleMeta {
-  int64_t source_timestamp_ns = 0;   ///< writer's source timestamp (vendor clock)
-  int64_t receive_time_ns = 0;       ///< wall clock when plexus took the sample
+  int64_t source_timestamp_ns = 0;  ///< writer's source timestamp (vendor clock)
+  int64_t receive_time_ns = 0;      ///< wall clock when plexus took the sample
 };
 
 class ReaderBackend {

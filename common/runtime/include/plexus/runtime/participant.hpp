@@ -50,8 +50,8 @@ struct NetworkOptions {
 
 struct ParticipantOptions {
   Vendor vendor = Vendor::fast;
-  int domain_id = 0;                 ///< 0..232
-  std::string name = "plexus";       ///< service name: appears in logs and in remote endpoints' events
+  int domain_id = 0;            ///< 0..232
+  std::string name = "plexus";  ///< service name: appears in logs and in remote endpoints' events
   NetworkOptions network;
   /// DDS Security (off by default): identity, permissions, governance (security.hpp).
   SecurityOptions security;

@@ -8,8 +8,8 @@
 // request) are optional. When the system refuses one, the loop logs a clear warning saying
 // what was refused and why, and runs anyway. The thread's timer slack is set to 1 ns by
 // default (Linux's default of 50 us delays every wake-up of a loop without SCHED_FIFO by up
-// to that much; docs/performance.md has the measurements). The steady-state loop does not allocate: statistics go into ring buffers
-// sized at construction.
+// to that much; docs/performance.md has the measurements). The steady-state loop does not allocate: statistics go into
+// ring buffers sized at construction.
 #pragma once
 
 #include <atomic>
@@ -20,10 +20,10 @@
 namespace plexus::rt {
 
 struct LoopOptions {
-  double rate_hz = 100.0;     ///< > 0, at most 100 kHz
-  int priority = 0;           ///< SCHED_FIFO priority 1..99; 0 keeps normal scheduling
-  int cpu = -1;               ///< pin the calling thread to this CPU; -1: no affinity
-  bool lock_memory = false;   ///< mlockall(MCL_CURRENT | MCL_FUTURE)
+  double rate_hz = 100.0;    ///< > 0, at most 100 kHz
+  int priority = 0;          ///< SCHED_FIFO priority 1..99; 0 keeps normal scheduling
+  int cpu = -1;              ///< pin the calling thread to this CPU; -1: no affinity
+  bool lock_memory = false;  ///< mlockall(MCL_CURRENT | MCL_FUTURE)
   /// PR_SET_TIMERSLACK of the calling thread, ns (>= 1); 0 keeps the thread's slack.
   int64_t timer_slack_ns = 1;
   /// >= 0: hold a PM QoS request on /dev/cpu_dma_latency for this CPU wake-up latency (us)
@@ -35,7 +35,7 @@ struct LoopOptions {
 
 struct LoopStats {
   uint64_t iterations = 0;
-  uint64_t overruns = 0;      ///< iterations that ended after the next deadline (periods skipped)
+  uint64_t overruns = 0;  ///< iterations that ended after the next deadline (periods skipped)
   double jitter_p50_us = 0, jitter_p99_us = 0, jitter_max_us = 0;     ///< wake-up lateness
   double compute_p50_us = 0, compute_p99_us = 0, compute_max_us = 0;  ///< body run time
 };
@@ -43,9 +43,9 @@ struct LoopStats {
 class PeriodicLoop {
  public:
   struct Tick {
-    uint64_t index;         ///< 0, 1, 2, ...
-    int64_t deadline_ns;    ///< CLOCK_MONOTONIC deadline this iteration was scheduled for
-    int64_t wake_ns;        ///< when the thread actually woke
+    uint64_t index;       ///< 0, 1, 2, ...
+    int64_t deadline_ns;  ///< CLOCK_MONOTONIC deadline this iteration was scheduled for
+    int64_t wake_ns;      ///< when the thread actually woke
   };
 
   /// Validates the options (InputError for out-of-range values) and applies the real-time

@@ -23,12 +23,12 @@ struct QosProfile {
   double max_blocking_time_s = 0.1;
   Durability durability = Durability::volatile_;
   History history = History::keep_last;
-  int32_t depth = 1;                   ///< keep_last depth (>= 1)
-  double deadline_s = 0.0;             ///< 0: no deadline
+  int32_t depth = 1;        ///< keep_last depth (>= 1)
+  double deadline_s = 0.0;  ///< 0: no deadline
   Liveliness liveliness = Liveliness::automatic;
-  double liveliness_lease_s = 0.0;     ///< 0: infinite lease
-  double lifespan_s = 0.0;             ///< 0: infinite
-  double latency_budget_s = 0.0;       ///< 0: none
+  double liveliness_lease_s = 0.0;  ///< 0: infinite lease
+  double lifespan_s = 0.0;          ///< 0: infinite
+  double latency_budget_s = 0.0;    ///< 0: none
 };
 
 const char* to_string(QosProfile::Reliability v);

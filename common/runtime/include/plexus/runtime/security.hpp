@@ -28,7 +28,8 @@ struct SecurityOptions {
 /// `name` may also be a folder (it contains a '/') holding cert.pem, key.pem and permissions.p7s.
 /// `governance` (optional) replaces PKI/governance.p7s; a relative path is taken in `pki_dir`.
 /// Nothing is read here: check_security_files() does that.
-SecurityOptions security_from_pki(const std::string& pki_dir, const std::string& name, const std::string& governance = "");
+SecurityOptions security_from_pki(const std::string& pki_dir, const std::string& name,
+                                  const std::string& governance = "");
 
 /// Reads and checks every file of `s` before a vendor sees it: each exists and parses (PEM
 /// certificates and key, S/MIME documents); the identity certificate is signed by the identity
@@ -39,8 +40,8 @@ void check_security_files(const SecurityOptions& s, const std::string& origin);
 /// The order in which two participants authenticate: a participant's GUID prefix starts with 1
 /// bit set and the first 47 bits of SHA-256 of its certificate's subject name (DER) (DDS
 /// Security 1.1, 9.3.3), and of two participants the one with the lower GUID sends the
-/// handshake request (Fast DDS 2.9 and Cyclone DDS 0.10 alike). Returns those 47 bits; equal ranks (same subject) order at random.
-/// Throws InputError if the certificate cannot be read.
+/// handshake request (Fast DDS 2.9 and Cyclone DDS 0.10 alike). Returns those 47 bits; equal ranks (same subject) order
+/// at random. Throws InputError if the certificate cannot be read.
 uint64_t handshake_rank(const std::string& certificate_file);
 
 /// The subject name of a certificate (RFC 2253), for messages. Throws InputError.

@@ -17,8 +17,10 @@
 namespace plexus::rt {
 
 inline void add_security_options(CLI::App& app, std::string& pki, std::string& identity, std::string& governance) {
-  app.add_option("--security", pki, "PKI folder: DDS Security on (authentication, access control, encryption; docs/security.md)");
-  app.add_option("--identity", identity, "With --security: identity NAME in PKI/identities, or its folder (default: this program's name)");
+  app.add_option("--security", pki,
+                 "PKI folder: DDS Security on (authentication, access control, encryption; docs/security.md)");
+  app.add_option("--identity", identity,
+                 "With --security: identity NAME in PKI/identities, or its folder (default: this program's name)");
   app.add_option("--governance", governance, "With --security: governance document (default PKI/governance.p7s)");
 }
 

@@ -54,16 +54,16 @@ struct ScenarioWarning {
 };
 
 struct ComponentConfig {
-  std::string name;        ///< instance name: `<robot>/plant`, `<robot>/<sensor>` or the service name
-  std::string key;         ///< its key in the scenario: the sensor or service name, or "plant"
-  std::string robot;       ///< robot it belongs to; empty for a robot-less service
-  std::string type;        ///< registered type name
-  ComponentKind kind{};    ///< kind of the registered type
-  double base_step = 0.0;  ///< s, the scenario's base step
-  int64_t period_steps = 1;  ///< runs every period_steps base steps
-  uint64_t seed = 0;       ///< its own seed (given, or derived from the scenario seed and `name`)
+  std::string name;                          ///< instance name: `<robot>/plant`, `<robot>/<sensor>` or the service name
+  std::string key;                           ///< its key in the scenario: the sensor or service name, or "plant"
+  std::string robot;                         ///< robot it belongs to; empty for a robot-less service
+  std::string type;                          ///< registered type name
+  ComponentKind kind{};                      ///< kind of the registered type
+  double base_step = 0.0;                    ///< s, the scenario's base step
+  int64_t period_steps = 1;                  ///< runs every period_steps base steps
+  uint64_t seed = 0;                         ///< its own seed (given, or derived from the scenario seed and `name`)
   std::map<std::string, std::string> remap;  ///< port -> signal name overrides from the scenario
-  const YamlMap* section = nullptr;  ///< its YAML section: read your parameters from here
+  const YamlMap* section = nullptr;          ///< its YAML section: read your parameters from here
   /// Folder that relative file parameters are resolved against: the scenario file's (for a
   /// launched process, the original scenario's, not its part's; for a service on its own,
   /// its parameter file's).

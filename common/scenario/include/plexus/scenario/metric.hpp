@@ -57,7 +57,7 @@ class MetricSetup {
   /// The field names listed by optional key `key` (a list), or `fallback` when the key is
   /// absent; each must be a field of every spec given.
   std::vector<std::string> fields(const std::vector<const SignalSpec*>& specs, const std::string& key,
-                          const std::vector<std::string>& fallback) const;
+                                  const std::vector<std::string>& fallback) const;
   /// Optional time window [from, to] in seconds (keys `from`, default 0, and `to`,
   /// default the duration), validated to lie in [0, duration] with from <= to. (Read it into
   /// two variables, not a structured binding, where a lambda captures them: clang 14, which

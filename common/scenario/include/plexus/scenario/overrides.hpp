@@ -10,7 +10,7 @@ namespace plexus::scenario {
 
 /// One `--set path=value`. `value` is parsed as YAML (a scalar, `[1, 2]` or `{a: 1}`).
 struct Override {
-  std::string path;   ///< dotted key path; list elements by index (`metrics.0.from`)
+  std::string path;  ///< dotted key path; list elements by index (`metrics.0.from`)
   std::string value;
   std::string text() const { return "--set " + path + "=" + value; }
 };

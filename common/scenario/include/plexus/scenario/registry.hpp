@@ -58,7 +58,7 @@ const char* to_string(ServiceRole role);
 
 /// A deployable service: what its CMakeLists.txt declares (plexus_add_service).
 struct ServiceDeclaration {
-  std::string name;                          ///< the executable
+  std::string name;  ///< the executable
   ServiceRole role = ServiceRole::service;
   std::vector<std::string> component_types;  ///< the types it hosts (host: also any other)
   std::string summary;

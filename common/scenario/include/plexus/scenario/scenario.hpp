@@ -53,7 +53,8 @@ struct ScenarioComponent {
 /// share, written by `plexus launch`) or a service run on its own. Top-level `inputs:` key.
 struct ExternalInput {
   int64_t period_steps = 0;  ///< the producer's period (0: the reading component's own)
-  ComponentKind stage = ComponentKind::plant;  ///< the producer's stage: a reader in the same or an earlier stage reads it one step late
+  ComponentKind stage =
+      ComponentKind::plant;  ///< the producer's stage: a reader in the same or an earlier stage reads it one step late
   bool staged = false;       ///< stage given (else: read without delay)
   std::string qos;           ///< the producer's QoS profile (empty: "state")
   std::string producer;      ///< the producing component's name, for messages (empty: unknown)
@@ -66,13 +67,13 @@ struct ExternalInput {
 struct RobotSource {
   enum class Type { simulator, serial_bridge, udp_bridge, replay };
   Type type = Type::simulator;
-  std::string where;             ///< "file:line: robots.r1.source", for errors
-  std::string device;            ///< serial_bridge: tty path
-  long baud = 1000000;           ///< serial_bridge: 115200 .. 1000000
-  std::string bind, peer;        ///< udp_bridge: ADDR:PORT of the bridge and of the device
-  double link_timeout_s = 0.5;   ///< bridges: no valid frame for this long -> DEGRADED
-  double retry_s = 0.5;          ///< bridges: between attempts to open an absent device
-  std::string recording;         ///< replay: the recording (plexus record), absolute
+  std::string where;            ///< "file:line: robots.r1.source", for errors
+  std::string device;           ///< serial_bridge: tty path
+  long baud = 1000000;          ///< serial_bridge: 115200 .. 1000000
+  std::string bind, peer;       ///< udp_bridge: ADDR:PORT of the bridge and of the device
+  double link_timeout_s = 0.5;  ///< bridges: no valid frame for this long -> DEGRADED
+  double retry_s = 0.5;         ///< bridges: between attempts to open an absent device
+  std::string recording;        ///< replay: the recording (plexus record), absolute
 };
 const char* to_string(RobotSource::Type t);
 

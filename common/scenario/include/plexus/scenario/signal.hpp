@@ -22,7 +22,7 @@ inline constexpr std::size_t kMaxSignalFields = 136;
 
 /// The value of a signal at one base step.
 struct SignalSample {
-  int64_t step = -1;                             ///< base step it was produced at; -1: never produced
+  int64_t step = -1;                              ///< base step it was produced at; -1: never produced
   std::array<double, kMaxSignalFields> values{};  ///< fields in declared order, the rest zero
 };
 

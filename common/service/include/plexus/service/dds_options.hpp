@@ -19,9 +19,9 @@ struct ServiceDdsOptions {
   std::string interface_address = "127.0.0.1";
   std::string peers = "127.0.0.1";
   std::string transport = "auto";  ///< auto | udp | shm (plexus/runtime/transport.hpp)
-  std::string security;    ///< PKI folder: DDS Security on (docs/security.md); empty: off
-  std::string identity;    ///< identity in <security>/identities, or a folder; empty: the default
-  std::string governance;  ///< governance document; empty: <security>/governance.p7s
+  std::string security;            ///< PKI folder: DDS Security on (docs/security.md); empty: off
+  std::string identity;            ///< identity in <security>/identities, or a folder; empty: the default
+  std::string governance;          ///< governance document; empty: <security>/governance.p7s
 
   /// --dds, --domain, --qos-file, --service, --interface, --peers, --transport, --security,
   /// --identity, --governance.

@@ -18,13 +18,13 @@ namespace plexus::scenario {
 inline constexpr double kDefaultCommandRateHz = 100.0;
 
 struct StandaloneSpec {
-  std::string program;      ///< the executable, for errors ("plant_simulator")
+  std::string program;         ///< the executable, for errors ("plant_simulator")
   bool robot_section = false;  ///< params are a robot section (plant, sensors), not a service's
   std::string robot = "r1";
-  std::string name;         ///< service name (services only)
-  std::string type;         ///< component type when params has none (services only)
-  std::string params_file;  ///< YAML; empty: no parameters
-  double step = 0.0;        ///< base step (s); 0: 1 / the service's rate (robots: 0.001)
+  std::string name;                      ///< service name (services only)
+  std::string type;                      ///< component type when params has none (services only)
+  std::string params_file;               ///< YAML; empty: no parameters
+  double step = 0.0;                     ///< base step (s); 0: 1 / the service's rate (robots: 0.001)
   std::vector<std::string> input_rates;  ///< PORT=HZ: an input's producer rate
   /// Robot sections: the rate of the robot's command (<robot>/cmd) when input_rates does not
   /// give it; 0: the base step's. The plant simulator and the bridges use

@@ -69,12 +69,12 @@ class ArmChainDynamics {
 
  private:
   struct Link {
-    Eigen::Matrix3d fixed_rotation;  ///< RotX(twist of the parent link)
-    spatial::Transform from_parent;  ///< {B_{i-1}} -> {B_i} at the current q_i
-    spatial::Matrix6 inertia;        ///< M_i about the origin of {B_i} (payload included)
-    spatial::Matrix6 composite;      ///< CRBA work
+    Eigen::Matrix3d fixed_rotation;        ///< RotX(twist of the parent link)
+    spatial::Transform from_parent;        ///< {B_{i-1}} -> {B_i} at the current q_i
+    spatial::Matrix6 inertia;              ///< M_i about the origin of {B_i} (payload included)
+    spatial::Matrix6 composite;            ///< CRBA work
     spatial::Vector6 v, a, f, xv, xa, iv;  ///< V_i, A_i, F_i (with the children), U^T V_{i-1}, U^T A_{i-1}, M_i V_i
-    spatial::Vector6 dv, da, df;     ///< tangent work
+    spatial::Vector6 dv, da, df;           ///< tangent work
   };
 
   void frames(const Eigen::VectorXd& q);
@@ -85,8 +85,8 @@ class ArmChainDynamics {
   int n_;
   double extra_payload_ = 0.0;
   spatial::Matrix6 last_inertia_, unit_point_;  ///< the last link's model inertia; a unit mass at its tip
-  bool pass_has_qdd_ = false;           ///< the stored pass is at (q, q', q''), not at q'' = 0
-  spatial::Vector6 base_acceleration_;  ///< [-g; 0]
+  bool pass_has_qdd_ = false;                   ///< the stored pass is at (q, q', q''), not at q'' = 0
+  spatial::Vector6 base_acceleration_;          ///< [-g; 0]
   std::vector<Link> links_;
   Eigen::VectorXd qd_, qdd_, h_, zero_, unit_, dtau_;
   Eigen::MatrixXd mass_;

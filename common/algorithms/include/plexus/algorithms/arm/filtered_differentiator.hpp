@@ -28,7 +28,10 @@ class FilteredDifferentiator {
     started_ = false;
   }
   /// Forgets the history: the next update() starts from derivative 0.
-  void reset() { started_ = false; out_.setZero(); }
+  void reset() {
+    started_ = false;
+    out_.setZero();
+  }
 
   /// Feeds x_k; returns the filtered derivative estimate.
   const Eigen::VectorXd& update(const Eigen::VectorXd& x) {

@@ -56,8 +56,8 @@
 
 #include "plexus/algorithms/arm/arm_feedback.hpp"
 #include "plexus/algorithms/arm/arm_model.hpp"
-#include "plexus/algorithms/arm/filtered_differentiator.hpp"
 #include "plexus/algorithms/arm/chain_dynamics.hpp"
+#include "plexus/algorithms/arm/filtered_differentiator.hpp"
 
 namespace plexus::algorithms {
 
@@ -66,21 +66,21 @@ enum class LinkAcceleration { kModel, kDifferentiator };
 
 struct FlexibleJointEkfParams {
   ArmModel model = ArmModel::paper_2dof();  ///< the observer's (nominal) model
-  double q = 4.0;      ///< Q = q I, > 0
-  double r = 0.1;      ///< R = r I, > 0
-  double p0 = 1.0;     ///< P(0) = p0 I, > 0
-  int substeps = 1;    ///< RK4 sub-steps per update, >= 1 (1 at the scenarios' 5 kHz)
-  double step = 1e-3;  ///< s, the update period (for the q'' differentiator), > 0
-  double accel_filter_hz = 50.0;  ///< cutoff of the q'' differentiator, > 0
-  double fd_step = 1e-6;          ///< rad, rad/s: central-difference step of A and B, > 0
+  double q = 4.0;                           ///< Q = q I, > 0
+  double r = 0.1;                           ///< R = r I, > 0
+  double p0 = 1.0;                          ///< P(0) = p0 I, > 0
+  int substeps = 1;                         ///< RK4 sub-steps per update, >= 1 (1 at the scenarios' 5 kHz)
+  double step = 1e-3;                       ///< s, the update period (for the q'' differentiator), > 0
+  double accel_filter_hz = 50.0;            ///< cutoff of the q'' differentiator, > 0
+  double fd_step = 1e-6;                    ///< rad, rad/s: central-difference step of A and B, > 0
   EkfJacobian jacobian = EkfJacobian::kFull;
   LinkAcceleration acceleration = LinkAcceleration::kModel;
-  bool disturbance = false;      ///< augment x with a link-side disturbance torque d per joint (header)
-  double q_disturbance = 1e4;    ///< (N m)^2/s: process noise of d, > 0 (used with `disturbance`)
-  double q_tau_rate = 0.0;       ///< process noise of the tau' rows; 0: the same as q; else > 0
-  bool payload = false;          ///< augment x with an unknown tip mass m_p (header)
-  double q_payload = 1.0;        ///< kg^2/s: process noise of m_p, > 0 (used with `payload`)
-  double p0_payload = 1.0;       ///< kg^2: initial variance of m_p, > 0 (used with `payload`)
+  bool disturbance = false;    ///< augment x with a link-side disturbance torque d per joint (header)
+  double q_disturbance = 1e4;  ///< (N m)^2/s: process noise of d, > 0 (used with `disturbance`)
+  double q_tau_rate = 0.0;     ///< process noise of the tau' rows; 0: the same as q; else > 0
+  bool payload = false;        ///< augment x with an unknown tip mass m_p (header)
+  double q_payload = 1.0;      ///< kg^2/s: process noise of m_p, > 0 (used with `payload`)
+  double p0_payload = 1.0;     ///< kg^2: initial variance of m_p, > 0 (used with `payload`)
 
   /// Paper 004 section 4.2: Q = 4 I, R = 0.1 I, P(0) = I, no disturbance state (the defaults).
   static FlexibleJointEkfParams paper();
@@ -131,20 +131,20 @@ class FlexibleJointEkf {
 
   FlexibleJointEkfParams params_;
   int n_;
-  int m_;        ///< state size (4n or 5n)
-  int ipay_;     ///< offset of m_p in x (with the payload state)
-  int iphi_;     ///< offset of phi in x; phi' follows
-  Vector qdiag_; ///< diagonal of Q
-  Vector d_;     ///< d^ (zero without the disturbance state)
+  int m_;         ///< state size (4n or 5n)
+  int ipay_;      ///< offset of m_p in x (with the payload state)
+  int iphi_;      ///< offset of phi in x; phi' follows
+  Vector qdiag_;  ///< diagonal of Q
+  Vector d_;      ///< d^ (zero without the disturbance state)
   ArmChainDynamics dyn_;
   Vector k_, j_, f_;
   Vector x_, k1_, k2_, k3_, k4_, xt_, innovation_;
   Matrix p_, fjac_, p1_, p2_, p3_, p4_, pt_, tmp_;
   Vector q_, qd_, qdd_, qdd_plus_, qdd_minus_, tau_, qp_;  ///< tau_: tau + d, the torque on the links
-  Vector jq_, jqd_, jtau_;  ///< shifted link state of the jerk difference
+  Vector jq_, jqd_, jtau_;                                 ///< shifted link state of the jerk difference
   Matrix minv_, a_, b_, did_q_, did_qd_;
-  Vector yp_;  ///< payload regressor
-  Vector pass_x_;            ///< the x of dyn_'s last forward-dynamics pass
+  Vector yp_;      ///< payload regressor
+  Vector pass_x_;  ///< the x of dyn_'s last forward-dynamics pass
   bool pass_valid_ = false;
   Vector y_prev_;
   bool has_y_prev_ = false;

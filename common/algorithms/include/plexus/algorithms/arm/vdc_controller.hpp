@@ -51,15 +51,15 @@ namespace plexus::algorithms {
 struct VdcParams {
   ArmModel model = ArmModel::paper_2dof();  ///< nominal model: the "true values" of the bounds
   // Rigid links (Table 3), one entry per link.
-  Eigen::VectorXd k_b;      ///< K_Bi = k_b I6, > 0
-  Eigen::VectorXd rho;      ///< adaptation gain for all 13 parameters of link i, >= 0
+  Eigen::VectorXd k_b;  ///< K_Bi = k_b I6, > 0
+  Eigen::VectorXd rho;  ///< adaptation gain for all 13 parameters of link i, >= 0
   // Flexible joints (Table 3), one entry per joint.
   Eigen::VectorXd lambda, k_p, k_i, ts_min, ts_max, lambda_q, lambda_phi, lambda_tau, k_phi, k_tau;
-  double theta_lower = 0.6;    ///< lower adaptation bound, fraction of the nominal value (0.6 = 60 %)
-  double theta_upper = 1.8;    ///< upper bound (1.8 = 180 %), > theta_lower
-  double theta_initial = 1.0;  ///< theta^(0) as a fraction of the nominal value, in [lower, upper]
-  double step = 1e-3;                  ///< s, controller period, > 0
-  double derivative_step = 1e-4;       ///< s, > 0: spacing e of the tau_od', tau_od'' differences
+  double theta_lower = 0.6;       ///< lower adaptation bound, fraction of the nominal value (0.6 = 60 %)
+  double theta_upper = 1.8;       ///< upper bound (1.8 = 180 %), > theta_lower
+  double theta_initial = 1.0;     ///< theta^(0) as a fraction of the nominal value, in [lower, upper]
+  double step = 1e-3;             ///< s, controller period, > 0
+  double derivative_step = 1e-4;  ///< s, > 0: spacing e of the tau_od', tau_od'' differences
   /// Disturbance compensation (not in the paper; issue 18, docs/algorithms/arm.md "Model
   /// error"): tau_r gets - d^, d^ = ID_theta^(q, q', q'') - tau the residual of the adapted
   /// link model at the observer's estimate (the observer's disturbance state when it has

@@ -30,15 +30,15 @@ struct AttitudeFilterParams {
   AttitudeFilterKind kind = AttitudeFilterKind::kUkfAugmented;
   AttitudeMeasurementForm measurement = AttitudeMeasurementForm::kObservable;
   AttitudeModelParams model;
-  double q_theta = 0.0034906585039886592;    ///< sqrt(Q_A), rad, >= 0 (0.2 deg)
-  double q_rate = 0.00087266462599716477;    ///< sqrt(Q_G), rad/s, >= 0 (0.05 deg/s)
-  double q_drift = 0.0052359877559829887;    ///< sqrt(Q_eps), rad/s, >= 0 (0.3 deg/s)
-  double r_tilt = 0.0034906585039886592;     ///< sqrt(R_A), rad, > 0 (0.2 deg)
-  double r_gyro = 0.0087266462599716477;     ///< sqrt(R_G), rad/s, > 0 (0.5 deg/s; observable form)
+  double q_theta = 0.0034906585039886592;            ///< sqrt(Q_A), rad, >= 0 (0.2 deg)
+  double q_rate = 0.00087266462599716477;            ///< sqrt(Q_G), rad/s, >= 0 (0.05 deg/s)
+  double q_drift = 0.0052359877559829887;            ///< sqrt(Q_eps), rad/s, >= 0 (0.3 deg/s)
+  double r_tilt = 0.0034906585039886592;             ///< sqrt(R_A), rad, > 0 (0.2 deg)
+  double r_gyro = 0.0087266462599716477;             ///< sqrt(R_G), rad/s, > 0 (0.5 deg/s; observable form)
   double initial_theta_std = 0.0087266462599716477;  ///< rad, > 0 (0.5 deg; starts upright)
   double initial_rate_std = 0.017453292519943295;    ///< rad/s, > 0 (1 deg/s)
   double initial_drift_std = 0.017453292519943295;   ///< rad/s, > 0 (1 deg/s)
-  UnscentedParams sigma;                     ///< alpha, beta (2), kappa for the UKFs
+  UnscentedParams sigma;                             ///< alpha, beta (2), kappa for the UKFs
 };
 
 class AttitudeFilter {

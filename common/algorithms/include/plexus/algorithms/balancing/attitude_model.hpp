@@ -31,13 +31,13 @@ enum class AttitudeProcessModel { kNonlinear, kLinear };
 enum class AttitudeMeasurementForm { kPaper, kObservable };
 
 struct AttitudeModelParams {
-  PendulumCoefficients coefficients;  ///< alpha1..alpha4, k_T (from WheeledInvertedPendulum)
-  double gamma1 = -0.01;              ///< drift model pole, 1/s, finite
-  double gamma2 = 0.0;                ///< drift model forcing, rad/s^2, finite
-  double dt = 0.01;                   ///< sample time, s, > 0 (paper Table 1: 0.01)
+  PendulumCoefficients coefficients;       ///< alpha1..alpha4, k_T (from WheeledInvertedPendulum)
+  double gamma1 = -0.01;                   ///< drift model pole, 1/s, finite
+  double gamma2 = 0.0;                     ///< drift model forcing, rad/s^2, finite
+  double dt = 0.01;                        ///< sample time, s, > 0 (paper Table 1: 0.01)
   double gyro_range = 2.6179938779914944;  ///< rad/s, > 0 (150 deg/s; infinity: no saturation)
-  double accelerometer_height = 0.12;  ///< d, m, finite (imu_sensor.hpp)
-  double gravity = 9.81;               ///< g, m/s^2, > 0
+  double accelerometer_height = 0.12;      ///< d, m, finite (imu_sensor.hpp)
+  double gravity = 9.81;                   ///< g, m/s^2, > 0
   AttitudeProcessModel process = AttitudeProcessModel::kNonlinear;
 };
 
@@ -55,8 +55,7 @@ class AttitudeModel {
   /// theta'' of the chosen process model.
   double tilt_acceleration(double theta, double theta_dot, double torque) const;
   /// Partial derivatives of theta'' with respect to theta and theta_dot.
-  void tilt_acceleration_partials(double theta, double theta_dot, double torque, double& d_theta,
-                                  double& d_rate) const;
+  void tilt_acceleration_partials(double theta, double theta_dot, double torque, double& d_theta, double& d_rate) const;
 
   /// Accelerometer tilt model tilt_acc(x, T) and its gradient d/dx (third entry 0).
   double accelerometer_tilt(const State& x, double torque) const;

@@ -23,11 +23,11 @@
 namespace plexus::algorithms {
 
 struct GyroParams {
-  double noise_std = 0.0087;        ///< white noise per sample, rad/s, >= 0 (0.5 deg/s)
-  double gamma1 = -0.01;            ///< drift model pole, 1/s, finite (<= 0 for a stable drift)
-  double gamma2 = 0.0;              ///< drift model forcing, rad/s^2, finite
-  double drift_noise_psd = 1e-6;    ///< drift random walk PSD, rad^2/s^3, >= 0
-  double initial_drift = 0.0087;    ///< eps(0), rad/s, finite (0.5 deg/s)
+  double noise_std = 0.0087;          ///< white noise per sample, rad/s, >= 0 (0.5 deg/s)
+  double gamma1 = -0.01;              ///< drift model pole, 1/s, finite (<= 0 for a stable drift)
+  double gamma2 = 0.0;                ///< drift model forcing, rad/s^2, finite
+  double drift_noise_psd = 1e-6;      ///< drift random walk PSD, rad^2/s^3, >= 0
+  double initial_drift = 0.0087;      ///< eps(0), rad/s, finite (0.5 deg/s)
   double range = 2.6179938779914944;  ///< saturation, rad/s, > 0 (150 deg/s)
 };
 
@@ -56,8 +56,8 @@ class ImuSensor {
   ImuSample measure(const WheeledPendulumState& s, const WheeledPendulumAccelerations& acc, double dt);
 
   /// The noise-free accelerometer specific force (f_xb, f_zb) at a state.
-  static void specific_force(const WheeledPendulumState& s, const WheeledPendulumAccelerations& acc,
-                             double height, double gravity, double& f_xb, double& f_zb);
+  static void specific_force(const WheeledPendulumState& s, const WheeledPendulumAccelerations& acc, double height,
+                             double gravity, double& f_xb, double& f_zb);
 
   double drift() const { return drift_; }
 

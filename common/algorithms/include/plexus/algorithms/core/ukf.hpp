@@ -71,8 +71,7 @@ class UkfEstimate {
   /// Replaces the covariance only. Throws std::invalid_argument if P is not SPD.
   void reset_covariance(const Covariance& P) {
     if (!is_symmetric_positive_definite<N>(P)) {
-      throw std::invalid_argument(std::string(where_) +
-                                  ": covariance must be finite, symmetric and positive definite");
+      throw std::invalid_argument(std::string(where_) + ": covariance must be finite, symmetric and positive definite");
     }
     P_ = 0.5 * (P + P.transpose());
   }
@@ -207,8 +206,7 @@ class AugmentedUkf : public detail::UkfEstimate<N> {
 
   /// Validates sigma (for L = N + NW + NV) and min_eigenvalue; throws std::invalid_argument.
   explicit AugmentedUkf(const UkfOptions& options = {})
-      : Base(options, "augmented_ukf"),
-        w_(UnscentedWeights<kAugmented>::make(options.sigma, "augmented_ukf")) {}
+      : Base(options, "augmented_ukf"), w_(UnscentedWeights<kAugmented>::make(options.sigma, "augmented_ukf")) {}
 
   /// Predict: draws the 2L+1 points of [x; w; v] ~ N([x; 0; 0], blkdiag(P, Q, R)) and
   /// propagates `f(const State&, const ProcessNoise&) -> State`. Keeps the propagated

@@ -45,8 +45,7 @@ inline void require_finite(std::string_view where, std::string_view name, double
 }
 
 /// lo < value < hi (open interval).
-inline void require_open_interval(std::string_view where, std::string_view name, double value, double lo,
-                                  double hi) {
+inline void require_open_interval(std::string_view where, std::string_view name, double value, double lo, double hi) {
   if (!(value > lo && value < hi)) {
     fail(where, name, "in (" + format_value(lo) + ", " + format_value(hi) + ")", value);
   }

@@ -35,13 +35,13 @@ struct DriveSegment {
 
 struct DrivingPatternParams {
   DrivingPatternKind kind = DrivingPatternKind::kFigureEight;
-  double speed = 0.5;        ///< body speed v, m/s, finite (straight, circle, figure_eight)
-  double turn_rate = 0.5;    ///< w (circle) or its amplitude (figure_eight), rad/s, finite
-  double period = 20.0;      ///< figure-eight period, s, > 0
-  double phase = 0.0;        ///< figure-eight phase, rad, finite (pi/2: start turning at full rate)
-  double track_width = 0.4;  ///< commanded no-slip track width B, m, > 0 (Pioneer 3-AT: 0.40)
+  double speed = 0.5;                  ///< body speed v, m/s, finite (straight, circle, figure_eight)
+  double turn_rate = 0.5;              ///< w (circle) or its amplitude (figure_eight), rad/s, finite
+  double period = 20.0;                ///< figure-eight period, s, > 0
+  double phase = 0.0;                  ///< figure-eight phase, rad, finite (pi/2: start turning at full rate)
+  double track_width = 0.4;            ///< commanded no-slip track width B, m, > 0 (Pioneer 3-AT: 0.40)
   std::vector<DriveSegment> segments;  ///< kSegments: >= 1
-  bool repeat = true;        ///< kSegments: loop the list
+  bool repeat = true;                  ///< kSegments: loop the list
 };
 
 class DrivingPattern {

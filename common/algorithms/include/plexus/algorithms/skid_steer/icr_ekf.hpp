@@ -51,15 +51,15 @@ using IcrVector = Eigen::Matrix<double, 6, 1>;
 using IcrMatrix = Eigen::Matrix<double, 6, 6>;
 
 struct IcrEkfParams {
-  IcrVector q_diag = paper_q();                 ///< Q diagonal, finite >= 0
-  Eigen::Vector3d r_diag = paper_r();           ///< R diagonal, finite > 0
-  IcrVector p0_diag = paper_p_b();              ///< initial P diagonal, finite > 0
-  IcrVector p_b_diag = paper_p_b();             ///< adaptive-reset P_B diagonal, finite > 0
-  IcrParams initial_icr{1.0, -1.0, 1.0};        ///< paper section 4.1
+  IcrVector q_diag = paper_q();           ///< Q diagonal, finite >= 0
+  Eigen::Vector3d r_diag = paper_r();     ///< R diagonal, finite > 0
+  IcrVector p0_diag = paper_p_b();        ///< initial P diagonal, finite > 0
+  IcrVector p_b_diag = paper_p_b();       ///< adaptive-reset P_B diagonal, finite > 0
+  IcrParams initial_icr{1.0, -1.0, 1.0};  ///< paper section 4.1
   ProcessNoiseModel process_noise = ProcessNoiseModel::kDtSquared;
-  double min_track_separation = 1e-3;           ///< m, > 0: predictions need y_l - y_r above it
-  bool enforce_track_sides = true;              ///< clamp y_l >= margin, y_r <= -margin after updates
-  double track_side_margin = 0.01;              ///< m, >= 0
+  double min_track_separation = 1e-3;  ///< m, > 0: predictions need y_l - y_r above it
+  bool enforce_track_sides = true;     ///< clamp y_l >= margin, y_r <= -margin after updates
+  double track_side_margin = 0.01;     ///< m, >= 0
 
   static IcrVector paper_q();
   static Eigen::Vector3d paper_r();

@@ -30,16 +30,16 @@ KnnTieRule knn_tie_rule_from_string(const std::string& name);
 FeatureScaling feature_scaling_from_string(const std::string& name);
 
 struct KnnParams {
-  int k = 5;                                          ///< 1 <= k <= training samples
+  int k = 5;  ///< 1 <= k <= training samples
   KnnTieRule tie_rule = KnnTieRule::kNearest;
   FeatureScaling scaling = FeatureScaling::kStandardize;
 };
 
 struct KnnResult {
-  int label = -1;            ///< winning class id
-  int votes = 0;             ///< its votes among the neighbours used
-  int neighbours = 0;        ///< neighbours used (k, or fewer after kShrinkK)
-  double confidence = 0.0;   ///< votes / neighbours
+  int label = -1;                 ///< winning class id
+  int votes = 0;                  ///< its votes among the neighbours used
+  int neighbours = 0;             ///< neighbours used (k, or fewer after kShrinkK)
+  double confidence = 0.0;        ///< votes / neighbours
   double nearest_distance = 0.0;  ///< distance to the nearest training sample (scaled space)
 };
 
@@ -61,9 +61,9 @@ class KnnClassifier {
   TrainingSet set_;
   KnnParams params_;
   std::vector<int> classes_;
-  std::vector<std::size_t> class_index_;   // per sample: index into classes_
-  std::vector<double> offset_, scale_;     // per feature: (x - offset) / scale
-  std::vector<double> scaled_;             // training features, scaled, row-major
+  std::vector<std::size_t> class_index_;  // per sample: index into classes_
+  std::vector<double> offset_, scale_;    // per feature: (x - offset) / scale
+  std::vector<double> scaled_;            // training features, scaled, row-major
   // scratch, sized at construction (classify() is const but not reentrant on one object)
   mutable std::vector<double> query_;
   mutable std::vector<std::pair<double, std::size_t>> dist_;

@@ -34,10 +34,10 @@ struct SkidSteerPlantParams {
   std::vector<TerrainSpec> terrains = paper_terrains();  ///< >= 1, each with valid ICRs
   std::vector<TerrainSegment> schedule{{0.0, 0}};        ///< validated by TerrainSchedule
   Pose2 initial_pose{};
-  double step = 0.01;             ///< s, > 0: the integration and vibration sample period
-  double reference_speed = 0.5;   ///< vibration gain 1 at this mean track speed, m/s
-  double speed_exponent = 1.0;    ///< vibration gain exponent, >= 0
-  double gravity = 9.81;          ///< m/s^2
+  double step = 0.01;            ///< s, > 0: the integration and vibration sample period
+  double reference_speed = 0.5;  ///< vibration gain 1 at this mean track speed, m/s
+  double speed_exponent = 1.0;   ///< vibration gain exponent, >= 0
+  double gravity = 9.81;         ///< m/s^2
 };
 
 struct SkidSteerState {

@@ -20,9 +20,9 @@
 namespace plexus::algorithms {
 
 struct PoseSensorParams {
-  double position_std = 0.01;                 ///< m, >= 0 (paper: 0.01)
+  double position_std = 0.01;                     ///< m, >= 0 (paper: 0.01)
   double heading_std = std::numbers::pi / 180.0;  ///< rad, >= 0 (paper: 1 deg)
-  bool wrap_heading = true;                   ///< report theta in (-pi, pi]
+  bool wrap_heading = true;                       ///< report theta in (-pi, pi]
 };
 
 class PoseSensor {

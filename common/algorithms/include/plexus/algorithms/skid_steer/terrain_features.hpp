@@ -37,8 +37,8 @@ struct PsdFeatureParams {
   double min_hz = 1.0;            ///< >= 0 (paper: 1)
   double max_hz = 50.0;           ///< > min_hz, <= Nyquist (paper: 50); >= 1 bin in between
   SpectrumTaper taper = SpectrumTaper::kRectangular;
-  bool log10 = false;             ///< features log10(PSD + log_floor) instead of PSD
-  double log_floor = 1e-12;       ///< > 0
+  bool log10 = false;        ///< features log10(PSD + log_floor) instead of PSD
+  double log_floor = 1e-12;  ///< > 0
 };
 
 class PsdFeatureExtractor {
@@ -65,10 +65,10 @@ class PsdFeatureExtractor {
   std::size_t first_bin_ = 0;
   std::size_t last_bin_ = 0;
   std::vector<double> taper_;
-  double scale_ = 0.0;  // 1 / (fs sum w^2)
-  double* in_ = nullptr;   // fftw_malloc'd, window_samples
-  void* out_ = nullptr;    // fftw_complex[window_samples / 2 + 1]
-  void* plan_ = nullptr;   // fftw_plan
+  double scale_ = 0.0;    // 1 / (fs sum w^2)
+  double* in_ = nullptr;  // fftw_malloc'd, window_samples
+  void* out_ = nullptr;   // fftw_complex[window_samples / 2 + 1]
+  void* plan_ = nullptr;  // fftw_plan
 };
 
 /// Buffers a stream of samples into windows of `size` samples, every `hop` samples
@@ -82,7 +82,10 @@ class SampleWindow {
   /// The last complete window, oldest sample first.
   std::span<const double> window() const { return {window_.data(), window_.size()}; }
   /// Drops partial data (e.g. after a gap).
-  void clear() { filled_ = 0; since_ = 0; }
+  void clear() {
+    filled_ = 0;
+    since_ = 0;
+  }
 
  private:
   std::vector<double> ring_;

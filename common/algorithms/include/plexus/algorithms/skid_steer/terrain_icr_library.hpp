@@ -41,7 +41,8 @@ struct TerrainIcrLibrary {
 TerrainIcrLibrary load_terrain_icr_library(const std::string& path);
 /// Writes `library` to `path` (replaced atomically: a temporary file renamed over it).
 /// Throws TrainingFileError if it cannot be written.
-void save_terrain_icr_library(const std::string& path, const TerrainIcrLibrary& library, const std::string& comment = {});
+void save_terrain_icr_library(const std::string& path, const TerrainIcrLibrary& library,
+                              const std::string& comment = {});
 
 /// Per-class running mean and variance (Welford) of converged ICR estimates.
 class TerrainIcrAccumulator {

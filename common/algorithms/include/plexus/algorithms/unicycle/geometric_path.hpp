@@ -31,8 +31,8 @@ struct CirclePath {
 
 /// h = n . (p - point): signed distance times |n| to the line through `point` with normal n.
 struct LinePath {
-  Eigen::Vector2d point = Eigen::Vector2d::Zero();      ///< m, a point on the line
-  Eigen::Vector2d normal = Eigen::Vector2d(0.0, 1.0);   ///< non-zero; h has units m * |normal|
+  Eigen::Vector2d point = Eigen::Vector2d::Zero();     ///< m, a point on the line
+  Eigen::Vector2d normal = Eigen::Vector2d(0.0, 1.0);  ///< non-zero; h has units m * |normal|
 };
 
 /// h = (u / a)^2 + (w / b)^2 - 1 with (u, w) = R(-phi) (p - center): an ellipse with

@@ -26,9 +26,9 @@
 namespace plexus::algorithms {
 
 struct PathFollowingParams {
-  double k1 = 1.0;  ///< > 0 (paper 003, section 5: 1)
-  double k2 = 2.0;  ///< > 0 (paper 003, section 5: 2)
-  double min_abs_g = 1e-3;  ///< > 0, floor on |g| (units of h per m times m/s)
+  double k1 = 1.0;                                                 ///< > 0 (paper 003, section 5: 1)
+  double k2 = 2.0;                                                 ///< > 0 (paper 003, section 5: 2)
+  double min_abs_g = 1e-3;                                         ///< > 0, floor on |g| (units of h per m times m/s)
   double max_turn_rate = std::numeric_limits<double>::infinity();  ///< rad/s, > 0, |u2| clamp
 };
 
@@ -52,8 +52,7 @@ class PathFollowingController {
 
   /// State feedback, paper 003 eq. (5): true pose and speed u1.
   PathFollowingOutput state_feedback(const GeometricPath& path, const UnicycleState& state, double u1) const {
-    return compute(path.evaluate({state.x, state.y}),
-                   {u1 * std::cos(state.theta), u1 * std::sin(state.theta)});
+    return compute(path.evaluate({state.x, state.y}), {u1 * std::cos(state.theta), u1 * std::sin(state.theta)});
   }
 
   /// Observer-based, paper 003 eqs. (15)-(16): measured position and the observer's

@@ -29,11 +29,11 @@ enum class PositionSensorKind {
 
 struct PositionSensorParams {
   PositionSensorKind kind = PositionSensorKind::kExact;
-  double sigma = 0.0;             ///< m, Gaussian standard deviation per axis (kGaussian), >= 0
-  double grid_spacing = 0.1;      ///< m, tag spacing (kRfidGrid), > 0; paper 000 section 6.3.2: 0.1 m
+  double sigma = 0.0;         ///< m, Gaussian standard deviation per axis (kGaussian), >= 0
+  double grid_spacing = 0.1;  ///< m, tag spacing (kRfidGrid), > 0; paper 000 section 6.3.2: 0.1 m
   Eigen::Vector2d grid_origin = Eigen::Vector2d::Zero();  ///< m, position of one tag
-  double rate_hz = 100.0;         ///< samples per second, > 0
-  std::uint64_t seed = 0;         ///< seed for make_rng()
+  double rate_hz = 100.0;                                 ///< samples per second, > 0
+  std::uint64_t seed = 0;                                 ///< seed for make_rng()
 };
 
 class PositionSensor {
@@ -46,11 +46,9 @@ class PositionSensor {
   /// (std::round), so a robot exactly between two tags reads the outer one.
   Eigen::Vector2d measure(const Eigen::Vector2d& true_position, Rng& rng) const {
     switch (params_.kind) {
-      case PositionSensorKind::kExact:
-        return true_position;
+      case PositionSensorKind::kExact: return true_position;
       case PositionSensorKind::kGaussian:
-        return {true_position.x() + params_.sigma * rng.normal(),
-                true_position.y() + params_.sigma * rng.normal()};
+        return {true_position.x() + params_.sigma * rng.normal(), true_position.y() + params_.sigma * rng.normal()};
       case PositionSensorKind::kRfidGrid:
         return {round_to_grid(true_position.x(), params_.grid_origin.x()),
                 round_to_grid(true_position.y(), params_.grid_origin.y())};

@@ -57,12 +57,12 @@ struct TrackingControllerParams {
 
 /// The command and the intermediate quantities of one evaluation, for logging and tests.
 struct TrackingOutput {
-  UnicycleInput input;                          ///< (v, omega) command
+  UnicycleInput input;                              ///< (v, omega) command
   Eigen::Vector2d error = Eigen::Vector2d::Zero();  ///< (zeta1, zeta2) = position - reference, m
-  double theta_star = 0.0;                      ///< desired heading theta*, rad
-  double zeta3 = 0.0;                           ///< wrap(theta - theta*) (or theta_hat - theta*), rad
-  double theta_star_dot = 0.0;                  ///< feedforward theta*', rad/s (after the v floor)
-  bool speed_floored = false;                   ///< v < min_speed_for_turn: theta*' used the floor
+  double theta_star = 0.0;                          ///< desired heading theta*, rad
+  double zeta3 = 0.0;                               ///< wrap(theta - theta*) (or theta_hat - theta*), rad
+  double theta_star_dot = 0.0;                      ///< feedforward theta*', rad/s (after the v floor)
+  bool speed_floored = false;                       ///< v < min_speed_for_turn: theta*' used the floor
 };
 
 class TrajectoryTrackingController {
