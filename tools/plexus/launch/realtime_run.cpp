@@ -52,8 +52,7 @@ class RealtimeMonitor {
 
   scenario::Scenario& sc_;
   const std::vector<Process>& procs_;
-  BudgetCheck* budget_;                  // the loops' timing budgets (null: not checked)
-  std::vector<int64_t> publish_offset_;  // by signal: the clock offset of its producer's host
+  BudgetCheck* budget_;  // the loops' timing budgets (null: not checked)
   FaultClock& fault_;
   StatusConsole& console_;
   scenario::StepExecutor wiring_;
@@ -116,16 +115,17 @@ RealtimeMonitor::RealtimeMonitor(scenario::Scenario& sc, rt::Participant& partic
       for (std::size_t s = 0; s < signals_.size(); ++s)
         if (signals_[s].name == in->signal()) origin_offset_[s] = off->second, corrected_[s] = true;
   }
-  // A sample's publish time is its producer's clock (timing budgets).
-  publish_offset_.assign(signals_.size(), 0);
-  for (std::size_t s = 0; s < signals_.size(); ++s)
-    for (const auto& c : sc.components)
-      if (c.component->name() == signals_[s].producer)
-        if (const auto off = host_clock_offset_ns.find(c.host); off != host_clock_offset_ns.end())
-          publish_offset_[s] = off->second;
-  if (budget_) budget_->bind(signals_);
   rt::QosProfile any = profiles.get("sensor");  // best effort, volatile: matches every producer
   any.depth = 256;
+  if (budget_) {  // a sample's publish time is its producer's clock
+    std::map<std::string, int64_t> publish_offset;
+    for (const auto& spec : signals_)
+      for (const auto& c : sc.components)
+        if (c.component->name() == spec.producer)
+          if (const auto off = host_clock_offset_ns.find(c.host); off != host_clock_offset_ns.end())
+            publish_offset[spec.name] = off->second;
+    budget_->bind(participant, signals_, distributed::step_ns(sc), any, publish_offset);
+  }
   for (const auto& spec : signals_)
     subs_.push_back(std::make_unique<distributed::WireSubscriber>(participant, spec, distributed::step_ns(sc), any));
   for (const auto& p : procs)
@@ -194,6 +194,7 @@ int64_t RealtimeMonitor::start() {
   for (auto& s : subs_) s->wire().set_epoch(start.sim_time_ns());  // data times: wall clock on the run's grid
   go_->publish(start);
   t0_ = monotonic_ns() + kStartLeadNs;
+  if (budget_) budget_->start(t0_);
   fault_.run_start_ns = t0_;
   status_at_ = t0_;
   return t0_;
@@ -203,7 +204,7 @@ void RealtimeMonitor::record(const std::atomic<bool>& stop) {
   const int64_t end = t0_ + static_cast<int64_t>((sc_.duration + 2.0) * 1e9);
   while (monotonic_ns() < end && !stop) {
     if (monotonic_ns() - status_at_ >= 1'000'000'000) show_status(monotonic_ns());
-    if (budget_) budget_->conclude(monotonic_ns() - t0_);  // once, after the first second
+    if (budget_) budget_->conclude(monotonic_ns());  // once, after the first second
     const bool any_data = take_samples();
     drain_beats();
     bool all_done = true;
@@ -227,8 +228,6 @@ bool RealtimeMonitor::take_samples() {
       if (sample_.step < 0 || sample_.step > sc_.steps || (!trace.steps.empty() && sample_.step <= trace.steps.back()))
         continue;
       res_.log.record(s, sample_);
-      if (budget_)
-        budget_->sample(s, now - subs_[s]->header().publish_time_ns() + publish_offset_[s], monotonic_ns() - t0_);
       const int64_t origin = subs_[s]->header().origin_time_ns();
       if (origin > distributed::kNoMeasurementOrigin) latency_[s].push_back(now - origin + origin_offset_[s]);
       note_safe_command(s, sample_);

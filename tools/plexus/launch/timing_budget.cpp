@@ -1,10 +1,14 @@
 #include "timing_budget.hpp"
 
+#include <fmt/format.h>
 #include <spdlog/spdlog.h>
 #include <algorithm>
+#include <atomic>
+#include <thread>
 
-#include <fmt/format.h>
+#include "plexus/base/clock.hpp"
 #include "plexus/distributed/realtime.hpp"
+#include "plexus/distributed/wire.hpp"
 
 namespace plexus::cli {
 
@@ -81,30 +85,69 @@ std::string budget_shortfall(const LoopBudget& loop) {
          ".process, docs/distributed.md)";
 }
 
-BudgetCheck::BudgetCheck(std::vector<LoopBudget> loops, bool strict) : loops_(std::move(loops)), strict_(strict) {
-  for (auto& loop : loops_)
-    for (auto& hop : loop.hops) hop.latency_ns.reserve(4096);
+/// A hop signal's reader and the thread that waits on it.
+struct BudgetCheck::Probe {
+  std::string signal;
+  int64_t offset_ns = 0;  // the producer host's clock offset
+  std::unique_ptr<distributed::WireSubscriber> sub;
+  std::vector<int64_t> latency_ns;  // written by the thread only, read after it joined
+  std::thread thread;
+  std::atomic<bool> stop{false};
+};
+
+BudgetCheck::BudgetCheck(std::vector<LoopBudget> loops, bool strict) : loops_(std::move(loops)), strict_(strict) {}
+
+BudgetCheck::~BudgetCheck() { stop(); }
+
+void BudgetCheck::bind(rt::Participant& participant, const std::vector<scenario::SignalSpec>& signals, int64_t step_ns,
+                       const rt::QosProfile& qos, const std::map<std::string, int64_t>& publish_offset_ns) {
+  for (const auto& loop : loops_)
+    for (const auto& hop : loop.hops) {
+      if (std::any_of(probes_.begin(), probes_.end(), [&](const auto& p) { return p->signal == hop.name; })) continue;
+      const auto spec = std::find_if(signals.begin(), signals.end(), [&](const auto& s) { return s.name == hop.name; });
+      if (spec == signals.end()) continue;
+      auto p = std::make_unique<Probe>();
+      p->signal = hop.name;
+      if (const auto off = publish_offset_ns.find(hop.name); off != publish_offset_ns.end()) p->offset_ns = off->second;
+      p->sub = std::make_unique<distributed::WireSubscriber>(participant, *spec, step_ns, qos);
+      p->latency_ns.reserve(8192);
+      probes_.push_back(std::move(p));
+    }
 }
 
-void BudgetCheck::bind(const std::vector<scenario::SignalSpec>& signals) {
-  by_signal_.assign(signals.size(), {});
-  for (std::size_t s = 0; s < signals.size(); ++s)
-    for (std::size_t l = 0; l < loops_.size(); ++l)
-      for (std::size_t h = 0; h < loops_[l].hops.size(); ++h)
-        if (loops_[l].hops[h].name == signals[s].name) by_signal_[s].emplace_back(l, h);
-}
-
-void BudgetCheck::sample(std::size_t signal, int64_t latency_ns, int64_t since_start_ns) {
-  if (concluded_ || signal >= by_signal_.size() || since_start_ns < kFromNs || since_start_ns > kUntilNs) return;
-  for (const auto& [l, h] : by_signal_[signal]) {
-    auto& v = loops_[l].hops[h].latency_ns;
-    if (v.size() < v.capacity()) v.push_back(latency_ns);
+void BudgetCheck::start(int64_t t0_ns) {
+  t0_ns_ = t0_ns;
+  for (auto& probe : probes_) {
+    Probe* p = probe.get();
+    p->thread = std::thread([p, t0_ns] {
+      while (!p->stop.load()) {
+        if (!p->sub->wait(5'000'000)) continue;
+        const int64_t arrived = wall_time_ns(), since = monotonic_ns() - t0_ns;
+        while (p->sub->take()) {
+          if (since >= kFromNs && since <= kUntilNs && p->latency_ns.size() < p->latency_ns.capacity())
+            p->latency_ns.push_back(arrived - p->sub->header().publish_time_ns() + p->offset_ns);
+        }
+        if (since > kUntilNs) break;
+      }
+    });
   }
 }
 
-void BudgetCheck::conclude(int64_t since_start_ns) {
-  if (concluded_ || since_start_ns <= kUntilNs) return;
+void BudgetCheck::stop() {
+  for (auto& p : probes_) {
+    p->stop = true;
+    if (p->thread.joinable()) p->thread.join();
+  }
+}
+
+void BudgetCheck::conclude(int64_t now_ns) {
+  if (concluded_ || t0_ns_ == 0 || now_ns - t0_ns_ <= kUntilNs + 10'000'000) return;
   concluded_ = true;
+  stop();
+  for (auto& loop : loops_)
+    for (auto& hop : loop.hops)
+      for (const auto& p : probes_)
+        if (p->signal == hop.name) hop.latency_ns = p->latency_ns;
   std::string first;
   for (const auto& loop : loops_) {
     const std::string why = budget_shortfall(loop);

@@ -9,8 +9,7 @@
 // they share a phase), in base periods. A hop later than its slot is read one step late,
 // as a late input. The loop fits its placement when every hop's measured latency (p99)
 // is within its slot and their sum within the loop's deadline. The latency of a hop is
-// measured at the launcher, from the first second of samples: a sample's arrival there
-// minus its publish time (the producer's clock, corrected by its host's clock offset).
+// measured at the launcher (BudgetCheck), over the run's first second.
 #pragma once
 
 #include <cstddef>
@@ -20,7 +19,12 @@
 #include <string>
 #include <vector>
 
+#include <map>
+#include <memory>
+
 #include "launch_plan.hpp"
+#include "plexus/runtime/participant.hpp"
+#include "plexus/runtime/qos.hpp"
 #include "plexus/scenario/scenario.hpp"
 
 namespace plexus::cli {
@@ -53,18 +57,26 @@ struct BudgetError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// Collects each hop's latencies over the run's first second (after the first 100 ms, whose
-/// samples include the start) and then gives its verdict once: a warning for each loop that
-/// does not fit, or with `strict` a BudgetError.
+/// Measures each hop over the run's first second (from 0.1 s, after the start's own
+/// samples, to 1.1 s) and then gives its verdict once: a warning for each loop that does not
+/// fit, or with `strict` a BudgetError. Each hop's signal has a reader of its own in the
+/// launcher, on a thread that blocks until a sample arrives: a sample's latency is its arrival
+/// there (a subscriber in another process, woken by the data as a service's reader is) minus
+/// its publish time.
 class BudgetCheck {
  public:
   BudgetCheck(std::vector<LoopBudget> loops, bool strict);
-  /// The signals as the caller numbers them (sample()'s `signal`).
-  void bind(const std::vector<scenario::SignalSpec>& signals);
-  /// A sample of signal `signal` arrived `latency_ns` after it was published, at `since_start_ns`.
-  void sample(std::size_t signal, int64_t latency_ns, int64_t since_start_ns);
+  ~BudgetCheck();
+  BudgetCheck(const BudgetCheck&) = delete;
+  BudgetCheck& operator=(const BudgetCheck&) = delete;
+  /// Creates the readers of the hops' signals (before the start, so that they match).
+  /// `publish_offset_ns`: by signal name, the clock offset of its producer's host.
+  void bind(rt::Participant& participant, const std::vector<scenario::SignalSpec>& signals, int64_t step_ns,
+            const rt::QosProfile& qos, const std::map<std::string, int64_t>& publish_offset_ns);
+  /// The run started at monotonic time `t0_ns`: the readers' threads measure its first second.
+  void start(int64_t t0_ns);
   /// Past the measurement window: logs the verdict (once). Throws BudgetError when strict.
-  void conclude(int64_t since_start_ns);
+  void conclude(int64_t now_ns);
   /// For launch.json: loop -> {deadline_us, fits, hops: [{signal, from, to, slot_us, samples,
   /// p50_us, p99_us}]} (fits: null before the verdict).
   nlohmann::ordered_json record() const;
@@ -73,10 +85,13 @@ class BudgetCheck {
   static constexpr int64_t kUntilNs = 1'100'000'000;
 
  private:
+  struct Probe;
+  void stop();
   std::vector<LoopBudget> loops_;
-  std::vector<std::vector<std::pair<std::size_t, std::size_t>>> by_signal_;  // signal -> (loop, hop)
+  std::vector<std::unique_ptr<Probe>> probes_;  // one per hop signal
   bool strict_ = false;
   bool concluded_ = false;
+  int64_t t0_ns_ = 0;
 };
 
 /// The q-quantile of latencies in ns, in us (0 for none).
