@@ -32,6 +32,15 @@ const char* to_string(RobotSource::Type t) {
 }
 namespace {
 
+/// `priority` and `cpu` of a service or a robot (its plant-side process), realtime only.
+void read_scheduling(const YamlMap& section, ScenarioComponent& out) {
+  out.priority = section.optional<int>("priority", 0);
+  if (out.priority < 0 || out.priority > 99)
+    section.fail("priority", "must be in 0..99 (SCHED_FIFO; 0: normal scheduling)");
+  out.cpu = section.optional<int>("cpu", -1);
+  if (out.cpu < -1 || out.cpu > 1023) section.fail("cpu", "must be a CPU number 0..1023 (-1: no affinity)");
+}
+
 bool valid_name(const std::string& s) {
   if (s.empty() || s.size() > 64) return false;
   for (char c : s)
@@ -143,11 +152,7 @@ struct Loader {
       out.restart_delay = section.optional<double>("restart_delay", 0.0);
       if (!(out.restart_delay >= 0.0 && out.restart_delay <= 3600.0))
         section.fail("restart_delay", "must be in [0, 3600] s");
-      out.priority = section.optional<int>("priority", 0);
-      if (out.priority < 0 || out.priority > 99)
-        section.fail("priority", "must be in 0..99 (SCHED_FIFO; 0: normal scheduling)");
-      out.cpu = section.optional<int>("cpu", -1);
-      if (out.cpu < -1 || out.cpu > 1023) section.fail("cpu", "must be a CPU number 0..1023 (-1: no affinity)");
+      read_scheduling(section, out);
     }
     cfg.section = &section;
     out.type = cfg.type;
@@ -376,11 +381,15 @@ struct Loader {
         const std::string robot_host = robot.optional<std::string>("host", "");
         if (robot.has("host") && !hosts.count(robot_host)) robot.fail("host", "no host '" + robot_host + "' in hosts");
         const std::string robot_dds = dds_key(robot);
+        ScenarioComponent scheduling;  // the robot's `priority` and `cpu`, for its plant and sensors
+        read_scheduling(robot, scheduling);
         if (robot.has("source")) load_source(robot, rpath, r);
         const YamlMap plant = robot.map("plant");
         all.push_back(build(plant, rpath + ".plant", "plant", r, sc.resolved["robots"][r]["plant"], false));
         all.back().host = robot_host;
         all.back().dds = robot_dds;
+        all.back().priority = scheduling.priority;
+        all.back().cpu = scheduling.cpu;
         if (robot.has("sensors")) {
           const YamlMap sensors = robot.map("sensors");
           for (const auto& s : sensors.keys()) {
@@ -388,6 +397,8 @@ struct Loader {
             all.push_back(build(sensor, rpath + ".sensors." + s, s, r, sc.resolved["robots"][r]["sensors"][s], false));
             all.back().host = robot_host;  // a robot's sensors run with its plant
             all.back().dds = robot_dds;
+            all.back().priority = scheduling.priority;
+            all.back().cpu = scheduling.cpu;
           }
         }
         robot.reject_unknown();

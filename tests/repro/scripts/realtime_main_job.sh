@@ -38,7 +38,7 @@ fail=0
 min_ticks=$((duration * 90))
 printf '%-52s %8s %8s %8s %8s %8s\n' process ticks overruns '%' late stale
 while IFS=$'\t' read -r name ticks overruns late stale rejected; do
-  pct=$(awk -v o="$overruns" -v t="$ticks" 'BEGIN { printf "%.3f", t > 0 ? 100 * o / t : 100 }')
+  pct=$(awk -v o="$overruns" -v t="$ticks" 'BEGIN { printf "%.3f", (t > 0 ? 100 * o / t : 100) }')
   printf '%-52s %8s %8s %8s %8s %8s\n' "$name" "$ticks" "$overruns" "$pct" "$late" "$stale"
   if awk -v p="$pct" 'BEGIN { exit !(p > 5) }'; then echo "  $name: overruns above 5 % of its ticks"; fail=1; fi
   if [ "${STRICT_TIMING:-0}" = 1 ] && awk -v p="$pct" 'BEGIN { exit !(p > 0.1) }'; then

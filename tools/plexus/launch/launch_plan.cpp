@@ -122,10 +122,10 @@ std::vector<Process> plan(const scenario::Scenario& sc, const std::string& host)
   std::vector<Process> procs;
   const auto plant_program = plant_programs(sc);
   using HostProgram = std::pair<std::string, std::string>;
-  std::map<HostProgram, std::string> robots_by_host;                    // (host, program) -> "r1,r2"
-  std::map<HostProgram, std::vector<std::string>> robot_names_by_host;  // (host, program) -> {r1, r2}
-  std::map<HostProgram, std::string> dds_by_host;                       // (host, program) -> the robots' `dds` key
-  std::vector<Process> sources;                                         // robots fed by a bridge or a replay
+  std::map<HostProgram, std::string> robots_by_host;                      // (host, program) -> "r1,r2"
+  std::map<HostProgram, std::vector<std::string>> robot_names_by_host;    // (host, program) -> {r1, r2}
+  std::map<HostProgram, const scenario::ScenarioComponent*> first_plant;  // (host, program) -> its first robot's plant
+  std::vector<Process> sources;                                           // robots fed by a bridge or a replay
   for (const auto& c : sc.components) {
     if (!here(c.host)) continue;
     const std::size_t index = static_cast<std::size_t>(&c - sc.components.data());
@@ -150,13 +150,17 @@ std::vector<Process> plan(const scenario::Scenario& sc, const std::string& host)
       auto& list = robots_by_host[key];
       list += (list.empty() ? "" : ",") + robot;
       robot_names_by_host[key].push_back(robot);
-      auto [it, first_robot] = dds_by_host.emplace(key, c.dds);
-      if (!first_robot && it->second != c.dds)
-        throw InputError(c.where + ": the robots on one host share one " + key.second +
-                         " process, so their `dds` keys "
-                         "must agree ('" +
-                         c.dds + "' for " + robot + ", '" + it->second + "' for " + list.substr(0, list.rfind(',')) +
-                         ")");
+      auto [it, first_robot] = first_plant.emplace(key, &c);
+      auto agree = [&](const char* what, const std::string& mine, const std::string& theirs) {
+        if (mine != theirs)
+          throw InputError(c.where + ": the robots on one host share one " + key.second + " process, so their `" +
+                           what + "` keys must agree ('" + mine + "' for " + robot + ", '" + theirs + "' for " +
+                           list.substr(0, list.rfind(',')) + ")");
+      };
+      const auto& f = *it->second;
+      agree("dds", c.dds, f.dds);
+      agree("priority", std::to_string(c.priority), std::to_string(f.priority));
+      agree("cpu", std::to_string(c.cpu), std::to_string(f.cpu));
     } else if (c.kind != scenario::ComponentKind::sensor) {
       join_group(procs, c, c.component->name(), {index}, scenario::executable_for(c.type));
     }
@@ -173,7 +177,10 @@ std::vector<Process> plan(const scenario::Scenario& sc, const std::string& host)
     p.program = program;
     p.select = {"--robots", robots};
     p.components = robots_components(sc, robot_names_by_host[key]);
-    p.vendor = dds_by_host[key];
+    const auto& plant = *first_plant.at(key);
+    p.vendor = plant.dds;
+    p.priority = plant.priority;  // realtime: the robots' `priority` and `cpu`
+    p.cpu = plant.cpu;
     sims.push_back(p);
   }
   procs.insert(procs.begin(), sources.begin(), sources.end());
