@@ -57,7 +57,7 @@ foreach(variant "fast;128" "cyclone;129")
   set_tests_properties(fault.partition_${vendor} PROPERTIES LABELS "fault;netns;realtime;slow" TIMEOUT 300 RUN_SERIAL TRUE SKIP_RETURN_CODE 77)
 endforeach()
 
-# Soak (soak.sh): the main job's 13 processes in realtime for 2 minutes, /proc of every child
+# Soak (soak.sh): the main job's 11 processes in realtime for 2 minutes, /proc of every child
 # sampled every 5 s; after a 30 s warm-up no child may open more file descriptors or grow its
 # RSS by more than 1 % or 256 kB. The 30-minute form is run by hand (docs/distributed.md, Faults).
 add_test(NAME fault.soak_fast
