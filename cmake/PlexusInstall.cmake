@@ -73,6 +73,7 @@ set(CPACK_PACKAGE_DESCRIPTION "Services exchange IDL-typed topics over Fast DDS 
  wire-compatible, in QoS-configured real-time loops; with the SDK to build your own services and
  messages (find_package(plexus)), the plexus command-line tool and the reference scenarios.")
 set(CPACK_GENERATOR DEB)
+set(CPACK_STRIP_FILES ON)  # a runtime package: no debug symbols (lintian unstripped-binary-or-object)
 set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 set(CPACK_DEBIAN_PACKAGE_ARCHITECTURE amd64)

@@ -7,11 +7,6 @@
 //   in joint_states {phi1.., dphi1..} (JointState), cmd {u1..} (JointCommand);
 //   out estimate {q1.., dq1.., ddq1.., dddq1.., tau1.., dtau1.., phi1.., dphi1..} (LinkJointState).
 //   At its first step it assumes steady motion: x^ = [C(phi, phi') phi' + G(phi), 0, phi, phi'].
-//   Sample times (realtime; docs/distributed.md, "Late samples"): it updates once per new
-//   encoder sample, over the time since the previous one (its period in `plexus sim` and
-//   lockstep); a step with no new sample (it has not arrived) leaves the estimate as it is,
-//   and the next sample's update spans the gap, instead of applying the old sample again
-//   as a measurement of the later time.
 #include <memory>
 #include <string>
 
@@ -61,8 +56,6 @@ class ArmEkfComponent final : public Component {
         rest_(ekf_params_model(c)),
         n_(ekf_.dof()),
         h_(c.period()),
-        period_steps_(c.period_steps),
-        base_step_(c.base_step),
         u_(Eigen::VectorXd::Zero(n_)),
         y_(Eigen::VectorXd::Zero(2 * n_)),
         x0_(Eigen::VectorXd::Zero(4 * n_)),
@@ -75,9 +68,7 @@ class ArmEkfComponent final : public Component {
   }
 
   void step(int64_t /*k*/, double /*t*/) override {
-    if (!enc_.valid() || enc_.sample().step == last_step_) return;
-    const int64_t gap = enc_.sample().step - last_step_;
-    last_step_ = enc_.sample().step;
+    if (!enc_.valid()) return;
     for (int i = 0; i < 2 * n_; ++i) y_(i) = enc_[static_cast<std::size_t>(i)];
     if (!started_) {
       // Steady motion (at rest when phi' = 0): q ~ phi, q' ~ phi', q'' = 0, so
@@ -89,8 +80,7 @@ class ArmEkfComponent final : public Component {
       started_ = true;
     } else {
       for (int i = 0; i < n_; ++i) u_(i) = cmd_.valid() ? cmd_[static_cast<std::size_t>(i)] : 0.0;
-      // The time since the previous sample: the period, or a gap of whole base steps.
-      ekf_.update(u_, y_, gap == period_steps_ ? h_ : static_cast<double>(gap) * base_step_);
+      ekf_.update(u_, y_, h_);
     }
     const alg::ArmFeedback& fb = ekf_.feedback();
     for (int i = 0; i < n_; ++i) {
@@ -110,9 +100,6 @@ class ArmEkfComponent final : public Component {
   alg::ArmChainDynamics rest_;
   int n_;
   double h_;
-  int64_t period_steps_;
-  double base_step_;
-  int64_t last_step_ = -1;  ///< step of the last encoder sample used
   Eigen::VectorXd u_, y_, x0_, g_;
   bool started_ = false;
   InputPort& enc_;

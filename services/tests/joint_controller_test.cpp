@@ -326,41 +326,6 @@ TEST(ArmEkf, UpdatesMatchTheAlgorithm) {
   EXPECT_NE(s.out("r4/estimate", "dtau1"), 0.0);  // the update moved the torque rate
 }
 
-TEST(ArmEkf, AMissingSampleIsBridgedByOneUpdateOverTheGap) {
-  // Realtime: the encoder sample of step 2 never came. Step 2 leaves the estimate as it is
-  // (no update with the old sample as a measurement of the later time); step 3's update
-  // spans the two periods since the last sample used.
-  ServiceUnderTest s(kEkf);
-  alg::FlexibleJointEkfParams p;
-  p.step = 0.001;
-  alg::FlexibleJointEkf ref(p);
-  alg::ArmRigidBodyDynamics dyn(p.model);
-  for (int64_t k = 0; k < 5; ++k) {
-    if (k == 2) {
-      ASSERT_EQ(s.deliver("r4/cmd", joint_command(s, k, kU)), Rejection::none);
-    } else {
-      feed_ekf(s, k);
-    }
-    s.step(k);
-    Eigen::VectorXd y(4);
-    y << phi_at(k), dphi_at(k);
-    if (k == 0) {
-      Eigen::VectorXd g(2), x0(8);
-      dyn.bias(phi_at(0), dphi_at(0), g);
-      x0 << g, Eigen::VectorXd::Zero(2), y;
-      ref.reset(x0);
-    } else if (k != 2) {
-      ref.update(kU, y, k == 3 ? 0.002 : 0.001);
-    }
-    const auto& fb = ref.feedback();
-    for (int i = 0; i < 2; ++i) {
-      const std::string j = std::to_string(i + 1);
-      EXPECT_NEAR(s.out("r4/estimate", "tau" + j), fb.tau(i), 1e-9 * std::abs(fb.tau(i)) + 1e-12) << k;
-      EXPECT_NEAR(s.out("r4/estimate", "phi" + j), fb.phi(i), 1e-12) << k;
-    }
-  }
-}
-
 TEST(ArmEkf, DefaultIsTheRobustTuning) {
   // Without `tuning`, the observer carries the tip-mass and disturbance states (issue 18).
   ServiceUnderTest s(R"(name: ekf_part

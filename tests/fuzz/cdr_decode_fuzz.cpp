@@ -111,7 +111,7 @@ const plexus::scenario::SignalSpec& signal_of(const dist::WireType& type, int jo
 
 void edge_check(const msg::TypeSupport& ts, const void* sample, uint8_t shape) {
   const dist::WireType* type = dist::find_wire_type(ts.type_name);
-  if (!type) return;  // not a signal type (clock, health, latency probe, link status)
+  if (!type || !type->support->header) return;  // not a signal type (clock, health, latency probe, link status)
   static const int64_t kStepNs[] = {1'000'000, 2'000'000, 10'000'000, 1'000'000'000};
   const int joints = type->count ? 1 + (shape & 15) : 16;
   const int64_t step_ns = kStepNs[(shape >> 5) & 3];

@@ -152,10 +152,23 @@ set_tests_properties(cli.scenario_bad_dds_key PROPERTIES LABELS "cli")
 set(PATH_CIRCLE ${PROJECT_SOURCE_DIR}/deploy/scenarios/path_following_circle.yaml)
 add_test(NAME cli.scenario_bad_process_name COMMAND ${EXPECT} 2 "services.observer.process: letters, digits"
          ${PLEXUS_CLI} sim ${PATH_CIRCLE} "--set" "services.observer.process=my control")
-add_test(NAME cli.launch_process_group_disagrees COMMAND ${EXPECT} 2 "services of process 'control' must agree on `dds`"
+add_test(NAME cli.launch_process_group_disagrees COMMAND ${EXPECT} 2 "members of process 'control' must agree on `dds`"
          ${PLEXUS_CLI} launch ${PATH_CIRCLE} --domain 225 --set services.observer.process=control
          --set services.controller.process=control --set services.controller.dds=cyclone)
 add_test(NAME cli.launch_process_name_taken COMMAND ${EXPECT} 2 "'path' is the name of service"
          ${PLEXUS_CLI} launch ${PATH_CIRCLE} --domain 225 --set services.observer.process=path)
 set_tests_properties(cli.scenario_bad_process_name cli.launch_process_group_disagrees cli.launch_process_name_taken
                      PROPERTIES LABELS "cli")
+# `loops:` (docs/scenarios.md): a loop's members, its process and its deadline are checked.
+add_test(NAME cli.scenario_loop_unknown_member COMMAND ${EXPECT} 2 "loops.l.members: no robot or service 'nobody' in this scenario"
+         ${PLEXUS_CLI} sim ${PATH_CIRCLE} --quiet "--set" "loops.l.members=[r1, nobody]")
+add_test(NAME cli.scenario_loop_one_member COMMAND ${EXPECT} 2 "loops.l.members: a loop has at least two members"
+         ${PLEXUS_CLI} sim ${PATH_CIRCLE} --quiet "--set" "loops.l.members=[r1]")
+add_test(NAME cli.scenario_loop_member_elsewhere
+         COMMAND ${EXPECT} 2 "loops.l.process: 'observer' already runs in process 'b'"
+         ${PLEXUS_CLI} sim ${PATH_CIRCLE} --quiet "--set" "loops.l.members=[r1, observer]" --set loops.l.process=a
+         --set services.observer.process=b)
+add_test(NAME cli.scenario_loop_bad_deadline COMMAND ${EXPECT} 2 "loops.l.deadline: must be in \\(0, 3600\\] s"
+         ${PLEXUS_CLI} sim ${PATH_CIRCLE} --quiet "--set" "loops.l.members=[r1, observer]" --set loops.l.deadline=0)
+set_tests_properties(cli.scenario_loop_unknown_member cli.scenario_loop_one_member cli.scenario_loop_member_elsewhere
+                     cli.scenario_loop_bad_deadline PROPERTIES LABELS "cli")

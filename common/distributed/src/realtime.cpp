@@ -216,19 +216,30 @@ struct RealtimeHost::Impl {
     stride = 0;
     deferred.assign(sc.components.size(), false);
     next_step.assign(sc.components.size(), 0);
+    // A host that also runs a controller (a `process` group of estimator and controller) steps
+    // its estimators in their turn, before the controller of the same tick: a deferred
+    // estimator would leave that controller the previous step's estimate, one period of delay
+    // inside the group's own loop (a 1 kHz arm's EKF and VDC diverged with it).
+    bool hosts_controller = false;
+    for (std::size_t c = 0; c < sc.components.size(); ++c)
+      hosts_controller =
+          hosts_controller || (exec.hosted(c) && sc.components[c].kind == scenario::ComponentKind::controller);
     for (std::size_t c = 0; c < sc.components.size(); ++c) {
       if (!exec.hosted(c)) continue;
       stride = std::gcd(stride, sc.components[c].period_steps);
-      if (sc.components[c].kind != scenario::ComponentKind::estimator) continue;
+      if (hosts_controller || sc.components[c].kind != scenario::ComponentKind::estimator) continue;
       for (std::size_t in : exec.inputs_of(c))
         if (std::find(remote_ins.begin(), remote_ins.end(), in) != remote_ins.end()) deferred[c] = true;
     }
     if (stride < 1) stride = 1;
     for (std::size_t i : exec.remote_inputs()) {
       // The reader keeps the last few samples, not only the newest: a producer that catches up
-      // after an overrun publishes several steps at once, and each is read at its own step.
+      // after an overrun publishes several steps at once, and each is read at its own step. A
+      // plant's command keeps its profile's depth (the bridge contract's newest command,
+      // docs/bridges.md): a plant applies the newest command, never an older one.
       rt::QosProfile qos = input_qos(sc, signals[i], profiles);
-      if (qos.history == rt::QosProfile::History::keep_last) qos.depth = std::max(qos.depth, kReaderDepth);
+      if (qos.history == rt::QosProfile::History::keep_last && !stop_when_stale[i])
+        qos.depth = std::max(qos.depth, kReaderDepth);
       auto r = std::make_unique<RemoteSamples>(signals[i], p, qos, step_ns(sc));
       r->deadline_ns = static_cast<int64_t>(sc.input_deadline_periods * static_cast<double>(signals[i].period_steps) *
                                             sc.step * 1e9);
