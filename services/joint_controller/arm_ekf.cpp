@@ -7,6 +7,12 @@
 //   in joint_states {phi1.., dphi1..} (JointState), cmd {u1..} (JointCommand);
 //   out estimate {q1.., dq1.., ddq1.., dddq1.., tau1.., dtau1.., phi1.., dphi1..} (LinkJointState).
 //   At its first step it assumes steady motion: x^ = [C(phi, phi') phi' + G(phi), 0, phi, phi'].
+//   A tick whose joint_states sample is not new (in realtime, a sample that has not arrived)
+//   predicts over the period with the model alone (FlexibleJointEkf::predict); feeding the
+//   old sample again as a measurement of this period pulled the estimate back by a period of
+//   motion. The estimate stays at the tick's time either way, so the controller beside it
+//   sees one that advances every period.
+#include <cstdint>
 #include <memory>
 #include <string>
 
@@ -60,6 +66,7 @@ class ArmEkfComponent final : public Component {
         y_(Eigen::VectorXd::Zero(2 * n_)),
         x0_(Eigen::VectorXd::Zero(4 * n_)),
         g_(Eigen::VectorXd::Zero(n_)),
+        zero_(Eigen::VectorXd::Zero(n_)),
         enc_(add_input("joint_states", concat({names("phi", n_), names("dphi", n_)}), "JointState")),
         cmd_(add_input("cmd", names("u", n_), "JointCommand")),
         estimate_(add_output("estimate", estimate_fields(n_), "LinkJointState")) {
@@ -69,19 +76,23 @@ class ArmEkfComponent final : public Component {
 
   void step(int64_t /*k*/, double /*t*/) override {
     if (!enc_.valid()) return;
-    for (int i = 0; i < 2 * n_; ++i) y_(i) = enc_[static_cast<std::size_t>(i)];
+    const int64_t sample_step = enc_.sample().step;
+    for (int i = 0; i < n_; ++i) u_(i) = cmd_.valid() ? cmd_[static_cast<std::size_t>(i)] : 0.0;
     if (!started_) {
+      for (int i = 0; i < 2 * n_; ++i) y_(i) = enc_[static_cast<std::size_t>(i)];
       // Steady motion (at rest when phi' = 0): q ~ phi, q' ~ phi', q'' = 0, so
       // tau = C(q, q') q' + G(q) and tau' = 0 (the springs hold the arm).
-      const Eigen::VectorXd zero = Eigen::VectorXd::Zero(n_);
-      rest_.inverse_dynamics(y_.head(n_), y_.tail(n_), zero, g_);  // C q' + G
-      x0_ << g_, zero, y_;
+      rest_.inverse_dynamics(y_.head(n_), y_.tail(n_), zero_, g_);  // C q' + G
+      x0_ << g_, zero_, y_;
       ekf_.reset(x0_);
       started_ = true;
-    } else {
-      for (int i = 0; i < n_; ++i) u_(i) = cmd_.valid() ? cmd_[static_cast<std::size_t>(i)] : 0.0;
+    } else if (sample_step > last_step_) {
+      for (int i = 0; i < 2 * n_; ++i) y_(i) = enc_[static_cast<std::size_t>(i)];
       ekf_.update(u_, y_, h_);
+    } else {
+      ekf_.predict(u_, h_);
     }
+    last_step_ = sample_step;
     const alg::ArmFeedback& fb = ekf_.feedback();
     for (int i = 0; i < n_; ++i) {
       const auto a = static_cast<std::size_t>(i);
@@ -100,7 +111,8 @@ class ArmEkfComponent final : public Component {
   alg::ArmChainDynamics rest_;
   int n_;
   double h_;
-  Eigen::VectorXd u_, y_, x0_, g_;
+  Eigen::VectorXd u_, y_, x0_, g_, zero_;
+  int64_t last_step_ = -1;  // the producer's step of the last sample read
   bool started_ = false;
   InputPort& enc_;
   InputPort& cmd_;

@@ -1,13 +1,14 @@
 #!/usr/bin/env bash
-# The fuzz smoke CI runs beside the test suite (tools/setup/test.sh; docs/testing.md, "Fuzzing"):
+# The fuzz smoke CI runs after the test suite (tools/setup/test.sh; docs/testing.md, "Fuzzing"):
 # the fuzz build in build-fuzz/ (clang, ASan + UBSan: -DPLEXUS_FUZZ=ON, a build of its own so
-# that the canonical build is unchanged), then every target's smoke test (ctest label fuzz):
-# the committed corpus replayed, then 20 s of fuzzing from it.
+# that the canonical build is unchanged; FUZZ_JOBS parallel compiles, default 2), then every
+# target's smoke test (ctest label fuzz): the committed corpus replayed, then 20 s of fuzzing
+# from it.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 start=$(date +%s)
 cmake -S . -B build-fuzz -DPLEXUS_FUZZ=ON
-cmake --build build-fuzz -j1 --target fuzz  # the fuzz targets and what they link, nothing else
+cmake --build build-fuzz -j"${FUZZ_JOBS:-2}" --target fuzz  # the fuzz targets and what they link, nothing else
 echo "fuzz build: $(( $(date +%s) - start )) s"
 start=$(date +%s)
 ctest --test-dir build-fuzz --output-on-failure -j1 -L fuzz

@@ -5,9 +5,11 @@
 
 #include <algorithm>
 #include <cctype>
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <numeric>
+#include <thread>
 
 #include "input_guard.hpp"
 #include "plexus/base/clock.hpp"
@@ -29,6 +31,19 @@ constexpr int64_t kMaxCatchUpTicks = 10;
 /// later than that is read late (the newest older one) and the algorithm's own rule for a
 /// late sample applies (docs/distributed.md, "Late samples").
 constexpr int64_t kEstimatorWaitPeriods = 1;
+
+/// The start of a run (docs/distributed.md, "Start-up"): in its first kStartupSeconds (at least
+/// kStartupMinTicks ticks) a host waits for the samples due at each step before it reads them,
+/// at most kStartupWaitPeriods of its periods each; afterwards it never waits. The first write
+/// of each DDS writer costs 0.3-0.5 ms on both vendors and the first deliveries up to 2 ms
+/// (measured at 1 kHz on loopback; 20-80 us later), so without the wait a 1 kHz loop's first
+/// hops arrive late: its controller's first steps hold and its plant integrates them with no
+/// command, a start `plexus sim` never has. The flexible-joint arm at 1 kHz with its plant in
+/// another process (repro.realtime.arm_vdc_ekf_1khz_*) then tracked 0.6-1.2 mrad RMS after 1 s
+/// in 3 of 6 runs (sim 0.03); with the wait 0.03-0.37 in 12 of 12.
+constexpr double kStartupSeconds = 0.05;
+constexpr int64_t kStartupMinTicks = 3;
+constexpr int64_t kStartupWaitPeriods = 2;
 
 /// History depth of a realtime input's reader (at least): samples received between two reads.
 constexpr int32_t kReaderDepth = 8;
@@ -434,9 +449,18 @@ RealtimeReport RealtimeHost::run(const std::atomic<bool>& stop) {
   // process runs its step once they have arrived (each at the step it belongs to, as in
   // `plexus sim`), at most kEstimatorWaitPeriods of its periods behind the grid; then with
   // what has arrived (late reads, counted). Its output is that step's, published later.
+  const auto arrived = [&m](std::size_t sig, int64_t due) { return m.arrived(sig, due); };
+  const int64_t startup_ticks = std::max<int64_t>(
+      kStartupMinTicks, static_cast<int64_t>(std::ceil(kStartupSeconds / (m.sc.step * static_cast<double>(stride)))));
   const auto run_step = [&](int64_t j) {
+    const bool starting = j < k0 + startup_ticks * stride;
     for (std::size_t c = 0; c < m.sc.components.size(); ++c) {
       if (!m.exec.hosted(c)) continue;
+      if (starting) {  // the run's start: wait for this step's samples, bounded
+        const int64_t until = monotonic_ns() + kStartupWaitPeriods * loop.period_ns();
+        while (!m.exec.remote_inputs_ready(c, j, arrived) && monotonic_ns() < until && !stop.load())
+          std::this_thread::sleep_for(std::chrono::microseconds(20));
+      }
       if (!m.deferred[c]) {
         m.exec.step_component(c, j, read, publish, gate);
         continue;
@@ -447,8 +471,7 @@ RealtimeReport RealtimeHost::run(const std::atomic<bool>& stop) {
       const int64_t oldest = j - kMaxCatchUpTicks * stride - kEstimatorWaitPeriods * period;
       if (next < oldest) next = (oldest + period - 1) / period * period;
       while (next <= j) {
-        const bool ready =
-            m.exec.remote_inputs_ready(c, next, [&m](std::size_t sig, int64_t due) { return m.arrived(sig, due); });
+        const bool ready = m.exec.remote_inputs_ready(c, next, arrived);
         if (!ready && j < ticks - 1 && j - next < kEstimatorWaitPeriods * period) break;  // wait for its samples
         if (next < j) ++m.report.deferred_steps;
         m.exec.step_component(c, next, read, publish, gate);

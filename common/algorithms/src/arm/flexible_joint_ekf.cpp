@@ -170,7 +170,7 @@ namespace {
 /// maps of the same storage, so Eigen unrolls the small products instead of looping over
 /// runtime sizes.
 template <int N, int M>
-void riccati_fixed(const Eigen::MatrixXd& p_in, const Eigen::MatrixXd& f_in, const Eigen::VectorXd& qdiag, double r,
+void riccati_fixed(const Eigen::MatrixXd& p_in, const Eigen::MatrixXd& f_in, const Eigen::VectorXd& qdiag, double gain,
                    Eigen::MatrixXd& tmp_out, Eigen::MatrixXd& dp_out) {
   using Mat = Eigen::Matrix<double, M, M>;
   constexpr int kPhi = M - 2 * N, kPhiRate = M - N;
@@ -186,7 +186,7 @@ void riccati_fixed(const Eigen::MatrixXd& p_in, const Eigen::MatrixXd& f_in, con
     tmp.row(kPhiRate + i) = f(kPhiRate + i, i) * p.row(i) + f(kPhiRate + i, kPhiRate + i) * p.row(kPhiRate + i);
   dp = tmp + tmp.transpose();
   dp.diagonal() += qdiag;
-  dp.noalias() -= (1.0 / r) * p.template rightCols<2 * N>().lazyProduct(p.template bottomRows<2 * N>());
+  dp.noalias() -= gain * p.template rightCols<2 * N>().lazyProduct(p.template bottomRows<2 * N>());
 }
 
 }  // namespace
@@ -198,8 +198,8 @@ void FlexibleJointEkf::riccati(const Matrix& p, Matrix& dp) {
   // the phi' rows have two diagonal blocks. Small products are coefficient-based (Eigen's
   // blocked product costs more than it saves below ~16 x 16). The 2-DoF arm's sizes (the
   // paper's 8 states, the robust tuning's 11) run at compile-time sizes (issue 15 section 6).
-  if (n_ == 2 && m_ == 8) return riccati_fixed<2, 8>(p, fjac_, qdiag_, params_.r, tmp_, dp);
-  if (n_ == 2 && m_ == 11) return riccati_fixed<2, 11>(p, fjac_, qdiag_, params_.r, tmp_, dp);
+  if (n_ == 2 && m_ == 8) return riccati_fixed<2, 8>(p, fjac_, qdiag_, gain_, tmp_, dp);
+  if (n_ == 2 && m_ == 11) return riccati_fixed<2, 11>(p, fjac_, qdiag_, gain_, tmp_, dp);
   const int n = n_, m2 = 2 * n_, ip = iphi_, iv = iphi_ + n_;
   const bool small = m_ <= 24;
   tmp_.setZero();
@@ -216,20 +216,40 @@ void FlexibleJointEkf::riccati(const Matrix& p, Matrix& dp) {
   dp = tmp_ + tmp_.transpose();
   dp.diagonal() += qdiag_;
   if (small) {
-    dp.noalias() -= (1.0 / params_.r) * p.rightCols(m2).lazyProduct(p.bottomRows(m2));
+    dp.noalias() -= gain_ * p.rightCols(m2).lazyProduct(p.bottomRows(m2));
   } else {
-    dp.noalias() -= (1.0 / params_.r) * (p.rightCols(m2) * p.bottomRows(m2));
+    dp.noalias() -= gain_ * (p.rightCols(m2) * p.bottomRows(m2));
   }
 }
 
 void FlexibleJointEkf::update(const Vector& u, const Vector& y, double dt) {
   if (!(dt > 0.0) || u.size() != n_ || y.size() != 2 * n_ || !u.allFinite() || !y.allFinite()) return;
-  const int m = 2 * n_;
-  const double h = dt / params_.substeps;
-  const double gain = 1.0 / params_.r;
   // First-order hold of the measurement between the previous sample and this one (the
   // continuous y(t) of eq. (31)); the first update holds y.
   if (!has_y_prev_) y_prev_ = y;
+  gain_ = 1.0 / params_.r;
+  integrate(u, y, dt);
+  y_prev_ = y;
+  has_y_prev_ = true;
+  finish(u);
+}
+
+void FlexibleJointEkf::predict(const Vector& u, double dt) {
+  if (!(dt > 0.0) || u.size() != n_ || !u.allFinite()) return;
+  // No measurement over dt: L = 0 in eq. (31), P' = F P + P F^T + Q (R^{-1} = 0 in eq. (32)).
+  gain_ = 0.0;
+  integrate(u, y_prev_, dt);
+  // The next update holds y from the prediction's h(x^) (H = [0 I]), not from a sample a
+  // period older than its interval.
+  y_prev_ = x_.tail(2 * n_);
+  has_y_prev_ = true;
+  finish(u);
+}
+
+void FlexibleJointEkf::integrate(const Vector& u, const Vector& y, double dt) {
+  const int m = 2 * n_;
+  const double h = dt / params_.substeps;
+  const double gain = gain_;
   auto observer = [&](const Vector& x, double t, Vector& dx) {
     dynamics(x, u, dx);
     const double a = t / dt;
@@ -258,8 +278,9 @@ void FlexibleJointEkf::update(const Vector& u, const Vector& y, double dt) {
     tmp_ = 0.5 * (p_ + p_.transpose());
     p_ = tmp_;
   }
-  y_prev_ = y;
-  has_y_prev_ = true;
+}
+
+void FlexibleJointEkf::finish(const Vector& u) {
   dynamics(x_, u, k1_);  // also sets q_, qd_ (eq. (17)) and the model's q'' in qdd_
   fb_.q = q_, fb_.qd = qd_;
   const Vector& differentiated = accel_.update(qd_);  // section 4: q'' by a filtered differentiator of q'

@@ -108,6 +108,11 @@ class FlexibleJointEkf {
   /// Integrates the observer over dt with input u (held) and measurement y = [phi, phi'].
   /// Non-finite inputs or dt <= 0 leave the state unchanged. No allocation.
   void update(const Vector& u, const Vector& y, double dt);
+  /// Integrates the observer over dt with input u (held) and no measurement (the model alone,
+  /// L = 0; P grows by F P + P F^T + Q): a period whose sample did not come. The next update
+  /// holds y from this prediction's h(x^). Non-finite u or dt <= 0 leave the state unchanged.
+  /// No allocation.
+  void predict(const Vector& u, double dt);
 
   /// f(x, u) of eq. (35).
   void dynamics(const Vector& x, const Vector& u, Vector& dx);
@@ -128,6 +133,8 @@ class FlexibleJointEkf {
   void model_pass(const Vector& x);  // link_state(x) and the forward dynamics at x into qdd_ (cached)
   void link_jerk(const Vector& x);   // fb_.qddd at x, after dynamics(x, ...)
   void riccati(const Matrix& p, Matrix& dp);
+  void integrate(const Vector& u, const Vector& y, double dt);  // x^ and P over dt, gain_ on the innovation
+  void finish(const Vector& u);                                 // the feedback at the new x^
 
   FlexibleJointEkfParams params_;
   int n_;
@@ -148,6 +155,7 @@ class FlexibleJointEkf {
   bool pass_valid_ = false;
   Vector y_prev_;
   bool has_y_prev_ = false;
+  double gain_ = 0.0;  // R^{-1} while integrating a measurement, 0 while predicting
   ArmFeedback fb_;
   FilteredDifferentiator accel_;
 };
