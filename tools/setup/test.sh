@@ -41,8 +41,7 @@ echo "exclusive tests: $(($(date +%s) - start)) s"
 
 start=$(date +%s)
 mkdir -p build-fuzz
-setsid chrt --idle 0 bash -c 'cmake -S . -B build-fuzz -DPLEXUS_FUZZ=ON && cmake --build build-fuzz -j1 --target fuzz' \
-  > build-fuzz/build_beside.log 2>&1 &
+FUZZ_BUILD_ONLY=1 FUZZ_JOBS=1 setsid chrt --idle 0 tools/setup/fuzz_smoke.sh > build-fuzz/build_beside.log 2>&1 &
 fuzz_build=$!
 ctest --test-dir build --output-on-failure -j2 --timeout 600 -I "0,0,0,$shared" || suite_rc=$?
 echo "shared tests (fuzz build beside): $(($(date +%s) - start)) s"
