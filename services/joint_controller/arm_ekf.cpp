@@ -8,10 +8,10 @@
 //   out estimate {q1.., dq1.., ddq1.., dddq1.., tau1.., dtau1.., phi1.., dphi1..} (LinkJointState).
 //   At its first step it assumes steady motion: x^ = [C(phi, phi') phi' + G(phi), 0, phi, phi'].
 //   A tick whose joint_states sample is not new (in realtime, a sample that has not arrived)
-//   predicts over the period with the model alone (FlexibleJointEkf::predict); feeding the
-//   old sample again as a measurement of this period pulled the estimate back by a period of
-//   motion. The estimate stays at the tick's time either way, so the controller beside it
-//   sees one that advances every period.
+//   predicts over the period with the model alone (FlexibleJointEkf::predict): the last
+//   sample applied again as this period's measurement would pull the estimate back by a
+//   period of motion. The estimate stays at the tick's time, so the controller beside it sees
+//   one that advances every period.
 #include <cstdint>
 #include <memory>
 #include <string>

@@ -59,8 +59,8 @@ endforeach()
 
 # Soak (soak.sh): the main job's 11 processes in realtime for 1 minute, /proc of every child
 # sampled every 5 s; after a 20 s warm-up (8 samples after it) no child may open more file
-# descriptors or grow its RSS by more than 1 % or 256 kB. 1 minute, not 2, for CI's 30 minutes:
-# a leak of one descriptor or allocation per reconnect, chunk or second shows in 40 s as in 90.
+# descriptors or grow its RSS by more than 1 % or 256 kB. One minute fits CI's 30: a leak of
+# one descriptor or allocation per reconnect, chunk or second shows within the 40 s after the warm-up.
 # The 30-minute form is run by hand (docs/distributed.md, Faults).
 add_test(NAME fault.soak_fast
          COMMAND bash ${FAULT_DIR}/soak.sh $<TARGET_FILE:plexus> ${PROJECT_SOURCE_DIR}/deploy/scenarios/four_robots.yaml

@@ -5,8 +5,8 @@
 # in `plexus sim` (docs/distributed.md; measured under load: mean 0.42 mm, max 0.73 mm). The
 # run is shortened from 480 s to 101 s (the bounds' window starts at 100 s). A 100 Hz loop of
 # four light processes, as native_plant_rfid below: it shares the machine with one other test
-# (RUN_SERIAL until 2026-11-27; the bounds are 24-70 times the errors measured under load), never
-# with another realtime RFID loop (RESOURCE_LOCK rfid_realtime).
+# (the bounds are 24-70 times the errors measured under load), never with another realtime RFID
+# loop (RESOURCE_LOCK rfid_realtime).
 add_test(NAME repro.realtime.wmr_output_feedback_rfid
          COMMAND $<TARGET_FILE:plexus> launch ${PROJECT_SOURCE_DIR}/deploy/scenarios/wmr_output_feedback_rfid.yaml
                  --set clock.mode=realtime --set duration=101 --quiet --domain 179
