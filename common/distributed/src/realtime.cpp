@@ -33,8 +33,11 @@ constexpr int64_t kMaxCatchUpTicks = 10;
 constexpr int64_t kEstimatorWaitPeriods = 1;
 
 /// The start of a run (docs/distributed.md, "Start-up"): in its first kStartupSeconds (at least
-/// kStartupMinTicks ticks) a host waits for the samples due at each step before it reads them,
-/// at most kStartupWaitPeriods of its periods each; afterwards it never waits. The first write
+/// kStartupMinTicks ticks) a host that starts with the run waits for the samples due at each
+/// step before it reads them, at most kStartupWaitPeriods of its periods each; afterwards it
+/// never waits. A host that joins a running loop (a restarted service) never waits: the loop's
+/// other members keep their deadlines, and its consumers hold their safe output until it
+/// publishes (a restarted attitude filter that waited let the balancing robot fall). The first write
 /// of each DDS writer costs 0.3-0.5 ms on both vendors and the first deliveries up to 2 ms
 /// (measured at 1 kHz on loopback; 20-80 us later), so without the wait a 1 kHz loop's first
 /// hops arrive late: its controller's first steps hold and its plant integrates them with no
@@ -453,7 +456,7 @@ RealtimeReport RealtimeHost::run(const std::atomic<bool>& stop) {
   const int64_t startup_ticks = std::max<int64_t>(
       kStartupMinTicks, static_cast<int64_t>(std::ceil(kStartupSeconds / (m.sc.step * static_cast<double>(stride)))));
   const auto run_step = [&](int64_t j) {
-    const bool starting = j < k0 + startup_ticks * stride;
+    const bool starting = k0 == 0 && j < startup_ticks * stride;
     for (std::size_t c = 0; c < m.sc.components.size(); ++c) {
       if (!m.exec.hosted(c)) continue;
       if (starting) {  // the run's start: wait for this step's samples, bounded
