@@ -186,7 +186,7 @@ for c in "${all_cases[@]}"; do
     if [ "$err_kind" = bal ]; then
       # The balancing robot must be upright again (a fallen one spins on: no floor in the
       # model). KNOWN FAILURE, reported and enforced only with STRICT_RECOVERY=1: it falls in
-      # about 1 of 4 restarts of its attitude filter (measured 2026-11-27: 2 of 8, and 3 of 3
+      # about 1 of 6 restarts of its attitude filter (measured 2026-11-27: 2 of 13, and 3 of 3
       # with a 0.1 s restart delay): its hold is zero torque, and an inverted pendulum tips
       # past recovery within the 0.4-0.8 s the filter is away (docs/distributed.md, Faults).
       if [ "$ok" != 1 ] || ! awk -v l="$last" 'BEGIN { exit !(l < 10) }'; then
