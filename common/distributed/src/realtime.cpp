@@ -36,9 +36,9 @@ constexpr int64_t kEstimatorWaitPeriods = 1;
 /// kStartupMinTicks ticks) a host that starts with the run waits for the samples due at each
 /// step before it reads them, at most kStartupWaitPeriods of its periods each; afterwards it
 /// never waits. A host that joins a running loop (a restarted service) never waits: the loop's
-/// other members keep their deadlines, and its consumers hold their safe output until it
-/// publishes (a restarted attitude filter that waited let the balancing robot fall). The first write
-/// of each DDS writer costs 0.3-0.5 ms on both vendors and the first deliveries up to 2 ms
+/// other members keep their deadlines and its consumers hold their safe output until it
+/// publishes, so a wait would only lengthen their hold. The first write of each DDS writer
+/// costs 0.3-0.5 ms on both vendors and the first deliveries up to 2 ms
 /// (measured at 1 kHz on loopback; 20-80 us later), so without the wait a 1 kHz loop's first
 /// hops arrive late: its controller's first steps hold and its plant integrates them with no
 /// command, a start `plexus sim` never has. The flexible-joint arm at 1 kHz with its plant in
