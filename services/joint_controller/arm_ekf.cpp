@@ -77,17 +77,18 @@ class ArmEkfComponent final : public Component {
   void step(int64_t /*k*/, double /*t*/) override {
     if (!enc_.valid()) return;
     const int64_t sample_step = enc_.sample().step;
+    const bool new_sample = !started_ || sample_step > last_step_;
     for (int i = 0; i < n_; ++i) u_(i) = cmd_.valid() ? cmd_[static_cast<std::size_t>(i)] : 0.0;
-    if (!started_) {
+    if (new_sample)
       for (int i = 0; i < 2 * n_; ++i) y_(i) = enc_[static_cast<std::size_t>(i)];
+    if (!started_) {
       // Steady motion (at rest when phi' = 0): q ~ phi, q' ~ phi', q'' = 0, so
       // tau = C(q, q') q' + G(q) and tau' = 0 (the springs hold the arm).
       rest_.inverse_dynamics(y_.head(n_), y_.tail(n_), zero_, g_);  // C q' + G
       x0_ << g_, zero_, y_;
       ekf_.reset(x0_);
       started_ = true;
-    } else if (sample_step > last_step_) {
-      for (int i = 0; i < 2 * n_; ++i) y_(i) = enc_[static_cast<std::size_t>(i)];
+    } else if (new_sample) {
       ekf_.update(u_, y_, h_);
     } else {
       ekf_.predict(u_, h_);

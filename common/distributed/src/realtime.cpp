@@ -457,11 +457,11 @@ RealtimeReport RealtimeHost::run(const std::atomic<bool>& stop) {
       kStartupMinTicks, static_cast<int64_t>(std::ceil(kStartupSeconds / (m.sc.step * static_cast<double>(stride)))));
   const auto run_step = [&](int64_t j) {
     const bool starting = k0 == 0 && j < startup_ticks * stride;
+    const int64_t wait_until = starting ? monotonic_ns() + kStartupWaitPeriods * loop.period_ns() : 0;
     for (std::size_t c = 0; c < m.sc.components.size(); ++c) {
       if (!m.exec.hosted(c)) continue;
-      if (starting) {  // the run's start: wait for this step's samples, bounded
-        const int64_t until = monotonic_ns() + kStartupWaitPeriods * loop.period_ns();
-        while (!m.exec.remote_inputs_ready(c, j, arrived) && monotonic_ns() < until && !stop.load())
+      if (starting) {  // the run's start: wait for this step's samples, two periods at most for the step
+        while (!m.exec.remote_inputs_ready(c, j, arrived) && monotonic_ns() < wait_until && !stop.load())
           std::this_thread::sleep_for(std::chrono::microseconds(20));
       }
       if (!m.deferred[c]) {

@@ -191,15 +191,15 @@ void riccati_fixed(const Eigen::MatrixXd& p_in, const Eigen::MatrixXd& f_in, con
 
 }  // namespace
 
-void FlexibleJointEkf::riccati(const Matrix& p, Matrix& dp) {
+void FlexibleJointEkf::riccati(const Matrix& p, double gain, Matrix& dp) {
   // P' = F P + P F^T + Q - P H^T R^{-1} H P   (eq. (32)-(33)), H = [0 I] selects phi, phi'.
   // F P by rows, from the structure of F (jacobian()): the tau and phi rows of F select the
   // tau' and phi' rows of P, the d and m_p rows are zero, only the tau' rows are dense and
   // the phi' rows have two diagonal blocks. Small products are coefficient-based (Eigen's
   // blocked product costs more than it saves below ~16 x 16). The 2-DoF arm's sizes (the
   // paper's 8 states, the robust tuning's 11) run at compile-time sizes (issue 15 section 6).
-  if (n_ == 2 && m_ == 8) return riccati_fixed<2, 8>(p, fjac_, qdiag_, gain_, tmp_, dp);
-  if (n_ == 2 && m_ == 11) return riccati_fixed<2, 11>(p, fjac_, qdiag_, gain_, tmp_, dp);
+  if (n_ == 2 && m_ == 8) return riccati_fixed<2, 8>(p, fjac_, qdiag_, gain, tmp_, dp);
+  if (n_ == 2 && m_ == 11) return riccati_fixed<2, 11>(p, fjac_, qdiag_, gain, tmp_, dp);
   const int n = n_, m2 = 2 * n_, ip = iphi_, iv = iphi_ + n_;
   const bool small = m_ <= 24;
   tmp_.setZero();
@@ -216,9 +216,9 @@ void FlexibleJointEkf::riccati(const Matrix& p, Matrix& dp) {
   dp = tmp_ + tmp_.transpose();
   dp.diagonal() += qdiag_;
   if (small) {
-    dp.noalias() -= gain_ * p.rightCols(m2).lazyProduct(p.bottomRows(m2));
+    dp.noalias() -= gain * p.rightCols(m2).lazyProduct(p.bottomRows(m2));
   } else {
-    dp.noalias() -= gain_ * (p.rightCols(m2) * p.bottomRows(m2));
+    dp.noalias() -= gain * (p.rightCols(m2) * p.bottomRows(m2));
   }
 }
 
@@ -227,8 +227,7 @@ void FlexibleJointEkf::update(const Vector& u, const Vector& y, double dt) {
   // First-order hold of the measurement between the previous sample and this one (the
   // continuous y(t) of eq. (31)); the first update holds y.
   if (!has_y_prev_) y_prev_ = y;
-  gain_ = 1.0 / params_.r;
-  integrate(u, y, dt);
+  integrate(u, y, dt, 1.0 / params_.r);
   y_prev_ = y;
   has_y_prev_ = true;
   finish(u);
@@ -237,8 +236,7 @@ void FlexibleJointEkf::update(const Vector& u, const Vector& y, double dt) {
 void FlexibleJointEkf::predict(const Vector& u, double dt) {
   if (!(dt > 0.0) || u.size() != n_ || !u.allFinite()) return;
   // No measurement over dt: L = 0 in eq. (31), P' = F P + P F^T + Q (R^{-1} = 0 in eq. (32)).
-  gain_ = 0.0;
-  integrate(u, y_prev_, dt);
+  integrate(u, y_prev_, dt, 0.0);
   // The next update holds y from the prediction's h(x^) (H = [0 I]), not from a sample a
   // period older than its interval.
   y_prev_ = x_.tail(2 * n_);
@@ -246,10 +244,9 @@ void FlexibleJointEkf::predict(const Vector& u, double dt) {
   finish(u);
 }
 
-void FlexibleJointEkf::integrate(const Vector& u, const Vector& y, double dt) {
+void FlexibleJointEkf::integrate(const Vector& u, const Vector& y, double dt, double gain) {
   const int m = 2 * n_;
   const double h = dt / params_.substeps;
-  const double gain = gain_;
   auto observer = [&](const Vector& x, double t, Vector& dx) {
     dynamics(x, u, dx);
     const double a = t / dt;
@@ -266,13 +263,13 @@ void FlexibleJointEkf::integrate(const Vector& u, const Vector& y, double dt) {
     observer(xt_, t0 + 0.5 * h, k3_);
     xt_ = x_ + h * k3_;
     observer(xt_, t0 + h, k4_);
-    riccati(p_, p1_);
+    riccati(p_, gain, p1_);
     pt_ = p_ + 0.5 * h * p1_;
-    riccati(pt_, p2_);
+    riccati(pt_, gain, p2_);
     pt_ = p_ + 0.5 * h * p2_;
-    riccati(pt_, p3_);
+    riccati(pt_, gain, p3_);
     pt_ = p_ + h * p3_;
-    riccati(pt_, p4_);
+    riccati(pt_, gain, p4_);
     x_ += (h / 6.0) * (k1_ + 2.0 * k2_ + 2.0 * k3_ + k4_);
     p_ += (h / 6.0) * (p1_ + 2.0 * p2_ + 2.0 * p3_ + p4_);
     tmp_ = 0.5 * (p_ + p_.transpose());

@@ -132,9 +132,9 @@ class FlexibleJointEkf {
   void link_state(const Vector& x);  // fills q_, qd_ from x
   void model_pass(const Vector& x);  // link_state(x) and the forward dynamics at x into qdd_ (cached)
   void link_jerk(const Vector& x);   // fb_.qddd at x, after dynamics(x, ...)
-  void riccati(const Matrix& p, Matrix& dp);
-  void integrate(const Vector& u, const Vector& y, double dt);  // x^ and P over dt, gain_ on the innovation
-  void finish(const Vector& u);                                 // the feedback at the new x^
+  void riccati(const Matrix& p, double gain, Matrix& dp);                    // gain: R^{-1}, 0 without a measurement
+  void integrate(const Vector& u, const Vector& y, double dt, double gain);  // x^ and P over dt, gain on the innovation
+  void finish(const Vector& u);                                              // the feedback at the new x^
 
   FlexibleJointEkfParams params_;
   int n_;
@@ -155,7 +155,6 @@ class FlexibleJointEkf {
   bool pass_valid_ = false;
   Vector y_prev_;
   bool has_y_prev_ = false;
-  double gain_ = 0.0;  // R^{-1} while integrating a measurement, 0 while predicting
   ArmFeedback fb_;
   FilteredDifferentiator accel_;
 };
