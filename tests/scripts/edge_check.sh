@@ -15,13 +15,16 @@ pid=$!
 fail=0
 publish() {  # topic type field value count
   "$bin/bad_sample_publisher" --dds "$pub_vendor" --domain "$domain" --topic "$1" --type "$2" --field "$3" \
-    --value "$4" --count "$5" || fail=1
+    --value "$4" --count "$5" ${6:+--health "$6"} || fail=1
 }
-publish r1/position PositionMeasurement x nan 5
-publish r1/position PositionMeasurement y 2e6 5     # 2000 km: beyond a position's range
-publish r1/cmd UnicycleCommand omega inf 5
+# Each batch is confirmed on the observer's heartbeat, and what a late-discovering volatile
+# reader never received is resent (bad_sample_publisher --health): the count is then exact.
+health=health/localisation_observer_localisation_observer
+publish r1/position PositionMeasurement x nan 5 $health
+publish r1/position PositionMeasurement y 2e6 5 $health     # 2000 km: beyond a position's range
+publish r1/cmd UnicycleCommand omega inf 5 $health
 expected=15
-beat=$("$bin/plexus" topic echo health/localisation_observer_localisation_observer --dds "$vendor" --domain "$domain" \
+beat=$("$bin/plexus" topic echo $health --dds "$vendor" --domain "$domain" \
        --count 1 --wait 5 --duration 10 --json 2>&1)
 echo "heartbeat: $beat"
 echo "$beat" | grep -q "\"rejected_inputs\":$expected[,}]" || { echo "FAIL: expected rejected_inputs $expected"; fail=1; }
