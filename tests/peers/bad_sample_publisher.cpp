@@ -16,8 +16,8 @@
 // comes out short (exit 1).
 #include <CLI/CLI.hpp>
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <optional>
 #include <string>
