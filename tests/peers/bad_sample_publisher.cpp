@@ -89,10 +89,10 @@ int main(int argc, char** argv) {
       for (int i = 0; i < n; ++i) {
         s.step = (wall_time_ns() / 10'000'000);  // data time: now (wall clock, as a realtime producer)
         pub.publish(s, 0);
-        // Each sample acknowledged before the next: a reader that has not yet discovered this
-        // writer (the writer saw it first, under load) still gets every sample, since the one
-        // kept (keep_last 1) is resent until acknowledged; and the 20 ms spacing lets a 100 Hz
-        // reader take each one before the next replaces it.
+        // Each sample acknowledged before the next (keep_last 1 keeps only the newest), and
+        // 20 ms apart so that a 100 Hz reader takes each one before the next arrives. An
+        // acknowledgement is not a delivery: a reader that discovered this writer late
+        // acknowledges and drops (see the top of this file, --health).
         if (!pub.wait_for_acks(5'000'000'000))
           throw std::runtime_error("sample " + std::to_string(i + 1) + " of " + topic + " not acknowledged within 5 s");
         std::this_thread::sleep_for(std::chrono::milliseconds(20));
