@@ -38,10 +38,11 @@ foreach(variant "cyclone;cyclone;208" "fast;fast;209")
                    ${PROJECT_SOURCE_DIR}/deploy/scenarios/wmr_output_feedback_rfid.yaml)
   # A 100 Hz loop of four light processes (under a third of a core), started on its reference
   # (tests/scripts/rfid_on_reference.sh, 45 s): its steady mean is the RFID grid's own 2.1-2.2
-  # mm (`plexus sim`: 2.0 mm), bounded at 10 mm: it shares the machine with one other test,
-  # never with another realtime RFID loop (RESOURCE_LOCK).
+  # mm (`plexus sim`: 2.0 mm), bounded at 10 mm. RUN_SERIAL: beside the heaviest tests it
+  # missed the bound (official CI, 2026-11-27: main_job.four_robots beside it, the
+  # observer's loop at 95 Hz with 23 deadline misses/s at t = 21 s, steady mean 12.2 mm).
   set_tests_properties(repro.realtime.native_plant_rfid_${native} PROPERTIES
-                       LABELS "repro;realtime;multiprocess;slow;interop" TIMEOUT 300 RESOURCE_LOCK rfid_realtime)
+                       LABELS "repro;realtime;multiprocess;slow;interop" TIMEOUT 300 RUN_SERIAL TRUE)
 endforeach()
 
 # Issue 13, swapping the simulator for hardware: the same RFID case with robots.r1.source =
