@@ -133,7 +133,9 @@ TEST(TerrainClassifier, AMissingSampleIsInterpolatedInItsSlot) {
   ServiceUnderTest s(classifier_doc(write_training(dir)));
   std::vector<double> window;
   for (int64_t k = 0; k < 100; ++k) {
-    if (k != 50) ASSERT_EQ(s.deliver("r2/imu", imu(s, k, vibration(20.0, k))), Rejection::none);
+    if (k != 50) {
+      ASSERT_EQ(s.deliver("r2/imu", imu(s, k, vibration(20.0, k))), Rejection::none);
+    }
     s.step(k);
     window.push_back(k == 50 ? vibration(20.0, 49) + (vibration(20.0, 51) - vibration(20.0, 49)) * 0.5
                              : vibration(20.0, k));
@@ -158,9 +160,13 @@ TEST(TerrainClassifier, AGapLongerThanATenthOfAWindowRestartsIt) {
   const TempDir dir;
   ServiceUnderTest s(classifier_doc(write_training(dir)));
   for (int64_t k = 0; k < 170; ++k) {
-    if (k < 50 || k >= 70) ASSERT_EQ(s.deliver("r2/imu", imu(s, k, vibration(20.0, k))), Rejection::none);
+    if (k < 50 || k >= 70) {
+      ASSERT_EQ(s.deliver("r2/imu", imu(s, k, vibration(20.0, k))), Rejection::none);
+    }
     s.step(k);
-    if (k == 168) EXPECT_EQ(s.published<msg::TerrainClass>("r2/terrain").terrain_id(), -1) << "no decision yet";
+    if (k == 168) {
+      EXPECT_EQ(s.published<msg::TerrainClass>("r2/terrain").terrain_id(), -1) << "no decision yet";
+    }
   }
   const auto m = s.published<msg::TerrainClass>("r2/terrain");
   EXPECT_EQ(m.terrain_id(), 1);
