@@ -76,7 +76,7 @@ class IcrLibraryRecorderComponent final : public Component {
   OutputPort& out_;
 };
 
-const ComponentRegistration kRecorder{
+const ComponentRegistration kIcrLibraryRecorder{
     "icr_library_recorder", ComponentKind::estimator,
     "learns each terrain's converged ICRs into a terrain ICR library file",
     [](const ComponentConfig& c) { return std::make_unique<IcrLibraryRecorderComponent>(c); }};

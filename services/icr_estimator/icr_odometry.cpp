@@ -76,7 +76,7 @@ class IcrOdometryComponent final : public Component {
   OutputPort& out_;
 };
 
-const ComponentRegistration kOdometry{
+const ComponentRegistration kIcrOdometry{
     "icr_odometry", ComponentKind::estimator, "dead reckoning with the no-slip, a fixed or the estimated ICR model",
     [](const ComponentConfig& c) { return std::make_unique<IcrOdometryComponent>(c); }};
 

@@ -63,7 +63,7 @@ class PendulumPlantComponent final : public Component {
   OutputPort& out_;
 };
 
-const ComponentRegistration kPlant{
+const ComponentRegistration kBalancingPlant{
     "wheeled_inverted_pendulum", ComponentKind::plant,
     "two-wheeled balancing robot (paper 002 eq. (10)); in cmd {torque}, out truth/state {x, v, theta, theta_dot, "
     "x_ddot, theta_ddot}",

@@ -93,11 +93,11 @@ class WheelOdometryComponent final : public Component {
   OutputPort& out_;
 };
 
-const ComponentRegistration kImu{
+const ComponentRegistration kBalancingImu{
     "balancing_imu", ComponentKind::sensor,
     "gyro with drift and saturation + 2-axis accelerometer tilt (paper 002 section 4.1); out {gyro, acc_x, acc_z}",
     [](const ComponentConfig& c) { return std::make_unique<BalancingImuComponent>(c); }};
-const ComponentRegistration kOdometry{
+const ComponentRegistration kBalancingOdometry{
     "wheel_odometry", ComponentKind::sensor, "wheel encoders: travel and speed {x, v} with optional noise",
     [](const ComponentConfig& c) { return std::make_unique<WheelOdometryComponent>(c); }};
 

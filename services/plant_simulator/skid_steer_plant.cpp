@@ -110,7 +110,7 @@ class SkidSteerPlantComponent final : public Component {
   OutputPort& out_;
 };
 
-const ComponentRegistration kPlant{
+const ComponentRegistration kSkidSteerPlant{
     "skid_steer", ComponentKind::plant,
     "skid-steer ICR kinematics with a terrain schedule and vibration (paper 001); "
     "in cmd {v_l, v_r}, out state {x, y, theta, y_l, y_r, x_G, terrain, a_z, v_l, v_r}",

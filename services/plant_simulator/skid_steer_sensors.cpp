@@ -100,7 +100,7 @@ const ComponentRegistration kPose{"pose_sensor", ComponentKind::sensor,
                                   make<PoseSensorComponent>()};
 const ComponentRegistration kWheels{"track_speed_sensor", ComponentKind::sensor, "track speeds v_l, v_r with noise",
                                     make<TrackSpeedSensorComponent>()};
-const ComponentRegistration kImu{"imu_z_sensor", ComponentKind::sensor, "IMU z-acceleration with noise and bias",
+const ComponentRegistration kImuZSensor{"imu_z_sensor", ComponentKind::sensor, "IMU z-acceleration with noise and bias",
                                  make<ImuZSensorComponent>()};
 
 }  // namespace

@@ -89,7 +89,7 @@ class TerrainRecorderComponent final : public Component {
   OutputPort& out_;
 };
 
-const ComponentRegistration kRecorder{
+const ComponentRegistration kTerrainRecorder{
     "terrain_recorder", ComponentKind::estimator, "records labelled PSD feature windows into a training file",
     [](const ComponentConfig& c) { return std::make_unique<TerrainRecorderComponent>(c); }};
 

@@ -16,12 +16,12 @@ namespace plexus::cli {
 std::atomic<bool> g_stop{false};
 
 namespace {
-void on_signal(int) { g_stop = true; }
+void stop_waiting_on_signal(int) { g_stop = true; }
 }  // namespace
 
 void install_stop_handler() {
-  std::signal(SIGINT, on_signal);
-  std::signal(SIGTERM, on_signal);
+  std::signal(SIGINT, stop_waiting_on_signal);
+  std::signal(SIGTERM, stop_waiting_on_signal);
 }
 
 void add_dds_options(CLI::App* app, DdsOptions& o) {

@@ -18,7 +18,7 @@ constexpr int64_t kStepNs = 10'000'000;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-scenario::SignalSpec spec(std::string name, std::vector<std::string> fields, std::string message) {
+scenario::SignalSpec wire_spec(std::string name, std::vector<std::string> fields, std::string message) {
   scenario::SignalSpec s;
   s.name = std::move(name);
   s.fields = std::move(fields);
@@ -48,7 +48,7 @@ std::string input_error_of(F&& fn) {
 // --- WireSignal::check ----------------------------------------------------------
 
 TEST(WireCheck, AcceptsInRangeValuesAndLeavesBadFieldAlone) {
-  const auto s = spec("r1/gps", {"x", "y", "z", "stddev"}, "PositionMeasurement");
+  const auto s = wire_spec("r1/gps", {"x", "y", "z", "stddev"}, "PositionMeasurement");
   const WireSignal wire(s, kStepNs);
   std::size_t bad = 99;
   EXPECT_EQ(wire.check(sample(0, {1.0, -2.0, 3.0, 0.5}), bad), Rejection::none);
@@ -58,7 +58,7 @@ TEST(WireCheck, AcceptsInRangeValuesAndLeavesBadFieldAlone) {
 }
 
 TEST(WireCheck, RefusesNonFiniteValuesNamingTheField) {
-  const auto s = spec("r1/gps", {"x", "y", "z", "stddev"}, "PositionMeasurement");
+  const auto s = wire_spec("r1/gps", {"x", "y", "z", "stddev"}, "PositionMeasurement");
   const WireSignal wire(s, kStepNs);
   std::size_t bad = 99;
   EXPECT_EQ(wire.check(sample(0, {kNaN, 0, 0, 0}), bad), Rejection::non_finite);
@@ -70,7 +70,7 @@ TEST(WireCheck, RefusesNonFiniteValuesNamingTheField) {
 }
 
 TEST(WireCheck, RefusesOutOfRangeValuesNamingTheField) {
-  const auto s = spec("r1/gps", {"x", "y", "z", "stddev"}, "PositionMeasurement");
+  const auto s = wire_spec("r1/gps", {"x", "y", "z", "stddev"}, "PositionMeasurement");
   const WireSignal wire(s, kStepNs);
   std::size_t bad = 99;
   EXPECT_EQ(wire.check(sample(0, {0, 1e6 * 1.0001, 0, 0}), bad), Rejection::out_of_range);  // beyond 1000 km
@@ -81,7 +81,7 @@ TEST(WireCheck, RefusesOutOfRangeValuesNamingTheField) {
 
 TEST(WireCheck, ReportsTheFirstBadFieldInTheSignalsOrder) {
   // The signal's field order, not the message's: theta is field 0 here.
-  const auto s = spec("r1/pose", {"theta", "y", "x"}, "Pose2D");
+  const auto s = wire_spec("r1/pose", {"theta", "y", "x"}, "Pose2D");
   const WireSignal wire(s, kStepNs);
   std::size_t bad = 99;
   EXPECT_EQ(wire.check(sample(0, {0, 2e6, kNaN}), bad), Rejection::out_of_range);
@@ -92,7 +92,7 @@ TEST(WireCheck, ReportsTheFirstBadFieldInTheSignalsOrder) {
 
 TEST(WireCheck, ChecksOnlyTheSignalsFields) {
   // Values past the signal's fields are not members: whatever they hold, they pass.
-  const auto s = spec("r1/pose", {"x"}, "Pose2D");
+  const auto s = wire_spec("r1/pose", {"x"}, "Pose2D");
   const WireSignal wire(s, kStepNs);
   std::size_t bad = 99;
   EXPECT_EQ(wire.check(sample(0, {1.0, kNaN, 1e300}), bad), Rejection::none);
@@ -101,7 +101,7 @@ TEST(WireCheck, ChecksOnlyTheSignalsFields) {
 // --- decode: time ---------------------------------------------------------------
 
 TEST(WireDecode, NegativeTimeIsRefusedAndLeavesTheSampleAlone) {
-  const auto s = spec("r1/pose", {"x", "y", "theta"}, "Pose2D");
+  const auto s = wire_spec("r1/pose", {"x", "y", "theta"}, "Pose2D");
   const WireSignal wire(s, kStepNs);
   msg::Pose2D m;
   m.x(1.0);
@@ -119,7 +119,7 @@ TEST(WireDecode, NegativeTimeIsRefusedAndLeavesTheSampleAlone) {
 }
 
 TEST(WireDecode, StepIsTheNearestOneToTheDataTime) {
-  const auto s = spec("r1/pose", {"x"}, "Pose2D");
+  const auto s = wire_spec("r1/pose", {"x"}, "Pose2D");
   const WireSignal wire(s, kStepNs);
   msg::Pose2D m;
   scenario::SignalSample out;
@@ -137,7 +137,7 @@ TEST(WireDecode, StepIsTheNearestOneToTheDataTime) {
 // (t + step/2) / step, and a data time near the int64 limit overflowed the sum (undefined
 // behaviour; in practice a huge negative step).
 TEST(WireDecode, LatestDataTimeDoesNotOverflow) {
-  const auto s = spec("r1/pose", {"x"}, "Pose2D");
+  const auto s = wire_spec("r1/pose", {"x"}, "Pose2D");
   const WireSignal wire(s, kStepNs);
   msg::Pose2D m;
   scenario::SignalSample out;
@@ -154,7 +154,7 @@ TEST(WireDecode, LatestDataTimeDoesNotOverflow) {
 TEST(WireDecode, BeforeTheEpochIsANegativeStepNotAnError) {
   // Realtime: data times are wall-clock; a sample from before the run's start decodes to a
   // negative step (not yet valid for any reader), while a negative time is refused.
-  const auto s = spec("r1/pose", {"x"}, "Pose2D");
+  const auto s = wire_spec("r1/pose", {"x"}, "Pose2D");
   WireSignal wire(s, kStepNs);
   const int64_t epoch = 1'700'000'000'000'000'000;
   wire.set_epoch(epoch);
@@ -181,7 +181,7 @@ TEST(WireDecode, BeforeTheEpochIsANegativeStepNotAnError) {
 }
 
 TEST(WireDecode, WrongJointCountLeavesTheSampleAlone) {
-  const auto s = spec("arm/joint_states", {"phi1", "phi2", "dphi1", "dphi2"}, "JointState");
+  const auto s = wire_spec("arm/joint_states", {"phi1", "phi2", "dphi1", "dphi2"}, "JointState");
   const WireSignal wire(s, kStepNs);
   msg::JointState m;
   wire.encode(sample(2, {0.1, 0.2, 0.3, 0.4}), &m);
@@ -224,19 +224,19 @@ TEST(WireTypeNames, EveryRejectionHasItsOwnText) {
 }
 
 TEST(WireBinding, ErrorsNameTheSignalItsProducerAndTheCause) {
-  const auto no_type = spec("r1/x", {"x"}, "");
+  const auto no_type = wire_spec("r1/x", {"x"}, "");
   EXPECT_EQ(input_error_of([&] { const WireSignal w(no_type, kStepNs); }),
             "signal 'r1/x' (produced by 'r1/gps') has no IDL message type, so it cannot travel over DDS; run this "
             "scenario with `plexus sim`");
-  const auto unknown = spec("r1/x", {"x"}, "Pose3D");
+  const auto unknown = wire_spec("r1/x", {"x"}, "Pose3D");
   EXPECT_EQ(input_error_of([&] { const WireSignal w(unknown, kStepNs); }),
             "signal 'r1/x' (produced by 'r1/gps'): 'Pose3D' is not a known message type (idl/plexus/msg, or a package "
             "of a plugin the scenario loads)");
-  const auto bad_field = spec("r1/x", {"x", "w"}, "Pose2D");
+  const auto bad_field = wire_spec("r1/x", {"x", "w"}, "Pose2D");
   EXPECT_EQ(input_error_of([&] { const WireSignal w(bad_field, kStepNs); }),
             "signal 'r1/x' (produced by 'r1/gps'): field 'w' is not a member of Pose2D (its fields: x, y, theta; "
             "docs/topics.md)");
-  const auto twice = spec("r1/x", {"x", "x"}, "Pose2D");
+  const auto twice = wire_spec("r1/x", {"x", "x"}, "Pose2D");
   EXPECT_EQ(
       input_error_of([&] { const WireSignal w(twice, kStepNs); }),
       "signal 'r1/x' (produced by 'r1/gps'): field 'x' fills a member of Pose2D that another of its fields fills");

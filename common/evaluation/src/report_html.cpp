@@ -6,6 +6,8 @@
 #include <cstdlib>
 #include <sstream>
 
+#include "plexus/base/yaml_reader.hpp"
+
 namespace plexus::scenario {
 namespace {
 
@@ -38,8 +40,6 @@ std::string value_cell(const std::string& value) {
   std::snprintf(buf, sizeof buf, "%.4g", v);
   return "<span title=\"" + esc(value) + "\">" + buf + "</span>";
 }
-
-std::string scalar(const YAML::Node& n, const char* key) { return n[key] && n[key].IsScalar() ? n[key].Scalar() : ""; }
 
 constexpr const char* kStyle = R"(
 body { font-family: sans-serif; margin: 0 auto; max-width: 1280px; padding: 0 1.5em 3em; color: #1a1a1a; }
@@ -78,15 +78,15 @@ void write_figures(std::ostream& html, const std::vector<Figure>& figures, const
 
 std::string report_html(const ReportInputs& in, const Comparison& comparison, const std::vector<Figure>& figures) {
   const std::string name =
-      scalar(in.scenario, "name").empty() ? in.dir.filename().string() : scalar(in.scenario, "name");
+      scalar_or_empty(in.scenario, "name").empty() ? in.dir.filename().string() : scalar_or_empty(in.scenario, "name");
   std::ostringstream html;
   html << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
        << "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
        << "<title>plexus report: " << esc(name) << "</title>\n<style>" << kStyle << "</style>\n</head>\n<body>\n";
   html << "<h1>Report: " << esc(name) << "</h1>\n";
-  if (const std::string d = scalar(in.scenario, "description"); !d.empty()) html << "<p>" << esc(d) << "</p>\n";
-  html << "<p class=\"facts\"><span>duration " << esc(scalar(in.scenario, "duration")) << " s</span><span>base step "
-       << esc(scalar(in.scenario, "step")) << " s</span><span>seed " << esc(scalar(in.scenario, "seed"))
+  if (const std::string d = scalar_or_empty(in.scenario, "description"); !d.empty()) html << "<p>" << esc(d) << "</p>\n";
+  html << "<p class=\"facts\"><span>duration " << esc(scalar_or_empty(in.scenario, "duration")) << " s</span><span>base step "
+       << esc(scalar_or_empty(in.scenario, "step")) << " s</span><span>seed " << esc(scalar_or_empty(in.scenario, "seed"))
        << "</span><span>digest <code>"
        << esc(in.metrics.contains("digest") && in.metrics["digest"].is_string()
                   ? in.metrics["digest"].get<std::string>()

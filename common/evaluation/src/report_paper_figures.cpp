@@ -18,6 +18,7 @@
 #include <set>
 #include <string>
 
+#include "plexus/base/yaml_reader.hpp"
 #include "plexus/base/input_error.hpp"
 #include "plexus/evaluation/evaluation.hpp"
 #include "plexus/evaluation/report_figures.hpp"
@@ -94,14 +95,10 @@ std::vector<YAML::Node> metric_entries(const ReportInputs& in) {
   return out;
 }
 
-std::string scalar(const YAML::Node& entry, const char* key) {
-  return entry[key] && entry[key].IsScalar() ? entry[key].Scalar() : std::string();
-}
-
 /// A metric entry's name (its type when unnamed).
 std::string metric_name(const YAML::Node& entry) {
-  const std::string n = scalar(entry, "name");
-  return n.empty() ? scalar(entry, "type") : n;
+  const std::string n = scalar_or_empty(entry, "name");
+  return n.empty() ? scalar_or_empty(entry, "type") : n;
 }
 
 /// The window [from, to] of the metrics that read any of `signals` and give one.
@@ -110,7 +107,7 @@ std::optional<std::pair<double, double>> metric_window(const ReportInputs& in, c
   for (const auto& m : metric_entries(in)) {
     bool reads = false;
     for (const char* key : {"signal", "reference", "estimate", "truth", "state"})
-      reads = reads || signals.count(scalar(m, key)) > 0;
+      reads = reads || signals.count(scalar_or_empty(m, key)) > 0;
     if (!reads || (!m["from"] && !m["to"])) continue;
     const double from = m["from"] ? m["from"].as<double>() : 0.0;
     const double to = m["to"] ? m["to"].as<double>() : in.duration();
@@ -147,10 +144,10 @@ std::optional<Figure> paper000(const ReportInputs& in, const std::string& robot)
   // positions (Figs. 4-5) or on the RFID grid (Figs. 6-7).
   std::string figs = "Figs. 4-5";
   for (const auto& [name, node] : services_of(in, robot))
-    if (scalar(node, "type") == "trajectory_tracking" && scalar(node, "feedback") == "state") figs = "Figs. 2-3";
+    if (scalar_or_empty(node, "type") == "trajectory_tracking" && scalar_or_empty(node, "feedback") == "state") figs = "Figs. 2-3";
   if (figs != "Figs. 2-3" && in.scenario["robots"][robot]["sensors"])
     for (const auto& s : in.scenario["robots"][robot]["sensors"])
-      if (scalar(s.second, "kind") == "rfid_grid") figs = "Figs. 6-7";
+      if (scalar_or_empty(s.second, "kind") == "rfid_grid") figs = "Figs. 6-7";
 
   // V_t (eq. (53)) at each sample of the true state, the reference held.
   const auto tr = read_columns(in, *truth, columns_of(*truth, {"t", "x", "y"}));
@@ -194,9 +191,9 @@ std::optional<Figure> paper000(const ReportInputs& in, const std::string& robot)
   err.log_y = true;
   err.curves.push_back({data, "1", "2", "V_t", Curve::Style::line, 1});
   for (const auto& m : metric_entries(in)) {
-    const std::string type = scalar(m, "type");
-    if ((type != "error_max" && type != "error_mean") || scalar(m, "signal") != truth->name ||
-        scalar(m, "reference") != ref->name)
+    const std::string type = scalar_or_empty(m, "type");
+    if ((type != "error_max" && type != "error_mean") || scalar_or_empty(m, "signal") != truth->name ||
+        scalar_or_empty(m, "reference") != ref->name)
       continue;
     const auto e = expectation_of(in, metric_name(m));
     if (!e) continue;
@@ -221,9 +218,9 @@ std::optional<Figure> paper000(const ReportInputs& in, const std::string& robot)
 /// calls the ICR EKF with the terrain-triggered reset the AKF.
 std::string icr_label(const ReportInputs& in, const ReportTable& e) {
   const YAML::Node s = in.scenario["services"] ? in.scenario["services"][e.producer] : YAML::Node();
-  if (!s || scalar(s, "type") != "icr_ekf") return e.name;
-  const bool adaptive = scalar(s, "adaptive_reset") == "true";
-  const std::string mode = scalar(s, "reset_mode").empty() ? "covariance" : scalar(s, "reset_mode");
+  if (!s || scalar_or_empty(s, "type") != "icr_ekf") return e.name;
+  const bool adaptive = scalar_or_empty(s, "adaptive_reset") == "true";
+  const std::string mode = scalar_or_empty(s, "reset_mode").empty() ? "covariance" : scalar_or_empty(s, "reset_mode");
   return e.name + " (" + e.producer + ": " + (adaptive ? "AKF, " + mode + " reset" : std::string("EKF")) + ")";
 }
 
@@ -392,15 +389,15 @@ std::optional<Figure> paper004(const ReportInputs& in, const std::string& robot)
   // Table 4's settling band, from the scenario's settling_time metrics on this arm.
   std::map<std::string, double> band;  // field -> rad
   for (const auto& m : metric_entries(in))
-    if (scalar(m, "type") == "settling_time" && scalar(m, "signal") == truth->name && m["band"])
-      band[scalar(m, "field")] = m["band"].as<double>();
+    if (scalar_or_empty(m, "type") == "settling_time" && scalar_or_empty(m, "signal") == truth->name && m["band"])
+      band[scalar_or_empty(m, "field")] = m["band"].as<double>();
 
   Figure f;
   f.file = "plots/paper004." + robot + ".png";
   const std::string controller = [&] {
     for (const auto& [name, node] : services_of(in, robot))
-      if (scalar(node, "type") == "arm_vdc" || scalar(node, "type") == "arm_ct_pd")
-        return name + ": " + scalar(node, "type");
+      if (scalar_or_empty(node, "type") == "arm_vdc" || scalar_or_empty(node, "type") == "arm_ct_pd")
+        return name + ": " + scalar_or_empty(node, "type");
     return cmd->producer;
   }();
   f.title = "Paper 004 (Liu et al. 2018), Figs. 3-6: link tracking errors and joint torques of " + robot + " (" +

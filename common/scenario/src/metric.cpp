@@ -6,7 +6,7 @@
 namespace plexus::scenario {
 namespace {
 
-detail::NamedRegistry<MetricType>& types() {
+detail::NamedRegistry<MetricType>& metric_type_registry() {
   static detail::NamedRegistry<MetricType> registry("metric type");  // built on first use
   return registry;
 }
@@ -14,12 +14,12 @@ detail::NamedRegistry<MetricType>& types() {
 }  // namespace
 
 MetricRegistration::MetricRegistration(std::string name, std::string summary, MetricFactory factory) {
-  types().add(MetricType{std::move(name), std::move(summary), std::move(factory)});
+  metric_type_registry().add(MetricType{std::move(name), std::move(summary), std::move(factory)});
 }
 
-const MetricType* find_metric_type(const std::string& name) { return types().find(name); }
+const MetricType* find_metric_type(const std::string& name) { return metric_type_registry().find(name); }
 
-std::vector<const MetricType*> metric_types() { return types().all(); }
+std::vector<const MetricType*> metric_types() { return metric_type_registry().all(); }
 
 const SignalSpec& MetricSetup::signal(const std::string& key) const {
   const auto name = entry_.required<std::string>(key);

@@ -8,7 +8,7 @@
 namespace plexus::scenario {
 namespace {
 
-detail::NamedRegistry<ComponentType>& types() {
+detail::NamedRegistry<ComponentType>& component_type_registry() {
   static detail::NamedRegistry<ComponentType> registry("component type");  // built on first use
   return registry;
 }
@@ -22,12 +22,12 @@ detail::NamedRegistry<ServiceDeclaration>& service_registry() {
 
 ComponentRegistration::ComponentRegistration(std::string name, ComponentKind kind, std::string summary,
                                              ComponentFactory factory) {
-  types().add(ComponentType{std::move(name), kind, std::move(summary), std::move(factory)});
+  component_type_registry().add(ComponentType{std::move(name), kind, std::move(summary), std::move(factory)});
 }
 
-const ComponentType* find_component_type(const std::string& name) { return types().find(name); }
+const ComponentType* find_component_type(const std::string& name) { return component_type_registry().find(name); }
 
-std::vector<const ComponentType*> component_types() { return types().all(); }
+std::vector<const ComponentType*> component_types() { return component_type_registry().all(); }
 
 const char* to_string(ServiceRole role) {
   switch (role) {

@@ -6,7 +6,7 @@
 
 namespace plexus::algorithms {
 namespace {
-constexpr const char* kWhere = "flexible_joint_ekf";
+constexpr const char* kWhereFlexibleJointEkf = "flexible_joint_ekf";
 }
 
 FlexibleJointEkfParams FlexibleJointEkfParams::paper() { return {}; }
@@ -30,17 +30,17 @@ FlexibleJointEkf::FlexibleJointEkf(const FlexibleJointEkfParams& p)
       ipay_((p.disturbance ? 3 : 2) * n_),
       iphi_(m_ - 2 * n_),
       dyn_(p.model) {
-  validation::require_positive(kWhere, "q", p.q);
-  validation::require_positive(kWhere, "r", p.r);
-  validation::require_positive(kWhere, "p0", p.p0);
-  if (p.substeps < 1) validation::fail(kWhere, "substeps", ">= 1", p.substeps);
-  validation::require_positive(kWhere, "step", p.step);
-  validation::require_positive(kWhere, "accel_filter_hz", p.accel_filter_hz);
-  validation::require_positive(kWhere, "fd_step", p.fd_step);
-  if (p.disturbance) validation::require_positive(kWhere, "q_disturbance", p.q_disturbance);
-  if (p.q_tau_rate != 0.0) validation::require_positive(kWhere, "q_tau_rate", p.q_tau_rate);
-  if (p.payload) validation::require_positive(kWhere, "q_payload", p.q_payload);
-  if (p.payload) validation::require_positive(kWhere, "p0_payload", p.p0_payload);
+  validation::require_positive(kWhereFlexibleJointEkf, "q", p.q);
+  validation::require_positive(kWhereFlexibleJointEkf, "r", p.r);
+  validation::require_positive(kWhereFlexibleJointEkf, "p0", p.p0);
+  if (p.substeps < 1) validation::fail(kWhereFlexibleJointEkf, "substeps", ">= 1", p.substeps);
+  validation::require_positive(kWhereFlexibleJointEkf, "step", p.step);
+  validation::require_positive(kWhereFlexibleJointEkf, "accel_filter_hz", p.accel_filter_hz);
+  validation::require_positive(kWhereFlexibleJointEkf, "fd_step", p.fd_step);
+  if (p.disturbance) validation::require_positive(kWhereFlexibleJointEkf, "q_disturbance", p.q_disturbance);
+  if (p.q_tau_rate != 0.0) validation::require_positive(kWhereFlexibleJointEkf, "q_tau_rate", p.q_tau_rate);
+  if (p.payload) validation::require_positive(kWhereFlexibleJointEkf, "q_payload", p.q_payload);
+  if (p.payload) validation::require_positive(kWhereFlexibleJointEkf, "p0_payload", p.p0_payload);
   k_.resize(n_), j_.resize(n_), f_.resize(n_);
   for (int i = 0; i < n_; ++i) {
     const ArmJoint& jt = p.model.joints[static_cast<std::size_t>(i)];
@@ -65,7 +65,7 @@ FlexibleJointEkf::FlexibleJointEkf(const FlexibleJointEkfParams& p)
 
 void FlexibleJointEkf::reset(const Vector& x0) {
   if (x0.size() != 4 * n_ && x0.size() != m_) {
-    validation::fail(kWhere, "x0 size",
+    validation::fail(kWhereFlexibleJointEkf, "x0 size",
                      "4 n = " + std::to_string(4 * n_) + (m_ != 4 * n_ ? " or " + std::to_string(m_) : ""),
                      static_cast<double>(x0.size()));
   }

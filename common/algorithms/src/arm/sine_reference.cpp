@@ -8,7 +8,7 @@
 
 namespace plexus::algorithms {
 namespace {
-constexpr const char* kWhere = "arm_sine_reference";
+constexpr const char* kWhereArmSineReference = "arm_sine_reference";
 }
 
 ArmSineReferenceParams ArmSineReferenceParams::paper(int n) {
@@ -19,20 +19,20 @@ ArmSineReferenceParams ArmSineReferenceParams::paper(int n) {
 
 ArmSineReference::ArmSineReference(const ArmSineReferenceParams& p) : params_(p) {
   const auto n = p.amplitude.size();
-  if (n == 0) validation::fail(kWhere, "amplitude", "a non-empty list", 0.0);
+  if (n == 0) validation::fail(kWhereArmSineReference, "amplitude", "a non-empty list", 0.0);
   const std::pair<const char*, const Eigen::VectorXd*> all[] = {
       {"amplitude", &p.amplitude}, {"frequency_hz", &p.frequency_hz}, {"offset", &p.offset}, {"phase", &p.phase}};
   for (const auto& [name, v] : all) {
     if (v->size() != n) {
-      validation::fail(kWhere, std::string(name) + " size", "the joint count " + std::to_string(n),
+      validation::fail(kWhereArmSineReference, std::string(name) + " size", "the joint count " + std::to_string(n),
                        static_cast<double>(v->size()));
     }
     for (Eigen::Index i = 0; i < n; ++i) {
-      validation::require_finite(kWhere, std::string(name) + "[" + std::to_string(i) + "]", (*v)(i));
+      validation::require_finite(kWhereArmSineReference, std::string(name) + "[" + std::to_string(i) + "]", (*v)(i));
     }
   }
   for (Eigen::Index i = 0; i < n; ++i) {
-    validation::require_non_negative(kWhere, "frequency_hz[" + std::to_string(i) + "]", p.frequency_hz(i));
+    validation::require_non_negative(kWhereArmSineReference, "frequency_hz[" + std::to_string(i) + "]", p.frequency_hz(i));
   }
 }
 

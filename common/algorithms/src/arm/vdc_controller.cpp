@@ -11,21 +11,21 @@
 namespace plexus::algorithms {
 namespace {
 
-constexpr const char* kWhere = "vdc_controller";
+constexpr const char* kWhereVdcController = "vdc_controller";
 
 enum class Sign { positive, non_negative, negative };
 
 void require_vector(const char* name, const Eigen::VectorXd& v, int n, Sign sign) {
   if (v.size() != n) {
-    validation::fail(kWhere, std::string(name) + " size", "the joint count " + std::to_string(n),
+    validation::fail(kWhereVdcController, std::string(name) + " size", "the joint count " + std::to_string(n),
                      static_cast<double>(v.size()));
   }
   for (int i = 0; i < n; ++i) {
     const std::string key = std::string(name) + "[" + std::to_string(i) + "]";
-    if (sign == Sign::positive) validation::require_positive(kWhere, key, v(i));
-    if (sign == Sign::non_negative) validation::require_non_negative(kWhere, key, v(i));
+    if (sign == Sign::positive) validation::require_positive(kWhereVdcController, key, v(i));
+    if (sign == Sign::non_negative) validation::require_non_negative(kWhereVdcController, key, v(i));
     if (sign == Sign::negative && !(std::isfinite(v(i)) && v(i) < 0.0))
-      validation::fail(kWhere, key, "finite and < 0", v(i));
+      validation::fail(kWhereVdcController, key, "finite and < 0", v(i));
   }
 }
 
@@ -79,20 +79,20 @@ VdcController::VdcController(const VdcParams& p) : params_(p), n_(p.model.dof())
   require_vector("lambda_tau", p.lambda_tau, n_, Sign::positive);
   require_vector("k_phi", p.k_phi, n_, Sign::positive);
   require_vector("k_tau", p.k_tau, n_, Sign::positive);
-  validation::require_open_interval(kWhere, "theta_lower", p.theta_lower, 0.0, 1.0 + 1e-12);
+  validation::require_open_interval(kWhereVdcController, "theta_lower", p.theta_lower, 0.0, 1.0 + 1e-12);
   if (!(std::isfinite(p.theta_upper) && p.theta_upper >= 1.0))
-    validation::fail(kWhere, "theta_upper", "finite and >= 1", p.theta_upper);
+    validation::fail(kWhereVdcController, "theta_upper", "finite and >= 1", p.theta_upper);
   if (!(p.theta_initial >= p.theta_lower && p.theta_initial <= p.theta_upper)) {
-    validation::fail(kWhere, "theta_initial",
+    validation::fail(kWhereVdcController, "theta_initial",
                      "in [theta_lower, theta_upper] = [" + validation::format_value(p.theta_lower) + ", " +
                          validation::format_value(p.theta_upper) + "]",
                      p.theta_initial);
   }
-  validation::require_positive(kWhere, "derivative_step", p.derivative_step);
-  validation::require_positive(kWhere, "step", p.step);
+  validation::require_positive(kWhereVdcController, "derivative_step", p.derivative_step);
+  validation::require_positive(kWhereVdcController, "step", p.step);
   if (p.torque_limit.size() != 0) require_vector("torque_limit", p.torque_limit, n_, Sign::positive);
   if (!(p.disturbance_compensation >= 0.0 && p.disturbance_compensation <= 1.0)) {
-    validation::fail(kWhere, "disturbance_compensation", "in [0, 1]", p.disturbance_compensation);
+    validation::fail(kWhereVdcController, "disturbance_compensation", "in [0, 1]", p.disturbance_compensation);
   }
 
   links_.resize(static_cast<std::size_t>(n_));

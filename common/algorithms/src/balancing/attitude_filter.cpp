@@ -5,7 +5,7 @@
 namespace plexus::algorithms {
 namespace {
 
-constexpr const char* kWhere = "attitude_filter";
+constexpr const char* kWhereAttitudeFilter = "attitude_filter";
 
 UkfOptions ukf_options(const AttitudeFilterParams& p) {
   UkfOptions o;
@@ -14,14 +14,14 @@ UkfOptions ukf_options(const AttitudeFilterParams& p) {
 }
 
 const AttitudeFilterParams& validated(const AttitudeFilterParams& p) {
-  validation::require_non_negative(kWhere, "q_theta", p.q_theta);
-  validation::require_non_negative(kWhere, "q_rate", p.q_rate);
-  validation::require_non_negative(kWhere, "q_drift", p.q_drift);
-  validation::require_positive(kWhere, "r_tilt", p.r_tilt);
-  validation::require_positive(kWhere, "r_gyro", p.r_gyro);
-  validation::require_positive(kWhere, "initial_theta_std", p.initial_theta_std);
-  validation::require_positive(kWhere, "initial_rate_std", p.initial_rate_std);
-  validation::require_positive(kWhere, "initial_drift_std", p.initial_drift_std);
+  validation::require_non_negative(kWhereAttitudeFilter, "q_theta", p.q_theta);
+  validation::require_non_negative(kWhereAttitudeFilter, "q_rate", p.q_rate);
+  validation::require_non_negative(kWhereAttitudeFilter, "q_drift", p.q_drift);
+  validation::require_positive(kWhereAttitudeFilter, "r_tilt", p.r_tilt);
+  validation::require_positive(kWhereAttitudeFilter, "r_gyro", p.r_gyro);
+  validation::require_positive(kWhereAttitudeFilter, "initial_theta_std", p.initial_theta_std);
+  validation::require_positive(kWhereAttitudeFilter, "initial_rate_std", p.initial_rate_std);
+  validation::require_positive(kWhereAttitudeFilter, "initial_drift_std", p.initial_drift_std);
   // The UKF weights are validated (for their own L) by the filter constructors.
   return p;
 }

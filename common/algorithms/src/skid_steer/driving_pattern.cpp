@@ -11,7 +11,7 @@
 namespace plexus::algorithms {
 
 namespace {
-constexpr const char* kWhere = "driving_pattern";
+constexpr const char* kWhereDrivingPattern = "driving_pattern";
 }  // namespace
 
 DrivingPatternKind driving_pattern_kind_from_string(const std::string& name) {
@@ -27,21 +27,21 @@ DrivingPatternKind driving_pattern_kind_from_string(const std::string& name) {
 
 DrivingPattern::DrivingPattern(const DrivingPatternParams& params) : params_(params) {
   using namespace validation;
-  require_positive(kWhere, "track_width", params.track_width);
+  require_positive(kWhereDrivingPattern, "track_width", params.track_width);
   switch (params.kind) {
     case DrivingPatternKind::kFigureEight:
-      require_positive(kWhere, "period", params.period);
-      require_finite(kWhere, "phase", params.phase);
+      require_positive(kWhereDrivingPattern, "period", params.period);
+      require_finite(kWhereDrivingPattern, "phase", params.phase);
       [[fallthrough]];
-    case DrivingPatternKind::kCircle: require_finite(kWhere, "turn_rate", params.turn_rate); [[fallthrough]];
-    case DrivingPatternKind::kStraight: require_finite(kWhere, "speed", params.speed); break;
+    case DrivingPatternKind::kCircle: require_finite(kWhereDrivingPattern, "turn_rate", params.turn_rate); [[fallthrough]];
+    case DrivingPatternKind::kStraight: require_finite(kWhereDrivingPattern, "speed", params.speed); break;
     case DrivingPatternKind::kSegments:
       if (params.segments.empty()) throw std::invalid_argument("driving_pattern: segments must not be empty");
       for (std::size_t i = 0; i < params.segments.size(); ++i) {
         const std::string s = "segments[" + std::to_string(i) + "]";
-        require_positive(kWhere, s + ".duration_s", params.segments[i].duration_s);
-        require_finite(kWhere, s + ".v_l", params.segments[i].v_l);
-        require_finite(kWhere, s + ".v_r", params.segments[i].v_r);
+        require_positive(kWhereDrivingPattern, s + ".duration_s", params.segments[i].duration_s);
+        require_finite(kWhereDrivingPattern, s + ".v_l", params.segments[i].v_l);
+        require_finite(kWhereDrivingPattern, s + ".v_r", params.segments[i].v_r);
         total_ += params.segments[i].duration_s;
       }
       break;

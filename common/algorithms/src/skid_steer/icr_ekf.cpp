@@ -12,7 +12,7 @@
 namespace plexus::algorithms {
 
 namespace {
-constexpr const char* kWhere = "icr_ekf";
+constexpr const char* kWhereIcrEkf = "icr_ekf";
 constexpr double kDeg3 = 3.0 * std::numbers::pi / 180.0;
 
 template <int N>
@@ -20,9 +20,9 @@ void require_diag(const char* name, const Eigen::Matrix<double, N, 1>& d, bool a
   for (int i = 0; i < N; ++i) {
     const std::string n = std::string(name) + "[" + std::to_string(i) + "]";
     if (allow_zero) {
-      validation::require_non_negative(kWhere, n, d(i));
+      validation::require_non_negative(kWhereIcrEkf, n, d(i));
     } else {
-      validation::require_positive(kWhere, n, d(i));
+      validation::require_positive(kWhereIcrEkf, n, d(i));
     }
   }
 }
@@ -55,8 +55,8 @@ IcrEkf::IcrEkf(const IcrEkfParams& params) : params_(params) {
   require_diag("p0_diag", params.p0_diag, false);
   require_diag("p_b_diag", params.p_b_diag, false);
   validate_icr("icr_ekf: initial_icr", params.initial_icr);
-  validation::require_positive(kWhere, "min_track_separation", params.min_track_separation);
-  validation::require_non_negative(kWhere, "track_side_margin", params.track_side_margin);
+  validation::require_positive(kWhereIcrEkf, "min_track_separation", params.min_track_separation);
+  validation::require_non_negative(kWhereIcrEkf, "track_side_margin", params.track_side_margin);
   if (params.enforce_track_sides &&
       !(params.initial_icr.y_l >= params.track_side_margin && params.initial_icr.y_r <= -params.track_side_margin)) {
     throw std::invalid_argument(

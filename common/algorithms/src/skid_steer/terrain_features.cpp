@@ -13,7 +13,7 @@
 namespace plexus::algorithms {
 
 namespace {
-constexpr const char* kWhere = "psd_features";
+constexpr const char* kWherePsdFeatures = "psd_features";
 
 /// FFTW's planner is not thread-safe: every plan creation/destruction in this library holds it.
 std::mutex& fftw_planner_mutex() {
@@ -32,14 +32,14 @@ const char* to_string(SpectrumTaper taper) { return taper == SpectrumTaper::kHan
 
 PsdFeatureExtractor::PsdFeatureExtractor(const PsdFeatureParams& params) : params_(params) {
   using namespace validation;
-  require_positive(kWhere, "sample_rate_hz", params.sample_rate_hz);
-  if (params.window_samples < 4) fail(kWhere, "window_samples", ">= 4", params.window_samples);
-  require_non_negative(kWhere, "min_hz", params.min_hz);
+  require_positive(kWherePsdFeatures, "sample_rate_hz", params.sample_rate_hz);
+  if (params.window_samples < 4) fail(kWherePsdFeatures, "window_samples", ">= 4", params.window_samples);
+  require_non_negative(kWherePsdFeatures, "min_hz", params.min_hz);
   const double nyquist = 0.5 * params.sample_rate_hz;
   if (!(params.max_hz > params.min_hz && params.max_hz <= nyquist)) {
-    fail(kWhere, "max_hz", "> min_hz and <= the Nyquist frequency " + format_value(nyquist) + " Hz", params.max_hz);
+    fail(kWherePsdFeatures, "max_hz", "> min_hz and <= the Nyquist frequency " + format_value(nyquist) + " Hz", params.max_hz);
   }
-  require_positive(kWhere, "log_floor", params.log_floor);
+  require_positive(kWherePsdFeatures, "log_floor", params.log_floor);
   const auto n = static_cast<std::size_t>(params.window_samples);
   const double df = params.sample_rate_hz / static_cast<double>(n);
   // Bins with min_hz <= k df <= max_hz (a relative 1e-9 slack absorbs rounding of k df).
@@ -47,7 +47,7 @@ PsdFeatureExtractor::PsdFeatureExtractor(const PsdFeatureParams& params) : param
   last_bin_ = static_cast<std::size_t>(std::floor(params.max_hz / df + 1e-9));
   if (last_bin_ > n / 2) last_bin_ = n / 2;
   if (last_bin_ < first_bin_) {
-    fail(kWhere, "max_hz", "such that [min_hz, max_hz] holds a bin (bins are " + format_value(df) + " Hz apart)",
+    fail(kWherePsdFeatures, "max_hz", "such that [min_hz, max_hz] holds a bin (bins are " + format_value(df) + " Hz apart)",
          params.max_hz);
   }
   taper_.assign(n, 1.0);

@@ -1,5 +1,6 @@
 // Terrain ICR library files and their accumulation (terrain_icr_library.hpp).
 #include "plexus/algorithms/skid_steer/terrain_icr_library.hpp"
+#include "text_tokens.hpp"
 
 #include <charconv>
 #include <cmath>
@@ -12,14 +13,9 @@
 namespace plexus::algorithms {
 namespace {
 
-constexpr const char* kMagic = "plexus-terrain-icr-library";
+constexpr const char* kMagicIcrLibrary = "plexus-terrain-icr-library";
 
-std::vector<std::string> tokens(const std::string& line) {
-  std::istringstream is(line);
-  std::vector<std::string> out;
-  for (std::string t; is >> t;) out.push_back(t);
-  return out;
-}
+using detail::tokens;
 
 }  // namespace
 
@@ -44,7 +40,7 @@ TerrainIcrLibrary load_terrain_icr_library(const std::string& path) {
     const auto t = tokens(line.substr(0, line.find('#')));
     if (t.empty()) continue;
     if (!magic) {
-      if (t.size() != 2 || t[0] != kMagic || t[1] != "1") fail(n, std::string("expected '") + kMagic + " 1'");
+      if (t.size() != 2 || t[0] != kMagicIcrLibrary || t[1] != "1") fail(n, std::string("expected '") + kMagicIcrLibrary + " 1'");
       magic = true;
       continue;
     }
@@ -67,7 +63,7 @@ TerrainIcrLibrary load_terrain_icr_library(const std::string& path) {
     lib.classes[cls] = p;
     lib.names[cls] = t[2];
   }
-  if (!magic) throw TrainingFileError(path + ": empty file (expected '" + std::string(kMagic) + " 1')");
+  if (!magic) throw TrainingFileError(path + ": empty file (expected '" + std::string(kMagicIcrLibrary) + " 1')");
   if (lib.classes.empty()) throw TrainingFileError(path + ": no class records");
   return lib;
 }
@@ -80,7 +76,7 @@ void save_terrain_icr_library(const std::string& path, const TerrainIcrLibrary& 
     out << "# plexus terrain ICR library: per terrain class, the ICRs the ICR EKF converged to\n"
            "# (docs/algorithms/skid_steer.md, \"Prior reset\")\n";
     if (!comment.empty()) out << "# " << comment << "\n";
-    out << kMagic << " 1\n# class id name y_l y_r x_G sd_y_l sd_y_r sd_x_G samples\n";
+    out << kMagicIcrLibrary << " 1\n# class id name y_l y_r x_G sd_y_l sd_y_r sd_x_G samples\n";
     char buf[256];
     for (const auto& [id, p] : library.classes) {
       const auto name = library.names.count(id) ? library.names.at(id) : "class" + std::to_string(id);

@@ -10,29 +10,29 @@
 namespace plexus::algorithms {
 
 namespace {
-constexpr const char* kWhere = "terrain_vibration";
+constexpr const char* kWhereTerrainVibration = "terrain_vibration";
 }  // namespace
 
 TerrainVibration::TerrainVibration(const TerrainVibrationParams& params) : params_(params) {
   using namespace validation;
   if (params.spectra.empty()) throw std::invalid_argument("terrain_vibration: spectra must not be empty");
-  require_positive(kWhere, "sample_period", params.sample_period);
-  require_positive(kWhere, "reference_speed", params.reference_speed);
-  require_non_negative(kWhere, "speed_exponent", params.speed_exponent);
-  require_finite(kWhere, "gravity", params.gravity);
+  require_positive(kWhereTerrainVibration, "sample_period", params.sample_period);
+  require_positive(kWhereTerrainVibration, "reference_speed", params.reference_speed);
+  require_non_negative(kWhereTerrainVibration, "speed_exponent", params.speed_exponent);
+  require_finite(kWhereTerrainVibration, "gravity", params.gravity);
   const double h = params.sample_period;
   const double nyquist = 0.5 / h;
   for (std::size_t t = 0; t < params.spectra.size(); ++t) {
     const VibrationSpectrum& s = params.spectra[t];
     const std::string st = "spectra[" + std::to_string(t) + "]";
-    require_non_negative(kWhere, st + ".floor_rms", s.floor_rms);
+    require_non_negative(kWhereTerrainVibration, st + ".floor_rms", s.floor_rms);
     std::vector<Oscillator> bank;
     for (std::size_t j = 0; j < s.resonances.size(); ++j) {
       const VibrationResonance& r = s.resonances[j];
       const std::string sr = st + ".resonances[" + std::to_string(j) + "]";
-      require_open_interval(kWhere, sr + ".frequency_hz", r.frequency_hz, 0.0, nyquist);
-      require_open_interval(kWhere, sr + ".damping_ratio", r.damping_ratio, 0.0, 1.0);
-      require_non_negative(kWhere, sr + ".rms", r.rms);
+      require_open_interval(kWhereTerrainVibration, sr + ".frequency_hz", r.frequency_hz, 0.0, nyquist);
+      require_open_interval(kWhereTerrainVibration, sr + ".damping_ratio", r.damping_ratio, 0.0, 1.0);
+      require_non_negative(kWhereTerrainVibration, sr + ".rms", r.rms);
       const double w0 = 2.0 * std::numbers::pi * r.frequency_hz;
       const double wd = w0 * std::sqrt(1.0 - r.damping_ratio * r.damping_ratio);
       const double rho = std::exp(-r.damping_ratio * w0 * h);

@@ -1,6 +1,7 @@
 // Terrain training files: format, loading with validation, writing
 // (docs/algorithms/skid_steer.md, "Training data").
 #include "plexus/algorithms/skid_steer/training_set.hpp"
+#include "text_tokens.hpp"
 
 #include <charconv>
 #include <cmath>
@@ -13,15 +14,10 @@ namespace plexus::algorithms {
 
 namespace {
 
-constexpr const char* kMagic = "plexus-terrain-training";
+constexpr const char* kMagicTraining = "plexus-terrain-training";
 constexpr int kVersion = 1;
 
-std::vector<std::string> tokens(const std::string& line) {
-  std::istringstream is(line);
-  std::vector<std::string> out;
-  for (std::string t; is >> t;) out.push_back(t);
-  return out;
-}
+using detail::tokens;
 
 class Parser {
  public:
@@ -98,7 +94,7 @@ TrainingSet load_training_set(const std::string& path) {
     if (tk.empty() || tk[0][0] == '#') continue;
     const std::string& key = tk[0];
     if (!magic) {
-      if (key != kMagic) p.fail(line_no, std::string("expected the header '") + kMagic + " 1', got '" + line + "'");
+      if (key != kMagicTraining) p.fail(line_no, std::string("expected the header '") + kMagicTraining + " 1', got '" + line + "'");
       p.arity(line_no, tk, 1);
       if (p.integer(line_no, tk[1], "version") != kVersion) {
         p.fail(line_no, "unsupported version " + tk[1] + " (this build reads version 1)");
@@ -185,7 +181,7 @@ TrainingSetWriter::TrainingSetWriter(const std::string& path, const FeatureLayou
   if (!out_) throw TrainingFileError(path + ":0: cannot open the training file for writing");
   out_ << "# plexus terrain training set: labelled PSD feature vectors (docs/algorithms/skid_steer.md)\n";
   if (!comment.empty()) out_ << "# " << comment << "\n";
-  out_ << kMagic << ' ' << kVersion << '\n';
+  out_ << kMagicTraining << ' ' << kVersion << '\n';
   out_.precision(17);
   out_ << "sample_rate_hz " << layout.sample_rate_hz << '\n'
        << "window_samples " << layout.window_samples << '\n'

@@ -9,28 +9,28 @@
 namespace plexus::algorithms {
 namespace {
 
-constexpr const char* kWhere = "geometric_path";
+constexpr const char* kWhereGeometricPath = "geometric_path";
 
 void validate(const CirclePath& c) {
-  validation::require_finite(kWhere, "circle.center.x", c.center.x());
-  validation::require_finite(kWhere, "circle.center.y", c.center.y());
-  validation::require_positive(kWhere, "circle.radius", c.radius);
+  validation::require_finite(kWhereGeometricPath, "circle.center.x", c.center.x());
+  validation::require_finite(kWhereGeometricPath, "circle.center.y", c.center.y());
+  validation::require_positive(kWhereGeometricPath, "circle.radius", c.radius);
 }
 
 void validate(const LinePath& l) {
-  validation::require_finite(kWhere, "line.point.x", l.point.x());
-  validation::require_finite(kWhere, "line.point.y", l.point.y());
-  validation::require_finite(kWhere, "line.normal.x", l.normal.x());
-  validation::require_finite(kWhere, "line.normal.y", l.normal.y());
-  validation::require_positive(kWhere, "|line.normal|", l.normal.norm());
+  validation::require_finite(kWhereGeometricPath, "line.point.x", l.point.x());
+  validation::require_finite(kWhereGeometricPath, "line.point.y", l.point.y());
+  validation::require_finite(kWhereGeometricPath, "line.normal.x", l.normal.x());
+  validation::require_finite(kWhereGeometricPath, "line.normal.y", l.normal.y());
+  validation::require_positive(kWhereGeometricPath, "|line.normal|", l.normal.norm());
 }
 
 void validate(const EllipsePath& e) {
-  validation::require_finite(kWhere, "ellipse.center.x", e.center.x());
-  validation::require_finite(kWhere, "ellipse.center.y", e.center.y());
-  validation::require_positive(kWhere, "ellipse.a", e.a);
-  validation::require_positive(kWhere, "ellipse.b", e.b);
-  validation::require_finite(kWhere, "ellipse.phi", e.phi);
+  validation::require_finite(kWhereGeometricPath, "ellipse.center.x", e.center.x());
+  validation::require_finite(kWhereGeometricPath, "ellipse.center.y", e.center.y());
+  validation::require_positive(kWhereGeometricPath, "ellipse.a", e.a);
+  validation::require_positive(kWhereGeometricPath, "ellipse.b", e.b);
+  validation::require_finite(kWhereGeometricPath, "ellipse.phi", e.phi);
 }
 
 void validate(const PolynomialPath& p) {
@@ -39,14 +39,14 @@ void validate(const PolynomialPath& p) {
     for (int j = 0; j <= PolynomialPath::kMaxDegree; ++j) {
       const std::string name = "polynomial.c(" + std::to_string(i) + ", " + std::to_string(j) + ")";
       const double c = p.c(i, j);
-      validation::require_finite(kWhere, name, c);
+      validation::require_finite(kWhereGeometricPath, name, c);
       if (i + j > PolynomialPath::kMaxDegree && c != 0.0) {
-        validation::fail(kWhere, name, "0 (total degree above " + std::to_string(PolynomialPath::kMaxDegree) + ")", c);
+        validation::fail(kWhereGeometricPath, name, "0 (total degree above " + std::to_string(PolynomialPath::kMaxDegree) + ")", c);
       }
       if (i + j > 0 && c != 0.0) non_constant = true;
     }
   }
-  if (!non_constant) validation::fail(kWhere, "polynomial", "non-constant (some c(i, j) != 0 with i + j > 0)", 0.0);
+  if (!non_constant) validation::fail(kWhereGeometricPath, "polynomial", "non-constant (some c(i, j) != 0 with i + j > 0)", 0.0);
 }
 
 PathEvaluation eval(const CirclePath& c, const Eigen::Vector2d& p) {

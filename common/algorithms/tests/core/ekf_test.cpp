@@ -22,7 +22,7 @@ using Vec2 = Eigen::Vector2d;
 using Mat2 = Eigen::Matrix2d;
 using V1 = Eigen::Matrix<double, 1, 1>;
 
-double rel(const auto& a, const auto& b) { return (a - b).norm() / (1.0 + b.norm()); }
+using testing::rel;
 
 // With a linear model the EKF is the Kalman filter, in both covariance update forms,
 // through both the callable and the pre-evaluated interfaces.

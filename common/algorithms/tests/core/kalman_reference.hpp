@@ -46,6 +46,9 @@ Eigen::Matrix<double, N, N> random_spd(Rng& rng, double scale = 1.0) {
   return A * A.transpose() + 0.05 * scale * scale * Eigen::Matrix<double, N, N>::Identity();
 }
 
+/// |a - b| relative to 1 + |b|: a difference that means the same at every scale.
+double rel(const auto& a, const auto& b) { return (a - b).norm() / (1.0 + b.norm()); }
+
 /// The std::invalid_argument message thrown by f(), "" if none.
 template <class F>
 std::string error_of(F&& f) {

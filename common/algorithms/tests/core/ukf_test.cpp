@@ -21,7 +21,7 @@ using Mat3 = Eigen::Matrix3d;
 using Vec2 = Eigen::Vector2d;
 using Mat2 = Eigen::Matrix2d;
 
-double rel(const auto& a, const auto& b) { return (a - b).norm() / (1.0 + b.norm()); }
+using testing::rel;
 
 // Both UKF forms equal the Kalman filter on a linear-Gaussian problem, step by step,
 // for several sigma-point scalings (paper 002's alpha range included).

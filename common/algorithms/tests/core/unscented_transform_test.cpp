@@ -13,7 +13,7 @@ namespace plexus::algorithms {
 namespace {
 
 template <int L>
-Eigen::Matrix<double, L, L> random_spd(Rng& rng) {
+Eigen::Matrix<double, L, L> random_covariance(Rng& rng) {
   Eigen::Matrix<double, L, L> A;
   for (int i = 0; i < L; ++i)
     for (int j = 0; j < L; ++j) A(i, j) = rng.normal();
@@ -62,7 +62,7 @@ TEST(UnscentedTransform, ExactForAffineMaps) {
       const auto w = UnscentedWeights<5>::make(p, "ut");
       Eigen::Matrix<double, 5, 1> x;
       for (int i = 0; i < 5; ++i) x(i) = rng.normal(0.0, 3.0);
-      const Eigen::Matrix<double, 5, 5> P = random_spd<5>(rng);
+      const Eigen::Matrix<double, 5, 5> P = random_covariance<5>(rng);
       Eigen::Matrix<double, 3, 5> A;
       for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 5; ++j) A(i, j) = rng.normal();

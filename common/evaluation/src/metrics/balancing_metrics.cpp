@@ -19,9 +19,12 @@
 #include <vector>
 
 #include "plexus/scenario/metric.hpp"
+#include "trace_window.hpp"
 
 namespace plexus::scenario {
 namespace {
+
+using metric_detail::in_window;
 
 constexpr double kDeg = 180.0 / std::numbers::pi;
 using Series = std::vector<std::pair<double, double>>;
@@ -76,11 +79,6 @@ int field_or_theta(const MetricSetup& s, const SignalSpec& spec, const std::stri
   const auto it = std::find(spec.fields.begin(), spec.fields.end(), name);
   if (it == spec.fields.end()) s.params().fail(key, spec.name + " has no field '" + name + "'");
   return static_cast<int>(it - spec.fields.begin());
-}
-
-bool in_window(double t, double from, double to, double step) {
-  const double eps = 1e-9 * step;
-  return t >= from - eps && t <= to + eps;
 }
 
 /// (t, (a.ia - b.ib) in degrees) for each sample of a in the window, b held at or before it.

@@ -11,9 +11,12 @@
 #include <functional>
 
 #include "plexus/scenario/metric.hpp"
+#include "trace_window.hpp"
 
 namespace plexus::scenario {
 namespace {
+
+using metric_detail::in_window;
 
 using Reduce = std::function<double(const std::vector<std::pair<double, double>>&)>;
 
@@ -44,11 +47,6 @@ double reduce_max_abs(const std::vector<std::pair<double, double>>& s) {
   double m = NAN;
   for (const auto& [t, v] : s) m = std::isnan(m) || std::abs(v) > m ? std::abs(v) : m;
   return m;
-}
-
-bool in_window(double t, double from, double to, double step) {
-  const double eps = 1e-9 * step;
-  return t >= from - eps && t <= to + eps;
 }
 
 MetricFactory error_metric(Reduce reduce) {

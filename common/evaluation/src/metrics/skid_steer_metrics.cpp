@@ -37,9 +37,13 @@
 #include <vector>
 
 #include "plexus/scenario/metric.hpp"
+#include "trace_window.hpp"
 
 namespace plexus::scenario {
 namespace {
+
+using metric_detail::Held;
+using metric_detail::in_window;
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
@@ -73,19 +77,6 @@ Columns columns_of(const MetricSetup& s, const std::string& key, const std::vect
 const std::vector<std::string> kIcrFields = {"y_l", "y_r", "x_G"};
 
 /// Rows of `trace` at or before increasing steps.
-struct Held {
-  const SignalTrace* trace;
-  std::size_t next = 0;
-  long row(int64_t step) {
-    while (next < trace->size() && trace->steps[next] <= step) ++next;
-    return static_cast<long>(next) - 1;
-  }
-};
-
-bool in_window(double t, double from, double to, double step) {
-  return t >= from - 1e-9 * step && t <= to + 1e-9 * step;
-}
-
 /// (t, largest |estimate - truth| over the fields, truth values) at every estimate sample in the window.
 struct ErrorSample {
   double t;
@@ -161,7 +152,7 @@ const MetricRegistration kRiseTime{"icr_rise_time",
                                      };
                                    }};
 
-const MetricRegistration kErrorFinal{"icr_error_final",
+const MetricRegistration kIcrErrorFinal{"icr_error_final",
                                      "largest absolute ICR estimate error at the end of the window, m",
                                      [](const MetricSetup& s) -> MetricFunction {
                                        const Columns est = columns(s, "estimate", kIcrFields);

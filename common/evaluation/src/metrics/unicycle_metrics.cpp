@@ -22,24 +22,13 @@
 #include <vector>
 
 #include "plexus/scenario/metric.hpp"
+#include "trace_window.hpp"
 
 namespace plexus::scenario {
 namespace {
 
-bool in_window(double t, double from, double to, double step) {
-  const double eps = 1e-9 * step;
-  return t >= from - eps && t <= to + eps;
-}
-
-/// Reads `trace` held at increasing steps: the latest row at or before the step, or -1.
-struct Held {
-  const SignalTrace* trace;
-  std::size_t next = 0;
-  long row(int64_t step) {
-    while (next < trace->size() && trace->steps[next] <= step) ++next;
-    return static_cast<long>(next) - 1;
-  }
-};
+using metric_detail::Held;
+using metric_detail::in_window;
 
 struct Field {
   std::string signal;

@@ -22,7 +22,7 @@
 namespace plexus::rt {
 namespace {
 
-dds_duration_t to_duration(double s) { return s <= 0 ? DDS_INFINITY : static_cast<dds_duration_t>(s * 1e9); }
+dds_duration_t to_cyclone_duration(double s) { return s <= 0 ? DDS_INFINITY : static_cast<dds_duration_t>(s * 1e9); }
 
 std::string policy_name(dds_qos_policy_id_t id) {
   if (id == DDS_DATA_REPRESENTATION_QOS_POLICY_ID) return "DATA_REPRESENTATION";
@@ -38,7 +38,7 @@ dds_qos_t* make_qos(const QosProfile& p) {
   dds_qos_t* q = dds_create_qos();
   dds_qset_reliability(
       q, p.reliability == QosProfile::Reliability::reliable ? DDS_RELIABILITY_RELIABLE : DDS_RELIABILITY_BEST_EFFORT,
-      p.max_blocking_time_s > 0 ? to_duration(p.max_blocking_time_s) : DDS_INFINITY);
+      p.max_blocking_time_s > 0 ? to_cyclone_duration(p.max_blocking_time_s) : DDS_INFINITY);
   dds_qset_durability(q, p.durability == QosProfile::Durability::transient_local ? DDS_DURABILITY_TRANSIENT_LOCAL
                                                                                  : DDS_DURABILITY_VOLATILE);
   dds_qset_history(q, p.history == QosProfile::History::keep_all ? DDS_HISTORY_KEEP_ALL : DDS_HISTORY_KEEP_LAST,
@@ -47,13 +47,13 @@ dds_qos_t* make_qos(const QosProfile& p) {
     dds_qset_durability_service(
         q, 0, p.history == QosProfile::History::keep_all ? DDS_HISTORY_KEEP_ALL : DDS_HISTORY_KEEP_LAST, p.depth,
         DDS_LENGTH_UNLIMITED, DDS_LENGTH_UNLIMITED, DDS_LENGTH_UNLIMITED);
-  dds_qset_deadline(q, to_duration(p.deadline_s));
+  dds_qset_deadline(q, to_cyclone_duration(p.deadline_s));
   dds_liveliness_kind_t lk = DDS_LIVELINESS_AUTOMATIC;
   if (p.liveliness == QosProfile::Liveliness::manual_by_participant) lk = DDS_LIVELINESS_MANUAL_BY_PARTICIPANT;
   if (p.liveliness == QosProfile::Liveliness::manual_by_topic) lk = DDS_LIVELINESS_MANUAL_BY_TOPIC;
-  dds_qset_liveliness(q, lk, to_duration(p.liveliness_lease_s));
-  dds_qset_lifespan(q, to_duration(p.lifespan_s));
-  dds_qset_latency_budget(q, p.latency_budget_s > 0 ? to_duration(p.latency_budget_s) : 0);
+  dds_qset_liveliness(q, lk, to_cyclone_duration(p.liveliness_lease_s));
+  dds_qset_lifespan(q, to_cyclone_duration(p.lifespan_s));
+  dds_qset_latency_budget(q, p.latency_budget_s > 0 ? to_cyclone_duration(p.latency_budget_s) : 0);
   const dds_data_representation_id_t xcdr1 = DDS_DATA_REPRESENTATION_XCDR1;
   dds_qset_data_representation(q, 1, &xcdr1);
   return q;

@@ -40,7 +40,7 @@ namespace fdds = eprosima::fastdds::dds;
 using eprosima::fastrtps::rtps::IPLocator;
 using eprosima::fastrtps::rtps::Locator_t;
 
-eprosima::fastrtps::Duration_t to_duration(double s) {
+eprosima::fastrtps::Duration_t to_fast_duration(double s) {
   if (s <= 0) return eprosima::fastrtps::c_TimeInfinite;
   const auto sec = static_cast<int32_t>(s);
   return eprosima::fastrtps::Duration_t(sec, static_cast<uint32_t>((s - sec) * 1e9));
@@ -57,13 +57,13 @@ template <class Q>
 void apply_common(Q& q, const QosProfile& p, bool data_sharing) {
   q.reliability().kind = p.reliability == QosProfile::Reliability::reliable ? fdds::RELIABLE_RELIABILITY_QOS
                                                                             : fdds::BEST_EFFORT_RELIABILITY_QOS;
-  q.reliability().max_blocking_time = to_duration(p.max_blocking_time_s);
+  q.reliability().max_blocking_time = to_fast_duration(p.max_blocking_time_s);
   q.durability().kind = p.durability == QosProfile::Durability::transient_local ? fdds::TRANSIENT_LOCAL_DURABILITY_QOS
                                                                                 : fdds::VOLATILE_DURABILITY_QOS;
   q.history().kind =
       p.history == QosProfile::History::keep_all ? fdds::KEEP_ALL_HISTORY_QOS : fdds::KEEP_LAST_HISTORY_QOS;
   q.history().depth = p.depth;
-  q.deadline().period = to_duration(p.deadline_s);
+  q.deadline().period = to_fast_duration(p.deadline_s);
   switch (p.liveliness) {
     case QosProfile::Liveliness::automatic: q.liveliness().kind = fdds::AUTOMATIC_LIVELINESS_QOS; break;
     case QosProfile::Liveliness::manual_by_participant:
@@ -71,12 +71,12 @@ void apply_common(Q& q, const QosProfile& p, bool data_sharing) {
       break;
     case QosProfile::Liveliness::manual_by_topic: q.liveliness().kind = fdds::MANUAL_BY_TOPIC_LIVELINESS_QOS; break;
   }
-  q.liveliness().lease_duration = to_duration(p.liveliness_lease_s);
-  if (p.liveliness_lease_s > 0) q.liveliness().announcement_period = to_duration(p.liveliness_lease_s / 3);
-  q.lifespan().duration = to_duration(p.lifespan_s);
+  q.liveliness().lease_duration = to_fast_duration(p.liveliness_lease_s);
+  if (p.liveliness_lease_s > 0) q.liveliness().announcement_period = to_fast_duration(p.liveliness_lease_s / 3);
+  q.lifespan().duration = to_fast_duration(p.lifespan_s);
   // Latency budget 0 means "no budget" (zero), not infinite as for the other durations.
   q.latency_budget().duration =
-      p.latency_budget_s > 0 ? to_duration(p.latency_budget_s) : eprosima::fastrtps::Duration_t(0, 0);
+      p.latency_budget_s > 0 ? to_fast_duration(p.latency_budget_s) : eprosima::fastrtps::Duration_t(0, 0);
   // Data sharing (the writer's history in shared memory, read in place by a reader of the
   // same host) only with transport shm and for plain types (data_sharing()): Fast DDS
   // then chooses per peer (AUTO): a Cyclone DDS reader, one on another host, or any endpoint
@@ -458,7 +458,7 @@ std::unique_ptr<WriterBackend> FastParticipant::make_writer(const msg::TypeSuppo
   apply_common(wq, qos, data_sharing(type));
   // A lost sample is asked for when the next heartbeat arrives, and repaired 1 ms after the
   // request (NetworkOptions::reliable_heartbeat_s; Fast DDS's defaults: 3 s and 5 ms).
-  wq.reliable_writer_qos().times.heartbeatPeriod = to_duration(options().network.reliable_heartbeat_s);
+  wq.reliable_writer_qos().times.heartbeatPeriod = to_fast_duration(options().network.reliable_heartbeat_s);
   wq.reliable_writer_qos().times.nackResponseDelay = eprosima::fastrtps::Duration_t(0, 1'000'000);
   auto w = std::make_unique<FastWriter>(*this, topic_name, detail::local_endpoint(options().name, true, qos));
   fdds::DataWriter* dw = publisher_->create_datawriter(t, wq, w.get(), fdds::StatusMask::all());

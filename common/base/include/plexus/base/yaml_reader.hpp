@@ -22,6 +22,12 @@ YAML::Node load_yaml_file(const std::string& path);
 /// Parses YAML text; `origin` names it in errors.
 YAML::Node load_yaml_string(const std::string& text, const std::string& origin);
 
+/// The scalar under `key` of `node`, or "" when it is absent or not a scalar (for reports,
+/// which show what a run folder holds and never fail on it).
+inline std::string scalar_or_empty(const YAML::Node& node, const char* key) {
+  return node[key] && node[key].IsScalar() ? node[key].Scalar() : std::string();
+}
+
 class YamlMap {
  public:
   /// `node` must be a mapping; `file` and `path` (dotted key prefix, may be empty) name it in errors.
