@@ -101,7 +101,7 @@ const ComponentRegistration kPose{"pose_sensor", ComponentKind::sensor,
 const ComponentRegistration kWheels{"track_speed_sensor", ComponentKind::sensor, "track speeds v_l, v_r with noise",
                                     make<TrackSpeedSensorComponent>()};
 const ComponentRegistration kImuZSensor{"imu_z_sensor", ComponentKind::sensor, "IMU z-acceleration with noise and bias",
-                                 make<ImuZSensorComponent>()};
+                                        make<ImuZSensorComponent>()};
 
 }  // namespace
 }  // namespace plexus::scenario

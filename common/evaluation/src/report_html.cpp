@@ -84,10 +84,11 @@ std::string report_html(const ReportInputs& in, const Comparison& comparison, co
        << "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
        << "<title>plexus report: " << esc(name) << "</title>\n<style>" << kStyle << "</style>\n</head>\n<body>\n";
   html << "<h1>Report: " << esc(name) << "</h1>\n";
-  if (const std::string d = scalar_or_empty(in.scenario, "description"); !d.empty()) html << "<p>" << esc(d) << "</p>\n";
-  html << "<p class=\"facts\"><span>duration " << esc(scalar_or_empty(in.scenario, "duration")) << " s</span><span>base step "
-       << esc(scalar_or_empty(in.scenario, "step")) << " s</span><span>seed " << esc(scalar_or_empty(in.scenario, "seed"))
-       << "</span><span>digest <code>"
+  if (const std::string d = scalar_or_empty(in.scenario, "description"); !d.empty())
+    html << "<p>" << esc(d) << "</p>\n";
+  html << "<p class=\"facts\"><span>duration " << esc(scalar_or_empty(in.scenario, "duration"))
+       << " s</span><span>base step " << esc(scalar_or_empty(in.scenario, "step")) << " s</span><span>seed "
+       << esc(scalar_or_empty(in.scenario, "seed")) << "</span><span>digest <code>"
        << esc(in.metrics.contains("digest") && in.metrics["digest"].is_string()
                   ? in.metrics["digest"].get<std::string>()
                   : "?")

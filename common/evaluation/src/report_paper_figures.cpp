@@ -18,8 +18,8 @@
 #include <set>
 #include <string>
 
-#include "plexus/base/yaml_reader.hpp"
 #include "plexus/base/input_error.hpp"
+#include "plexus/base/yaml_reader.hpp"
 #include "plexus/evaluation/evaluation.hpp"
 #include "plexus/evaluation/report_figures.hpp"
 #include "plexus/scenario/expectation.hpp"
@@ -144,7 +144,8 @@ std::optional<Figure> paper000(const ReportInputs& in, const std::string& robot)
   // positions (Figs. 4-5) or on the RFID grid (Figs. 6-7).
   std::string figs = "Figs. 4-5";
   for (const auto& [name, node] : services_of(in, robot))
-    if (scalar_or_empty(node, "type") == "trajectory_tracking" && scalar_or_empty(node, "feedback") == "state") figs = "Figs. 2-3";
+    if (scalar_or_empty(node, "type") == "trajectory_tracking" && scalar_or_empty(node, "feedback") == "state")
+      figs = "Figs. 2-3";
   if (figs != "Figs. 2-3" && in.scenario["robots"][robot]["sensors"])
     for (const auto& s : in.scenario["robots"][robot]["sensors"])
       if (scalar_or_empty(s.second, "kind") == "rfid_grid") figs = "Figs. 6-7";

@@ -32,7 +32,8 @@ ArmSineReference::ArmSineReference(const ArmSineReferenceParams& p) : params_(p)
     }
   }
   for (Eigen::Index i = 0; i < n; ++i) {
-    validation::require_non_negative(kWhereArmSineReference, "frequency_hz[" + std::to_string(i) + "]", p.frequency_hz(i));
+    validation::require_non_negative(kWhereArmSineReference, "frequency_hz[" + std::to_string(i) + "]",
+                                     p.frequency_hz(i));
   }
 }
 

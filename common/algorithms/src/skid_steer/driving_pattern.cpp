@@ -33,7 +33,9 @@ DrivingPattern::DrivingPattern(const DrivingPatternParams& params) : params_(par
       require_positive(kWhereDrivingPattern, "period", params.period);
       require_finite(kWhereDrivingPattern, "phase", params.phase);
       [[fallthrough]];
-    case DrivingPatternKind::kCircle: require_finite(kWhereDrivingPattern, "turn_rate", params.turn_rate); [[fallthrough]];
+    case DrivingPatternKind::kCircle:
+      require_finite(kWhereDrivingPattern, "turn_rate", params.turn_rate);
+      [[fallthrough]];
     case DrivingPatternKind::kStraight: require_finite(kWhereDrivingPattern, "speed", params.speed); break;
     case DrivingPatternKind::kSegments:
       if (params.segments.empty()) throw std::invalid_argument("driving_pattern: segments must not be empty");

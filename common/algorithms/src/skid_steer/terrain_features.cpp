@@ -37,7 +37,8 @@ PsdFeatureExtractor::PsdFeatureExtractor(const PsdFeatureParams& params) : param
   require_non_negative(kWherePsdFeatures, "min_hz", params.min_hz);
   const double nyquist = 0.5 * params.sample_rate_hz;
   if (!(params.max_hz > params.min_hz && params.max_hz <= nyquist)) {
-    fail(kWherePsdFeatures, "max_hz", "> min_hz and <= the Nyquist frequency " + format_value(nyquist) + " Hz", params.max_hz);
+    fail(kWherePsdFeatures, "max_hz", "> min_hz and <= the Nyquist frequency " + format_value(nyquist) + " Hz",
+         params.max_hz);
   }
   require_positive(kWherePsdFeatures, "log_floor", params.log_floor);
   const auto n = static_cast<std::size_t>(params.window_samples);
@@ -47,8 +48,8 @@ PsdFeatureExtractor::PsdFeatureExtractor(const PsdFeatureParams& params) : param
   last_bin_ = static_cast<std::size_t>(std::floor(params.max_hz / df + 1e-9));
   if (last_bin_ > n / 2) last_bin_ = n / 2;
   if (last_bin_ < first_bin_) {
-    fail(kWherePsdFeatures, "max_hz", "such that [min_hz, max_hz] holds a bin (bins are " + format_value(df) + " Hz apart)",
-         params.max_hz);
+    fail(kWherePsdFeatures, "max_hz",
+         "such that [min_hz, max_hz] holds a bin (bins are " + format_value(df) + " Hz apart)", params.max_hz);
   }
   taper_.assign(n, 1.0);
   if (params.taper == SpectrumTaper::kHann) {

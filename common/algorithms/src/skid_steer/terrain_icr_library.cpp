@@ -40,7 +40,8 @@ TerrainIcrLibrary load_terrain_icr_library(const std::string& path) {
     const auto t = tokens(line.substr(0, line.find('#')));
     if (t.empty()) continue;
     if (!magic) {
-      if (t.size() != 2 || t[0] != kMagicIcrLibrary || t[1] != "1") fail(n, std::string("expected '") + kMagicIcrLibrary + " 1'");
+      if (t.size() != 2 || t[0] != kMagicIcrLibrary || t[1] != "1")
+        fail(n, std::string("expected '") + kMagicIcrLibrary + " 1'");
       magic = true;
       continue;
     }

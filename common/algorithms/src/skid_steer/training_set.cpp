@@ -94,7 +94,8 @@ TrainingSet load_training_set(const std::string& path) {
     if (tk.empty() || tk[0][0] == '#') continue;
     const std::string& key = tk[0];
     if (!magic) {
-      if (key != kMagicTraining) p.fail(line_no, std::string("expected the header '") + kMagicTraining + " 1', got '" + line + "'");
+      if (key != kMagicTraining)
+        p.fail(line_no, std::string("expected the header '") + kMagicTraining + " 1', got '" + line + "'");
       p.arity(line_no, tk, 1);
       if (p.integer(line_no, tk[1], "version") != kVersion) {
         p.fail(line_no, "unsupported version " + tk[1] + " (this build reads version 1)");

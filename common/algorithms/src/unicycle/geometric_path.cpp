@@ -41,12 +41,14 @@ void validate(const PolynomialPath& p) {
       const double c = p.c(i, j);
       validation::require_finite(kWhereGeometricPath, name, c);
       if (i + j > PolynomialPath::kMaxDegree && c != 0.0) {
-        validation::fail(kWhereGeometricPath, name, "0 (total degree above " + std::to_string(PolynomialPath::kMaxDegree) + ")", c);
+        validation::fail(kWhereGeometricPath, name,
+                         "0 (total degree above " + std::to_string(PolynomialPath::kMaxDegree) + ")", c);
       }
       if (i + j > 0 && c != 0.0) non_constant = true;
     }
   }
-  if (!non_constant) validation::fail(kWhereGeometricPath, "polynomial", "non-constant (some c(i, j) != 0 with i + j > 0)", 0.0);
+  if (!non_constant)
+    validation::fail(kWhereGeometricPath, "polynomial", "non-constant (some c(i, j) != 0 with i + j > 0)", 0.0);
 }
 
 PathEvaluation eval(const CirclePath& c, const Eigen::Vector2d& p) {

@@ -153,20 +153,20 @@ const MetricRegistration kRiseTime{"icr_rise_time",
                                    }};
 
 const MetricRegistration kIcrErrorFinal{"icr_error_final",
-                                     "largest absolute ICR estimate error at the end of the window, m",
-                                     [](const MetricSetup& s) -> MetricFunction {
-                                       const Columns est = columns(s, "estimate", kIcrFields);
-                                       const Columns tru = columns(s, "truth", kIcrFields);
-                                       const auto span = s.window();
-                                       const double from = span.first, to = span.second;
-                                       return [=](const RunLog& log) {
-                                         MetricResult r;
-                                         for (const ErrorSample& e : errors(log, est, tru, from, to))
-                                           r.series.emplace_back(e.t, e.error);
-                                         if (!r.series.empty()) r.value = r.series.back().second;
-                                         return r;
-                                       };
-                                     }};
+                                        "largest absolute ICR estimate error at the end of the window, m",
+                                        [](const MetricSetup& s) -> MetricFunction {
+                                          const Columns est = columns(s, "estimate", kIcrFields);
+                                          const Columns tru = columns(s, "truth", kIcrFields);
+                                          const auto span = s.window();
+                                          const double from = span.first, to = span.second;
+                                          return [=](const RunLog& log) {
+                                            MetricResult r;
+                                            for (const ErrorSample& e : errors(log, est, tru, from, to))
+                                              r.series.emplace_back(e.t, e.error);
+                                            if (!r.series.empty()) r.value = r.series.back().second;
+                                            return r;
+                                          };
+                                        }};
 
 /// One change of the truth (a terrain switch): samples [begin, end) lie on the new truth;
 /// the switch happened between samples begin - 1 and begin, at t = samples[begin - 1].t.
