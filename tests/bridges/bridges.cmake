@@ -1,6 +1,6 @@
 # Hardware bridges (docs/bridges.md): every source of a robot's topics keeps the simulator's
-# contract. Included from tests/CMakeLists.txt. DDS domains 130-139 are this file's (140-149:
-# other tests/bridges work).
+# contract. Included from tests/CMakeLists.txt. DDS domains 130-139 are this file's (140-145:
+# interop.adjacent_domains_*; 146-149: other tests).
 #
 # contract_probe checks one source from outside (discovery: topics, types, QoS; measured
 # rates, headers, values; a step command and a stale one); contract.sh starts the source
