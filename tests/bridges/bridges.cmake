@@ -16,7 +16,8 @@ set(BRIDGES_DOMAIN 130)
 foreach(source simulator serial udp replay)
   foreach(vendor fast cyclone)
     add_test(NAME bridges.contract_${source}_${vendor}
-             COMMAND ${PROJECT_SOURCE_DIR}/tests/scripts/own_netns.sh bash ${CMAKE_CURRENT_LIST_DIR}/contract.sh ${source} ${vendor} ${BRIDGES_DOMAIN}
+             COMMAND ${PROJECT_SOURCE_DIR}/tests/scripts/own_netns.sh
+                     bash ${CMAKE_CURRENT_LIST_DIR}/contract.sh ${source} ${vendor} ${BRIDGES_DOMAIN}
                      ${CMAKE_BINARY_DIR}/test-runs/bridges/contract_${source}_${vendor} $<TARGET_FILE_DIR:contract_probe>)
     # Realtime, but neither RUN_SERIAL nor a RESOURCE_LOCK: each test has its own domain,
     # pty, UDP ports (40000 + 10 * domain + {0,1}, between the port ranges of DDS domains
@@ -60,10 +61,12 @@ set_tests_properties(bridges.emulator_smoke PROPERTIES LABELS "bridges")
 foreach(variant "simulator;cyclone;138" "serial;fast;139")
   list(POP_FRONT variant source vendor domain)
   add_test(NAME bridges.balancing_contract_${source}_${vendor}
-           COMMAND ${PROJECT_SOURCE_DIR}/tests/scripts/own_netns.sh bash ${CMAKE_CURRENT_LIST_DIR}/balancing_contract.sh ${source} ${vendor} ${domain}
+           COMMAND ${PROJECT_SOURCE_DIR}/tests/scripts/own_netns.sh
+                   bash ${CMAKE_CURRENT_LIST_DIR}/balancing_contract.sh ${source} ${vendor} ${domain}
                    ${CMAKE_BINARY_DIR}/test-runs/bridges/balancing_contract_${source}_${vendor} $<TARGET_FILE_DIR:contract_probe>)
   # Its rates are judged over the whole window as the contract tests above, it runs in a
-  # network namespace of its own as they do, and it takes their lock (issue 15: every realtime test under a lock or RUN_SERIAL).
+  # network namespace of its own as they do, and it takes their lock (issue 15: every
+  # realtime test under a lock or RUN_SERIAL).
   set_tests_properties(bridges.balancing_contract_${source}_${vendor} PROPERTIES LABELS "bridges;realtime" TIMEOUT 60
                        RESOURCE_LOCK bridges_contract)
   if(source STREQUAL "serial")  # a pty: as bridges.contract_serial_*

@@ -56,7 +56,8 @@ foreach(v "fast;105" "cyclone;106")
   list(GET v 0 vendor)
   list(GET v 1 domain)
   add_test(NAME security.intruders_${vendor}
-           COMMAND ${PROJECT_SOURCE_DIR}/tests/scripts/own_netns.sh ${SEC_DIR}/intruders.sh $<TARGET_FILE_DIR:plexus> ${PROJECT_SOURCE_DIR}/deploy/params/unicycle_robot.yaml
+           COMMAND ${PROJECT_SOURCE_DIR}/tests/scripts/own_netns.sh
+                   ${SEC_DIR}/intruders.sh $<TARGET_FILE_DIR:plexus> ${PROJECT_SOURCE_DIR}/deploy/params/unicycle_robot.yaml
                    ${SEC_RUNS}/pki ${SEC_RUNS}/foreign ${vendor} ${domain})
   set_tests_properties(security.intruders_${vendor} PROPERTIES LABELS "security;multiprocess;slow" TIMEOUT 200
                        FIXTURES_REQUIRED security_pki RESOURCE_LOCK plexus_dds_domain_${domain})
