@@ -77,8 +77,8 @@ void write_figures(std::ostream& html, const std::vector<Figure>& figures, const
 }  // namespace
 
 std::string report_html(const ReportInputs& in, const Comparison& comparison, const std::vector<Figure>& figures) {
-  const std::string name =
-      scalar_or_empty(in.scenario, "name").empty() ? in.dir.filename().string() : scalar_or_empty(in.scenario, "name");
+  const std::string scenario_name = scalar_or_empty(in.scenario, "name");
+  const std::string name = scenario_name.empty() ? in.dir.filename().string() : scenario_name;
   std::ostringstream html;
   html << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
        << "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"

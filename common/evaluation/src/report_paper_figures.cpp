@@ -221,7 +221,8 @@ std::string icr_label(const ReportInputs& in, const ReportTable& e) {
   const YAML::Node s = in.scenario["services"] ? in.scenario["services"][e.producer] : YAML::Node();
   if (!s || scalar_or_empty(s, "type") != "icr_ekf") return e.name;
   const bool adaptive = scalar_or_empty(s, "adaptive_reset") == "true";
-  const std::string mode = scalar_or_empty(s, "reset_mode").empty() ? "covariance" : scalar_or_empty(s, "reset_mode");
+  const std::string reset_mode = scalar_or_empty(s, "reset_mode");
+  const std::string mode = reset_mode.empty() ? "covariance" : reset_mode;
   return e.name + " (" + e.producer + ": " + (adaptive ? "AKF, " + mode + " reset" : std::string("EKF")) + ")";
 }
 
@@ -397,8 +398,8 @@ std::optional<Figure> paper004(const ReportInputs& in, const std::string& robot)
   f.file = "plots/paper004." + robot + ".png";
   const std::string controller = [&] {
     for (const auto& [name, node] : services_of(in, robot))
-      if (scalar_or_empty(node, "type") == "arm_vdc" || scalar_or_empty(node, "type") == "arm_ct_pd")
-        return name + ": " + scalar_or_empty(node, "type");
+      if (const std::string type = scalar_or_empty(node, "type"); type == "arm_vdc" || type == "arm_ct_pd")
+        return name + ": " + type;
     return cmd->producer;
   }();
   f.title = "Paper 004 (Liu et al. 2018), Figs. 3-6: link tracking errors and joint torques of " + robot + " (" +
