@@ -34,16 +34,28 @@ phase_tests() {  # phase_tests exclusive|shared: comma-separated ctest test numb
 exclusive=$(phase_tests exclusive)
 shared=$(phase_tests shared)
 
+# Each phase's failed tests, kept so that the last lines of this script's output name them
+# (a CI log is often read from its tail, and the shared phase's output pushes the exclusive
+# phase's failures far up).
+failed_log=build/Testing/Temporary/LastTestsFailed.log
+keep_failures() {  # keep_failures PHASE: copy ctest's list of the phase's failed tests
+  if [ -s "$failed_log" ]; then cp "$failed_log" "build/failed_$1.log"; else : > "build/failed_$1.log"; fi
+}
+
 suite_rc=0
 start=$(date +%s)
+rm -f "$failed_log"
 [ -z "$exclusive" ] || ctest --test-dir build --output-on-failure -j2 --timeout 600 -I "0,0,0,$exclusive" || suite_rc=$?
+keep_failures exclusive
 echo "exclusive tests: $(($(date +%s) - start)) s"
 
 start=$(date +%s)
 mkdir -p build-fuzz
 FUZZ_BUILD_ONLY=1 FUZZ_JOBS=1 setsid chrt --idle 0 tools/setup/fuzz_smoke.sh > build-fuzz/build_beside.log 2>&1 &
 fuzz_build=$!
+rm -f "$failed_log"
 ctest --test-dir build --output-on-failure -j2 --timeout 600 -I "0,0,0,$shared" || suite_rc=$?
+keep_failures shared
 echo "shared tests (fuzz build beside): $(($(date +%s) - start)) s"
 
 # The fuzz build continues in the foreground with both cores (make resumes where the idle
@@ -52,5 +64,10 @@ kill -- -"$fuzz_build" 2> /dev/null || true
 wait "$fuzz_build" 2> /dev/null || true
 fuzz_rc=0
 FUZZ_JOBS=2 tools/setup/fuzz_smoke.sh || fuzz_rc=$?
+for phase in exclusive shared; do
+  while IFS=: read -r number name; do
+    echo "FAILED in the $phase phase: test $number, $name (its output is above)"
+  done < "build/failed_$phase.log"
+done
 echo "suite exit $suite_rc, fuzz smoke exit $fuzz_rc"
 [ "$suite_rc" -eq 0 ] && [ "$fuzz_rc" -eq 0 ]
