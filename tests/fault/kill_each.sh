@@ -48,9 +48,11 @@ all_cases=(
   "plant_simulator_arm|plant_simulator|arm|2|plant|-|arm.cmd|-"
 )
 # The arm at 1 kHz as docs/distributed.md runs it in realtime: its EKF and VDC in one
-# joint_controller process (`control`), the reference beside them, a 20-period deadline.
+# joint_controller process (`control`), the reference beside them, a 20-period deadline, the
+# EKF blind 10 ms after its joint samples go stale (0.3 s by default: its controller's safe
+# output came 0.32 s after the plant's death).
 arm_sets=(--set step=0.001 --set clock.input_deadline_periods=20 --set services.observer.process=control
-          --set services.controller.process=control)
+          --set services.controller.process=control --set services.observer.blind_after_s=0.01)
 wanted=" $* "
 fail=0
 rows=()

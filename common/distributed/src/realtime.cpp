@@ -166,20 +166,20 @@ struct RealtimeHost::Impl {
   std::vector<int64_t> local_origin;                   // by signal: origin of the latest local sample
   std::vector<std::vector<std::size_t>> local_inputs;  // by component: the signals it reads from this process
   std::vector<bool> stop_when_stale;                   // by signal: a plant's command (zeroed when stale)
-  // An estimator none of whose measurements has been fresh for clock.blind_after_s is
-  // blind: it keeps stepping, but its outputs are not published (nor passed on as fresh in
-  // this process), so that staleness reaches the controllers downstream and they hold (a
-  // dead plant simulator stops them all). Shorter gaps (a late sample on a loaded machine, a
-  // lost one) it bridges with its prediction, as before.
+  // An estimator none of whose measurements has been fresh for its blind_after_s (its own
+  // key, else clock.blind_after_s) is blind: it keeps stepping, but its outputs are not
+  // published (nor passed on as fresh in this process), so that staleness reaches the
+  // controllers downstream and they hold (a dead plant simulator stops them all). Shorter
+  // gaps (a late sample on a loaded machine, a lost one) it bridges with its prediction.
   std::vector<std::vector<std::size_t>> measurements;  // by component: its remote inputs from plants and sensors
   std::vector<std::vector<std::size_t>> outputs_of;    // by component: the signals it produces here
   std::vector<bool> fresh;                             // by signal: the last read found it fresh
   std::vector<bool> blind;                             // by signal: its producer here is blind
   std::vector<int64_t> last_measured_ns;               // by component: last tick with a fresh measurement (0: never)
-  int64_t blind_after_ns = 0;
-  int64_t stride = 1;              // the loop period in base steps (gcd of the hosted periods)
-  std::vector<bool> deferred;      // by component: an estimator that waits for its remote samples
-  std::vector<int64_t> next_step;  // by component (deferred): its next step to run
+  std::vector<int64_t> blind_after_ns;                 // by component: its grace
+  int64_t stride = 1;                                  // the loop period in base steps (gcd of the hosted periods)
+  std::vector<bool> deferred;                          // by component: an estimator that waits for its remote samples
+  std::vector<int64_t> next_step;                      // by component (deferred): its next step to run
   // A host of plants and their sensors (the plant simulator) publishes the sensors' samples
   // of a step before the plants' states: the estimators in other processes read the
   // sensors a quarter period after the plant's tick, and a plant's state (the truth, which
@@ -220,7 +220,11 @@ struct RealtimeHost::Impl {
     fresh.assign(signals.size(), false);
     blind.assign(signals.size(), false);
     last_measured_ns.assign(sc.components.size(), 0);
-    blind_after_ns = static_cast<int64_t>(sc.blind_after_s * 1e9);
+    blind_after_ns.resize(sc.components.size());
+    for (std::size_t c = 0; c < sc.components.size(); ++c) {
+      const double own = sc.components[c].blind_after_s;
+      blind_after_ns[c] = static_cast<int64_t>((own >= 0.0 ? own : sc.blind_after_s) * 1e9);
+    }
     for (std::size_t i : produced)
       for (std::size_t c = 0; c < sc.components.size(); ++c)
         if (sc.components[c].component->name() == signals[i].producer) outputs_of[c].push_back(i);
@@ -410,7 +414,7 @@ RealtimeReport RealtimeHost::run(const std::atomic<bool>& stop) {
       if (std::any_of(ms.begin(), ms.end(), [&m](std::size_t s) { return m.fresh[s]; }))
         m.last_measured_ns[component] = now;
       const int64_t last = m.last_measured_ns[component];
-      const bool blind = !ms.empty() && (last == 0 || now - last > m.blind_after_ns);
+      const bool blind = !ms.empty() && (last == 0 || now - last > m.blind_after_ns[component]);
       for (std::size_t s : m.outputs_of[component]) m.blind[s] = blind;
       if (blind) ++m.report.blind_steps;
     }

@@ -62,7 +62,9 @@ inline scenario::Scenario two_component_scenario(const std::string& robot, const
 /// The plant, an estimator of its state (`estimator`: estimate = truth/state) and a controller
 /// that follows the estimate (`follower`): the chain through which a dead plant must stop the
 /// controller (the estimator goes blind).
-inline scenario::Scenario estimator_chain_scenario(const std::string& robot, const std::string& clock_yaml = "") {
+/// `estimator_keys`: more keys of the estimator's section (", blind_after_s: 0").
+inline scenario::Scenario estimator_chain_scenario(const std::string& robot, const std::string& clock_yaml = "",
+                                                   const std::string& estimator_keys = "") {
   const std::string text =
       "name: t\n"
       "duration: 30.0\n"
@@ -76,7 +78,7 @@ inline scenario::Scenario estimator_chain_scenario(const std::string& robot, con
       "    plant: {type: test_echo_plant}\n"
       "services:\n"
       "  estimator: {type: test_pass_estimator, robot: " +
-      robot +
+      robot + estimator_keys +
       "}\n"
       "  follower: {type: test_follow_controller, robot: " +
       robot + ", remap: {truth/state: " + robot + "/estimate}}\n";

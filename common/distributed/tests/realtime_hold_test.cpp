@@ -222,6 +222,33 @@ TEST_P(RealtimeHold, EstimatorWithoutFreshMeasurementPublishesNothing) {
   EXPECT_EQ(run.report().holds, 0u);  // an estimator does not hold
 }
 
+// An estimator's own blind_after_s overrides the scenario's: with a clock grace of 60 s the
+// estimator below would go on publishing its prediction for a minute; its own grace of 0
+// makes it silent as soon as its measurement is stale (issue 33, item 5).
+TEST_P(RealtimeHold, EstimatorsOwnBlindGraceOverridesTheClocks) {
+  const std::string robot = unique_robot("rt_grace", vendor());
+  const std::string clock = "clock: {mode: realtime, input_deadline_periods: 10, blind_after_s: 60}\n";
+  auto sc_host = estimator_chain_scenario(robot, clock, ", blind_after_s: 0");
+  auto sc_peer = estimator_chain_scenario(robot, clock);
+  auto p_host = make("host estimator");
+  auto p_peer = make("plant and controller");
+  RealtimeOptions opt;
+  opt.service = "rt_grace_" + std::string(rt::to_string(vendor()));
+  RealtimeHost host(sc_host, hosting(sc_host, "estimator"), *p_host, profiles(), opt);
+  Feeder state(*p_peer, sc_peer.signals[0], step_ns(sc_peer));
+  Latest estimate(*p_peer, sc_peer.signals[1], step_ns(sc_peer));
+  HostThread run(host);
+
+  state.send(1.5, 1.0);
+  EXPECT_TRUE(eventually([&] { return estimate.is(1.5, 1.0); })) << estimate.describe();
+  state.pause();
+  EXPECT_TRUE(eventually([&] { return estimate.silent_for(0.5); })) << "still publishing: " << estimate.describe();
+
+  run.join();
+  EXPECT_EQ(run.error(), "no error");
+  EXPECT_GT(run.report().blind_steps, 0u);
+}
+
 TEST_P(RealtimeHold, ControllerHoldsBehindABlindEstimatorInItsProcess) {
   const std::string robot = unique_robot("rt_chain", vendor());
   auto sc_host = estimator_chain_scenario(robot, kRealtime);

@@ -153,6 +153,14 @@ struct Loader {
       if (!(out.restart_delay >= 0.0 && out.restart_delay <= 3600.0))
         section.fail("restart_delay", "must be in [0, 3600] s");
       read_scheduling(section, out);
+      if (section.has("blind_after_s")) {
+        if (cfg.kind != ComponentKind::estimator)
+          section.fail("blind_after_s",
+                       "only an estimator goes blind (this service is a " + std::string(to_string(cfg.kind)) + ")");
+        out.blind_after_s = section.required<double>("blind_after_s");
+        if (!(out.blind_after_s >= 0.0 && out.blind_after_s <= 60.0))
+          section.fail("blind_after_s", "must be in [0, 60] s");
+      }
     }
     cfg.section = &section;
     out.type = cfg.type;

@@ -1,7 +1,9 @@
 #include <gtest/gtest.h>
 
+#include <stdexcept>
 #include <string>
 
+#include "plexus/scenario/overrides.hpp"
 #include "plexus/scenario/scenario.hpp"
 #include "test_scenarios.hpp"
 
@@ -55,6 +57,29 @@ TEST(ScenarioLoader, RealtimeClockSettings) {
   const std::string e = load_error(with("seed: 5\n", "seed: 5\nclock: {mode: realtime, blind_after_s: -1}\n"));
   EXPECT_NE(e.find("clock.blind_after_s"), std::string::npos) << e;
   EXPECT_NE(e.find("must be in [0, 60] s"), std::string::npos) << e;
+  EXPECT_EQ(e.find('\n'), std::string::npos) << e;  // one line
+}
+
+// An estimator's own blind grace (issue 33, item 5: a 1 kHz arm needs a shorter one than the
+// scenario's 0.3 s); only an estimator takes one.
+TEST(ScenarioLoader, EstimatorBlindGrace) {
+  const std::string rfid = std::string(PLEXUS_SOURCE_DIR) + "/deploy/scenarios/wmr_output_feedback_rfid.yaml";
+  auto component = [](const Scenario& sc, const std::string& name) -> const ScenarioComponent& {
+    for (const auto& c : sc.components)
+      if (c.component->name() == name) return c;
+    throw std::runtime_error("no component " + name);
+  };
+  const Scenario plain = load_scenario(rfid);
+  EXPECT_EQ(component(plain, "observer").blind_after_s, -1.0);  // the clock's
+  const Scenario own = load_scenario(rfid, {parse_override("services.observer.blind_after_s=0.01")});
+  EXPECT_EQ(component(own, "observer").blind_after_s, 0.01);
+  EXPECT_EQ(own.blind_after_s, 0.3);  // the scenario's grace is unchanged
+  std::string e = error_of([&] { load_scenario(rfid, {parse_override("services.observer.blind_after_s=-1")}); });
+  EXPECT_NE(e.find("services.observer.blind_after_s"), std::string::npos) << e;
+  EXPECT_NE(e.find("must be in [0, 60] s"), std::string::npos) << e;
+  e = error_of([&] { load_scenario(rfid, {parse_override("services.controller.blind_after_s=0.1")}); });
+  EXPECT_NE(e.find("services.controller.blind_after_s"), std::string::npos) << e;
+  EXPECT_NE(e.find("only an estimator goes blind (this service is a controller)"), std::string::npos) << e;
   EXPECT_EQ(e.find('\n'), std::string::npos) << e;  // one line
 }
 
