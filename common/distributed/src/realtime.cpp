@@ -221,10 +221,8 @@ struct RealtimeHost::Impl {
     blind.assign(signals.size(), false);
     last_measured_ns.assign(sc.components.size(), 0);
     blind_after_ns.resize(sc.components.size());
-    for (std::size_t c = 0; c < sc.components.size(); ++c) {
-      const double own = sc.components[c].blind_after_s;
-      blind_after_ns[c] = static_cast<int64_t>((own >= 0.0 ? own : sc.blind_after_s) * 1e9);
-    }
+    for (std::size_t c = 0; c < sc.components.size(); ++c)
+      blind_after_ns[c] = static_cast<int64_t>(sc.components[c].blind_after_s * 1e9);
     for (std::size_t i : produced)
       for (std::size_t c = 0; c < sc.components.size(); ++c)
         if (sc.components[c].component->name() == signals[i].producer) outputs_of[c].push_back(i);

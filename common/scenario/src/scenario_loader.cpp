@@ -153,6 +153,7 @@ struct Loader {
       if (!(out.restart_delay >= 0.0 && out.restart_delay <= 3600.0))
         section.fail("restart_delay", "must be in [0, 3600] s");
       read_scheduling(section, out);
+      out.blind_after_s = sc.blind_after_s;  // the clock section is read before the services
       if (section.has("blind_after_s")) {
         if (cfg.kind != ComponentKind::estimator)
           section.fail("blind_after_s",

@@ -70,7 +70,10 @@ TEST(ScenarioLoader, EstimatorBlindGrace) {
     throw std::runtime_error("no component " + name);
   };
   const Scenario plain = load_scenario(rfid);
-  EXPECT_EQ(component(plain, "observer").blind_after_s, -1.0);  // the clock's
+  EXPECT_EQ(component(plain, "observer").blind_after_s, 0.3);  // the clock's default
+  const Scenario clock =
+      load_scenario(rfid, {parse_override("clock.mode=realtime"), parse_override("clock.blind_after_s=0.5")});
+  EXPECT_EQ(component(clock, "observer").blind_after_s, 0.5);  // the clock's own
   const Scenario own = load_scenario(rfid, {parse_override("services.observer.blind_after_s=0.01")});
   EXPECT_EQ(component(own, "observer").blind_after_s, 0.01);
   EXPECT_EQ(own.blind_after_s, 0.3);  // the scenario's grace is unchanged

@@ -41,9 +41,9 @@ struct ScenarioComponent {
   /// Seconds between the process's death and its restart (systemd's RestartSec), >= 0.
   double restart_delay = 0.0;
   /// Realtime, an estimator: seconds with no fresh measurement after which it is blind (its
-  /// own `blind_after_s`; -1: the scenario's clock.blind_after_s). The right grace depends on
+  /// own `blind_after_s`, else the scenario's clock.blind_after_s). The right grace depends on
   /// the loop: 0.3 s is 2 cm of the RFID robot's motion, and 300 open-loop steps of a 1 kHz arm.
-  double blind_after_s = -1.0;
+  double blind_after_s = 0.3;
   /// Realtime: SCHED_FIFO priority of its loop (0: normal scheduling) and the CPU it is
   /// pinned to (-1: none), passed as the service's --priority and --cpu.
   int priority = 0;
