@@ -127,13 +127,13 @@ case $source in
     ;;
   replay)
     start_simulator
-    "$bin/plexus" record -o "$out/r1.sqlite" --topics r1/position,r1/truth/state --duration 12 --dds "$vendor" \
+    "$bin/plexus" record -o "$out/r1.mcap" --topics r1/position,r1/truth/state --duration 12 --dds "$vendor" \
       --domain "$domain" > "$out/record.out" 2> "$out/record.err"
     rc=$?
     [ $rc -eq 0 ] || { note_fail "plexus record exited $rc"; tail -3 "$out/record.err"; }
     stop $sim plant_simulator
     # --wait 10: the replay starts once the probe's readers matched (as under plexus launch).
-    "$bin/plexus" replay "$out/r1.sqlite" --restamp --topics r1/position,r1/truth/state --wait 10 --dds "$vendor" \
+    "$bin/plexus" replay "$out/r1.mcap" --restamp --topics r1/position,r1/truth/state --wait 10 --dds "$vendor" \
       --domain "$domain" > "$out/replay.out" 2> "$out/replay.err" &
     replay=$!
     pids+=($replay)

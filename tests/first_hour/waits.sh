@@ -28,10 +28,10 @@ check 1 30 "lockstep: no clock: no step on 'lockstep/clock'" \
   "$bin/localisation_observer" --params "$params/heading_observer.yaml" --mode lockstep --timeout 2 --domain "$domain"
 # A 1 s run misses the scenario's 60 s expectation (exit 1); the recording is what counts.
 "$bin/plexus" launch "$(dirname "$params")/scenarios/unicycle_circle.yaml" --quiet --domain "$domain" \
-  --set duration=1 --record rec.sqlite --out rec > /dev/null 2>&1
-[ -s rec.sqlite ] || fail "recording a short run failed"
+  --set duration=1 --record rec.mcap --out rec > /dev/null 2>&1
+[ -s rec.mcap ] || fail "recording a short run failed"
 check 1 40 "plexus replay: failed: no lockstep clock on 'lockstep/clock' within 2 s" \
-  "$bin/plexus" replay rec.sqlite --lockstep --timeout 2 --wait 1 --domain "$domain"
+  "$bin/plexus" replay rec.mcap --lockstep --timeout 2 --wait 1 --domain "$domain"
 # 4. Realtime start on readiness (docs/distributed.md): --timeout 4, so the launcher waits 2 s.
 scen=$(dirname "$params")/scenarios/wmr_output_feedback_rfid.yaml
 t0=$(date +%s.%N)

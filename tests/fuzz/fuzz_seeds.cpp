@@ -1,4 +1,4 @@
-// Writes the generated seeds of two fuzz targets (built in the fuzz build; the output is
+// Writes the generated seeds of three fuzz targets (built in the fuzz build; the output is
 // committed):
 //
 //   build-fuzz/bin/fuzz_seeds tests/fuzz/corpus
@@ -6,8 +6,12 @@
 //   cdr_decode/<Type>[_<n>joints]   one valid sample of every message type, in the input layout
 //                                   of cdr_decode_fuzz.cpp (type index, shape byte, XCDR1)
 //   recording_reader/recording      a small valid recording (two topics, six samples) written by
-//                                   RecordingWriter, its pages shrunk to 512 bytes, in the input
+//                                   SqliteRecordingWriter, its pages shrunk to 512 bytes, in the input
 //                                   layout of recording_reader_fuzz.cpp (byte 0 = 0: the file)
+//   mcap_reader/recording_<c>       the same samples as an MCAP recording (McapRecordingWriter),
+//                                   zstd, lz4 or uncompressed chunks of one sample pair each;
+//   mcap_reader/cut_short           the zstd one as a killed recorder leaves it (no summary, no
+//                                   footer), all in the input layout of mcap_reader_fuzz.cpp
 //
 // The samples are deterministic (fixed values), so the files only change with the types.
 #include <sqlite3.h>
@@ -22,7 +26,8 @@
 
 #include "plexus/distributed/wire.hpp"
 #include "plexus/msg/messages.hpp"
-#include "recording.hpp"
+#include "mcap_recording.hpp"
+#include "sqlite_recording.hpp"
 
 namespace {
 
@@ -99,7 +104,7 @@ void recording_seed(const fs::path& dir) {
   const fs::path file = fs::temp_directory_path() / "plexus_fuzz_seed.sqlite";
   fs::remove(file);
   {
-    plexus::cli::RecordingWriter w(file.string());
+    plexus::cli::SqliteRecordingWriter w(file.string());
     const auto& pos = msg::type_support<msg::PositionMeasurement>();
     const auto& beat = msg::type_support<msg::Heartbeat>();
     const int64_t a =
@@ -136,6 +141,50 @@ void recording_seed(const fs::path& dir) {
   fs::remove(file);
 }
 
+std::vector<unsigned char> file_bytes(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::vector<unsigned char> bytes{0};  // byte 0 even: the rest is the file
+  bytes.insert(bytes.end(), std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  return bytes;
+}
+
+void mcap_seeds(const fs::path& dir) {
+  fs::create_directories(dir);
+  const fs::path file = fs::temp_directory_path() / "plexus_fuzz_seed.mcap";
+  const auto& pos = msg::type_support<msg::PositionMeasurement>();
+  const auto& beat = msg::type_support<msg::Heartbeat>();
+  for (const auto& [name, compression] : {std::pair{"zstd", plexus::mcap::Compression::zstd},
+                                          std::pair{"lz4", plexus::mcap::Compression::lz4},
+                                          std::pair{"none", plexus::mcap::Compression::none}}) {
+    std::vector<unsigned char> cut;
+    {
+      plexus::cli::RecordingOptions o;
+      o.compression = compression;
+      o.metadata = {{"recorder", "fuzz_seeds"}};
+      plexus::cli::McapRecordingWriter w(file.string(), o);
+      const int64_t a = w.add_topic("r1/position", pos, R"({"reliability":"best_effort","durability":"volatile"})");
+      const int64_t b = w.add_topic("health/observer", beat, "");
+      for (int k = 0; k < 3; ++k) {
+        plexus::cli::SampleBatch batch;
+        for (const auto& [id, ts] : {std::pair{a, &pos}, std::pair{b, &beat}}) {
+          const auto cdr = sample_cdr(*ts, 16);
+          msg::StampHeader h;
+          h.seq_num(static_cast<uint64_t>(k + 1));
+          h.publish_time_ns(1'763'000'000'000'250'000);
+          batch.add(id, 1'763'000'000'000'000'000 + k * 10'000'000 + (id == b ? 1000 : 0), &h, cdr.data(), cdr.size());
+        }
+        w.insert(batch);
+        w.flush();  // a chunk per pair of samples
+        if (k == 1) cut = file_bytes(file);
+      }
+      w.commit();
+    }
+    write(dir / (std::string("recording_") + name), file_bytes(file));
+    if (compression == plexus::mcap::Compression::zstd) write(dir / "cut_short", cut);
+  }
+  fs::remove(file);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -146,6 +195,7 @@ int main(int argc, char** argv) {
   try {
     cdr_seeds(fs::path(argv[1]) / "cdr_decode");
     recording_seed(fs::path(argv[1]) / "recording_reader");
+    mcap_seeds(fs::path(argv[1]) / "mcap_reader");
   } catch (const std::exception& e) {
     std::fprintf(stderr, "fuzz_seeds: %s\n", e.what());
     return 1;

@@ -1,4 +1,4 @@
-// libFuzzer target: reading a recording (tools/plexus/recording.cpp) and everything `plexus
+// libFuzzer target: reading a SQLite recording (tools/plexus/sqlite_recording.cpp) and everything `plexus
 // replay` decides from it before it publishes (tools/plexus/replay_plan.cpp): the topics,
 // their types and recorded QoS, the --summary, each sample's CDR decode, the times it is due
 // at and its shifted header times.
@@ -7,7 +7,7 @@
 //   byte 0 even   the rest is the file, byte for byte (a valid recording's bytes, mutated:
 //                 a truncated or corrupted SQLite file)
 //   byte 0 odd    the rest drives FuzzedDataProvider to write a recording: through
-//                 RecordingWriter (the real schema) or through SQL with no column types or
+//                 SqliteRecordingWriter (the real schema) or through SQL with no column types or
 //                 constraints (a file from another tool), with topics of known or unknown
 //                 types, recorded QoS JSON, messages with any times and CDR bytes; then up to
 //                 four bytes of the file are overwritten
@@ -34,8 +34,8 @@
 #include "fuzz_support.hpp"
 #include "plexus/base/input_error.hpp"
 #include "plexus/msg/messages.hpp"
-#include "recording.hpp"
-#include "replay_plan.hpp"
+#include "replay_checks.hpp"
+#include "sqlite_recording.hpp"
 
 namespace {
 
@@ -91,10 +91,10 @@ std::vector<unsigned char> cdr(FuzzedDataProvider& in) {
   return b;
 }
 
-/// Through RecordingWriter: the schema plexus record writes. False if the writer refused.
+/// Through SqliteRecordingWriter: the schema plexus record --format sqlite writes. False if the writer refused.
 bool write_with_writer(FuzzedDataProvider& in) {
   try {
-    cli::RecordingWriter w(recording_path());
+    cli::SqliteRecordingWriter w(recording_path());
     std::vector<int64_t> ids;
     const int topics = in.ConsumeIntegralInRange(0, 4);
     for (int i = 0; i < topics; ++i) {
@@ -218,61 +218,6 @@ void corrupt(FuzzedDataProvider& in) {
   }
 }
 
-void check_duration(double s) { CHECK(std::isfinite(s) && (s == 0.0 || (s >= 1e-9 && s <= 1e9))); }
-
-/// What replay does with the file, up to the first DDS call.
-void read_as_replay() {
-  const std::string& path = recording_path();
-  const cli::RecordingReader rec(path);
-  CHECK(rec.message_count() >= 0);
-  const auto summary = cli::summarize_recording(rec);
-  CHECK(summary.size() == rec.topics().size());
-  for (const auto& s : summary) CHECK(s.count == 0 || s.first_ns <= s.last_ns);
-
-  for (const bool restamp : {false, true}) {
-    const auto plan = cli::plan_replay_topics(rec, path, {}, nullptr, restamp);
-    CHECK(plan.size() == rec.topics().size());
-    std::map<int64_t, const cli::ReplayTopic*> by_id;
-    for (const auto& t : plan) {
-      CHECK(t.ts != nullptr);
-      CHECK(t.qos.depth >= 1 && t.qos.depth <= 100000);
-      for (double d : {t.qos.max_blocking_time_s, t.qos.deadline_s, t.qos.liveliness_lease_s, t.qos.lifespan_s,
-                       t.qos.latency_budget_s})
-        check_duration(d);
-      by_id[t.topic.id] = &t;
-    }
-    bool first = true;
-    int64_t t0 = 0, shift = 0;
-    rec.for_each([&](const cli::RecordedMessage& m) {
-      CHECK(m.receive_time_ns >= 0);
-      if (first) {
-        first = false;
-        t0 = m.receive_time_ns;
-        shift = 1'763'000'000'000'000'000 - t0;  // a replay in November 2025
-      }
-      CHECK(m.receive_time_ns >= t0);
-      for (const double scale : {1e-3, 1.0, 1000.0}) CHECK(cli::replay_due_ns(m.receive_time_ns, t0, scale) >= 0);
-      const auto it = by_id.find(m.topic_id);
-      CHECK(it != by_id.end());
-      const msg::TypeSupport& ts = *it->second->ts;
-      void* sample = ts.create();
-      if (ts.deserialize(m.cdr.data(), m.cdr.size(), sample) && ts.header) {
-        int64_t out = 0;
-        const msg::StampHeader& h = *ts.header(sample);
-        (void)cli::shift_time(h.origin_time_ns(), shift, out);
-        (void)cli::shift_time(h.data_time_ns(), shift, out);
-      }
-      ts.destroy(sample);
-      return true;
-    });
-  }
-  // Replaying one topic (--topics NAME) plans that topic alone.
-  if (!rec.topics().empty()) {
-    const auto one = cli::plan_replay_topics(rec, path, {rec.topics().front().name}, nullptr, false);
-    CHECK(one.size() == 1 && one.front().topic.id == rec.topics().front().id);
-  }
-}
-
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
@@ -290,7 +235,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
     corrupt(in);
   }
   try {
-    read_as_replay();
+    const cli::SqliteRecordingReader rec(recording_path());
+    plexus::fuzz::read_as_replay(rec, recording_path());
   } catch (const plexus::InputError& e) {
     plexus::fuzz::check_one_line(e.what());
     const std::string what = e.what();

@@ -4,7 +4,7 @@
 set -eu
 bin=$1 vendor=$2 domain=$3 work=$4
 mkdir -p "$work"
-f=$work/demo.sqlite
+f=$work/demo.mcap
 "$bin/demo_node" echo --dds "$vendor" --domain "$domain" --duration 30 &
 echo_pid=$!
 "$bin/plexus" record --dds "$vendor" --domain "$domain" --topics demo/ping,demo/pong -o "$f" --count 400 --duration 25 --wait 10 &

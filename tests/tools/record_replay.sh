@@ -2,13 +2,16 @@
 # record_replay.sh BIN_DIR VENDOR DOMAIN WORK_DIR [REPLAY_ARGS...]: records 50 samples of a
 # live topic, replays them (--verbatim, then REPLAY_ARGS: default `--rate-scale 2`) while
 # recording again, and checks that both recordings hold the same samples (same count and
-# CDR digest per topic, from `plexus replay --summary`).
+# CDR digest per topic, from `plexus replay --summary`). EXT=sqlite: SQLite recordings
+# (default mcap).
 set -eu
 bin=$1 vendor=$2 domain=$3 work=$4
 shift 4
 [ $# -gt 0 ] || set -- --rate-scale 2
 mkdir -p "$work"
-a=$work/a.sqlite b=$work/b.sqlite
+ext=${EXT:-mcap}
+a=$work/a.$ext b=$work/b.$ext
+rm -f "$a" "$b"
 "$bin/topic_peer" pub --dds "$vendor" --domain "$domain" --topic tools/replayed --profile sensor_reliable --rate 100 --count 50 --duration 30 --wait-reader &
 peer=$!
 "$bin/plexus" record --dds "$vendor" --domain "$domain" --topics tools/replayed -o "$a" --count 50 --duration 25 --wait 10

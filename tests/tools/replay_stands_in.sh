@@ -10,10 +10,10 @@ plexus=$1 scenario=$2 vendor=$3 replay_vendor=$4 domain=$5 work=$6
 rm -rf "$work"
 mkdir -p "$work"
 set -- --set duration=101 --domain "$domain" --dds "$vendor" --quiet --json
-"$plexus" launch "$scenario" "$@" --record "$work/rec.sqlite" --out "$work/recorded" > "$work/recorded.json" || {
+"$plexus" launch "$scenario" "$@" --record "$work/rec.mcap" --out "$work/recorded" > "$work/recorded.json" || {
   echo "the recording launch failed"; exit 1; }
 "$plexus" replay --lockstep --dds "$replay_vendor" --domain "$domain" --wait 30 \
-  --topics r1/truth/state,r1/position "$work/rec.sqlite" > "$work/replay.log" 2>&1 &
+  --topics r1/truth/state,r1/position "$work/rec.mcap" > "$work/replay.log" 2>&1 &
 replay=$!
 "$plexus" launch "$scenario" "$@" --external plant_simulator --out "$work/replayed" > "$work/replayed.json"
 rc=$?

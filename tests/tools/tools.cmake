@@ -121,8 +121,8 @@ add_test(NAME tools.missing_run_file COMMAND ${EXPECT} 2 "/nonexistent/run.sqlit
          ${PLEXUS_CLI} latency pipeline /nonexistent/run.sqlite)
 add_test(NAME tools.replay_missing_file COMMAND ${EXPECT} 2 "/nonexistent/run.sqlite: no such file"
          ${PLEXUS_CLI} replay /nonexistent/run.sqlite)
-add_test(NAME tools.record_bad_file COMMAND ${EXPECT} 2 "/nonexistent/dir/x.sqlite: cannot create recording"
-         ${PLEXUS_CLI} record -o /nonexistent/dir/x.sqlite --domain 214)
+add_test(NAME tools.record_bad_file COMMAND ${EXPECT} 2 "/nonexistent/dir/x.mcap: cannot create recording"
+         ${PLEXUS_CLI} record -o /nonexistent/dir/x.mcap --domain 214)
 add_test(NAME tools.bad_loop_rate COMMAND ${EXPECT} 2 "--rate: must be in \\(0, 100000\\] Hz"
          ${PLEXUS_CLI} latency loop --rate 0)
 add_test(NAME tools.bad_loop_rounds COMMAND ${EXPECT} 2 "--rounds: must be in 1..100 and at most rate x duration \\(10\\)"
@@ -136,8 +136,8 @@ add_test(NAME tools.bad_peer_vendor COMMAND ${EXPECT} 2 "--peer-dds: unknown DDS
 set(CIRCLE ${PROJECT_SOURCE_DIR}/deploy/scenarios/unicycle_circle.yaml)
 add_test(NAME tools.launch_unknown_external COMMAND ${EXPECT} 2 "--external plant: no such process"
          ${PLEXUS_CLI} launch ${CIRCLE} --external plant --domain 225)
-add_test(NAME tools.launch_record_bad_file COMMAND ${EXPECT} 2 "/nonexistent/dir/x.sqlite: cannot create recording"
-         ${PLEXUS_CLI} launch ${CIRCLE} --record /nonexistent/dir/x.sqlite --domain 225)
+add_test(NAME tools.launch_record_bad_file COMMAND ${EXPECT} 2 "/nonexistent/dir/x.mcap: cannot create recording"
+         ${PLEXUS_CLI} launch ${CIRCLE} --record /nonexistent/dir/x.mcap --domain 225)
 set_tests_properties(tools.bad_topic_type tools.bad_vendor tools.missing_run_file tools.replay_missing_file
                      tools.record_bad_file tools.bad_loop_rate tools.bad_loop_rounds tools.bad_pingpong_size tools.unknown_profile
                      tools.bad_peer_vendor tools.launch_unknown_external tools.launch_record_bad_file
@@ -172,3 +172,4 @@ add_test(NAME cli.scenario_loop_bad_deadline COMMAND ${EXPECT} 2 "loops.l.deadli
          ${PLEXUS_CLI} sim ${PATH_CIRCLE} --quiet "--set" "loops.l.members=[r1, observer]" --set loops.l.deadline=0)
 set_tests_properties(cli.scenario_loop_unknown_member cli.scenario_loop_one_member cli.scenario_loop_member_elsewhere
                      cli.scenario_loop_bad_deadline PROPERTIES LABELS "cli")
+include(${CMAKE_CURRENT_LIST_DIR}/recordings.cmake)

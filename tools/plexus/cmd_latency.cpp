@@ -257,7 +257,7 @@ int run_pipeline(const PipeOpts& o) {
   if (o.live) {
     rt::parse_vendor(o.dds.dds);
     if (!(o.duration > 0)) throw InputError("--duration: must be > 0 seconds");
-    file = temp_path("pipeline") + ".sqlite";
+    file = temp_path("pipeline") + ".mcap";
     temp = true;
     std::vector<std::string> args = {"record",
                                      "-o",
@@ -280,7 +280,11 @@ int run_pipeline(const PipeOpts& o) {
     throw InputError("RUN: a recording file (plexus record) is required, or --live");
   }
   make_out_dir(o.out);
-  RecordingReader rec(file);
+  const auto opened = open_recording(file);
+  const RecordingReader& rec = *opened;
+  if (!rec.cut_short().empty())
+    std::fprintf(stderr, "plexus latency pipeline: warning: %s: %s; using the %lld samples before the cut\n", file.c_str(),
+                 rec.cut_short().c_str(), static_cast<long long>(rec.message_count()));
   struct T {
     std::string name;
     std::vector<double> to_publish, transport, to_receive;

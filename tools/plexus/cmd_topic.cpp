@@ -11,6 +11,7 @@
 #include "plexus/base/clock.hpp"
 #include "plexus/base/input_error.hpp"
 #include "plexus/msg/messages.hpp"
+#include "recording.hpp"
 #include "topic_discovery.hpp"
 
 namespace plexus::cli {
@@ -19,7 +20,7 @@ namespace {
 struct TopicOpts {
   DdsOptions dds;
   double wait = -1;  ///< -1: not given (list/info 2 s; echo/hz up to 5 s for the first writer)
-  std::string topic, type, qos_file, profile;
+  std::string topic, type, qos_file, profile, recording;
   int count = 0;
   double duration = 0;
   bool json = false, csv = false;
@@ -107,37 +108,93 @@ int run_list(const TopicOpts& o) {
   return 0;
 }
 
-int run_echo(const TopicOpts& o) {
-  check_common(o);
-  if (o.csv && o.json) throw InputError("--csv and --json: choose one");
-  auto p = make_participant(o.dds, "plexus_topic_echo", "plexus_topic");
-  std::vector<rt::EndpointQos> writers;
-  const auto& ts = resolve_topic_type(*p, o.topic, o.type, o.wait < 0 ? 5.0 : o.wait, &writers);
-  auto reader = p->make_reader(ts, o.topic, subscriber_qos(o.qos_file, o.profile, writers, 100));
-  bool header_done = false;
-  std::vector<std::pair<std::string, std::string>> cells;
-  read_samples(*reader, ts, o, [&](const void* s, const rt::SampleMeta& meta) {
-    if (!s) return;
+/// Prints samples as `topic echo` does: indented JSON, one JSON line each, or CSV rows.
+class EchoPrinter {
+ public:
+  explicit EchoPrinter(const TopicOpts& o) : o_(o) {}
+  void print(const msg::TypeSupport& ts, const void* s, int64_t receive_time_ns) {
     const auto j = ts.to_json(s);
-    if (o.csv) {
-      cells.clear();
-      cells.emplace_back("receive_time_ns", std::to_string(meta.receive_time_ns));
-      flatten(j, "", cells);
+    if (o_.csv) {
+      cells_.clear();
+      cells_.emplace_back("receive_time_ns", std::to_string(receive_time_ns));
+      flatten(j, "", cells_);
       std::string line;
-      if (!header_done) {
-        for (const auto& c : cells) line += (line.empty() ? "" : ",") + c.first;
+      if (!header_done_) {
+        for (const auto& c : cells_) line += (line.empty() ? "" : ",") + c.first;
         std::printf("%s\n", line.c_str());
-        header_done = true;
+        header_done_ = true;
         line.clear();
       }
-      for (const auto& c : cells) line += (line.empty() ? "" : ",") + c.second;
+      for (const auto& c : cells_) line += (line.empty() ? "" : ",") + c.second;
       std::printf("%s\n", line.c_str());
-    } else if (o.json) {
+    } else if (o_.json) {
       std::printf("%s\n", j.dump().c_str());
     } else {
       std::printf("%s\n---\n", j.dump(2).c_str());
     }
     std::fflush(stdout);
+  }
+
+ private:
+  const TopicOpts& o_;
+  bool header_done_ = false;
+  std::vector<std::pair<std::string, std::string>> cells_;
+};
+
+/// topic echo TOPIC --recording FILE: the topic's samples from a recording (MCAP or SQLite),
+/// in receive-time order, printed as a live echo prints them.
+int run_echo_recording(const TopicOpts& o) {
+  const auto rec = open_recording(o.recording);
+  const RecordedTopic* topic = nullptr;
+  std::string names;
+  for (const auto& t : rec->topics()) {
+    if (t.name == o.topic) topic = &t;
+    names += (names.empty() ? "" : ", ") + t.name;
+  }
+  if (!topic) throw InputError("--recording: topic '" + o.topic + "' is not in " + o.recording + " (topics: " + names + ")");
+  const msg::TypeSupport* ts = msg::find_type_support(topic->type);
+  if (!ts) throw InputError(o.recording + ": topic '" + o.topic + "' has type '" + topic->type + "', unknown to this build");
+  if (!rec->cut_short().empty())
+    std::fprintf(stderr, "plexus topic echo: warning: %s: %s; printing the samples before the cut\n", o.recording.c_str(),
+                 rec->cut_short().c_str());
+  EchoPrinter printer(o);
+  void* sample = ts->create();
+  int n = 0;
+  uint64_t bad = 0;
+  const int64_t end = o.duration > 0 ? static_cast<int64_t>(o.duration * 1e9) : INT64_MAX;  // of recorded time
+  int64_t first = -1;
+  try {
+    rec->for_each([&](const RecordedMessage& m) {
+      if (m.topic_id != topic->id) return true;
+      if (first < 0) first = m.receive_time_ns;
+      if (m.receive_time_ns - first > end || g_stop) return false;
+      if (!ts->deserialize(m.cdr.data(), m.cdr.size(), sample)) {
+        ++bad;
+        return true;
+      }
+      printer.print(*ts, sample, m.receive_time_ns);
+      return o.count == 0 || ++n < o.count;
+    });
+  } catch (...) {
+    ts->destroy(sample);
+    throw;
+  }
+  ts->destroy(sample);
+  if (bad) std::fprintf(stderr, "plexus topic echo: %llu sample(s) of '%s' did not decode\n", static_cast<unsigned long long>(bad), o.topic.c_str());
+  return bad ? 1 : 0;
+}
+
+int run_echo(const TopicOpts& o) {
+  check_common(o);
+  if (o.csv && o.json) throw InputError("--csv and --json: choose one");
+  if (!o.recording.empty()) return run_echo_recording(o);
+  auto p = make_participant(o.dds, "plexus_topic_echo", "plexus_topic");
+  std::vector<rt::EndpointQos> writers;
+  const auto& ts = resolve_topic_type(*p, o.topic, o.type, o.wait < 0 ? 5.0 : o.wait, &writers);
+  auto reader = p->make_reader(ts, o.topic, subscriber_qos(o.qos_file, o.profile, writers, 100));
+  EchoPrinter printer(o);
+  read_samples(*reader, ts, o, [&](const void* s, const rt::SampleMeta& meta) {
+    if (s) printer.print(ts, s, meta.receive_time_ns);
   });
   return 0;
 }
@@ -314,6 +371,9 @@ Command add_topic_command(CLI::App& root) {
   auto* echo = c.app->add_subcommand("echo", "Print the samples of a topic");
   common(echo, true);
   echo->add_flag("--csv", o->csv, "CSV output: a header row, then one row per sample");
+  echo->add_option("--recording", o->recording,
+                   "print the topic's samples from this recording (MCAP or SQLite) instead of the live domain; "
+                   "--duration counts recorded time");
   auto* hz = c.app->add_subcommand("hz", "Receive rate of a topic");
   common(hz, true);
   hz->add_option("--window", o->window_s, "seconds per printed window")->capture_default_str();

@@ -17,6 +17,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 tools/setup/install_deps.sh
+tools/setup/install_npm.sh  # third-party readers the ecosystem tests check plexus's files with
 start=$(date +%s)
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j2

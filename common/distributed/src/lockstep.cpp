@@ -265,6 +265,8 @@ scenario::RunLog LockstepClock::run(const std::atomic<bool>& stop, const scenari
   msg::ClockStep tick;
   SignalSample sample;
   rt::SampleMeta meta;
+  if (tap)
+    for (auto& sub : m.subs) sub->keep_raw();  // the tap gets the bytes as received
   for (int64_t k = 0; k <= m.sc.steps; ++k) {
     if (stop.load(std::memory_order_relaxed)) throw LockstepError("lockstep: stopped at " + step_text(k));
     tick.step_index(static_cast<uint64_t>(k));
@@ -281,7 +283,7 @@ scenario::RunLog LockstepClock::run(const std::atomic<bool>& stop, const scenari
       for (;;) {
         if (const void* in = m.subs[s]->take(&meta)) {
           m.note_response(s, m.subs[s]->header().publish_time_ns() - published);
-          if (tap) tap(s, m.subs[s]->wire().support(), in, meta);
+          if (tap) tap(s, m.subs[s]->wire().support(), in, meta, m.subs[s]->raw());
           if (!m.guard.accept(m.subs[s]->wire(), in, sample))
             throw LockstepError("lockstep: refused the sample of '" + signals[s].name + "' from '" +
                                 signals[s].producer + "' for " + step_text(k) + " (reason logged above)");

@@ -183,6 +183,10 @@ WireSubscriber::WireSubscriber(rt::Participant& p, const scenario::SignalSpec& s
       msg_(wire_.make_message()) {}
 
 const void* WireSubscriber::take(rt::SampleMeta* meta) {
+  if (keep_raw_) {
+    if (raw_.capacity() < wire_.support().max_cdr_size) raw_.reserve(wire_.support().max_cdr_size);
+    return reader_->take_raw(msg_.get(), raw_, meta) ? msg_.get() : nullptr;
+  }
   return reader_->take(msg_.get(), meta) ? msg_.get() : nullptr;
 }
 

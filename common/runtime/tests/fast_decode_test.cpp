@@ -82,6 +82,7 @@ TEST(Subscriber, TakeLatestKeepsTheNewestValidSample) {
       }
       return false;
     }
+    bool take_raw(void* sample, std::vector<unsigned char>&, SampleMeta* meta) override { return take(sample, meta); }
     bool wait(int64_t) override { return !queue.empty(); }
     int matched_count() const override { return 1; }
     uint64_t malformed_count() const override { return 0; }

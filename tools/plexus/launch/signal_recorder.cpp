@@ -1,5 +1,8 @@
 #include "signal_recorder.hpp"
 
+#include <chrono>
+
+#include "plexus/base/clock.hpp"
 #include "plexus/base/input_error.hpp"
 #include "plexus/distributed/wire.hpp"
 #include "plexus/msg/messages.hpp"
@@ -7,7 +10,12 @@
 
 namespace plexus::cli {
 
-SignalRecorder::SignalRecorder(const std::string& path, const rt::QosProfile& qos) : file_(path) {
+SignalRecorder::SignalRecorder(const std::string& path, const rt::QosProfile& qos) : path_(path) {
+  RecordingOptions o;
+  o.format = recording_format(path, "");
+  o.library = std::string("plexus ") + PLEXUS_VERSION;
+  o.metadata = {{"recorder", "plexus launch --record"}, {"version", PLEXUS_VERSION}};
+  file_ = make_recording_writer(path, o);
   rt::EndpointQos q;
   q.reliability = qos.reliability;
   q.durability = qos.durability;
@@ -17,32 +25,62 @@ SignalRecorder::SignalRecorder(const std::string& path, const rt::QosProfile& qo
   qos_json_ = qos_to_json(q).dump();
 }
 
+SignalRecorder::~SignalRecorder() {
+  stop_thread();
+  try {
+    if (!failed_) {
+      queue_.take(batch_);
+      file_->insert(batch_);
+    }
+  } catch (const std::exception&) {
+  }
+  // file_'s destructor: MCAP closes the file as it is; SQLite leaves none.
+}
+
+void SignalRecorder::stop_thread() {
+  stop_ = true;
+  if (thread_.joinable()) thread_.join();
+}
+
 distributed::LockstepClock::SampleTap SignalRecorder::tap(const std::vector<scenario::SignalSpec>& signals) {
   topic_ids_.clear();
   for (const auto& s : signals) {
     const distributed::WireType* type = distributed::find_wire_type(s.message);
     if (!type) throw InputError("--record: signal '" + s.name + "' has no IDL message type");
-    topic_ids_.push_back(file_.add_topic(distributed::signal_topic(s.name), type->support->type_name, qos_json_));
+    topic_ids_.push_back(file_->add_topic(distributed::signal_topic(s.name), *type->support, qos_json_));
   }
-  return [this](std::size_t signal, const msg::TypeSupport& ts, const void* m, const rt::SampleMeta& meta) {
-    const msg::StampHeader& h = *ts.header(const_cast<void*>(m));
-    RecordedMessage r;
-    r.topic_id = topic_ids_.at(signal);
-    r.receive_time_ns = meta.receive_time_ns;
-    r.seq_num = static_cast<int64_t>(h.seq_num());
-    r.data_time_ns = h.data_time_ns();
-    r.origin_time_ns = h.origin_time_ns();
-    r.publish_time_ns = h.publish_time_ns();
-    r.cdr.resize(ts.max_cdr_size);
-    r.cdr.resize(ts.serialize(m, r.cdr.data(), r.cdr.size()));
-    taken_.push_back(std::move(r));
+  thread_ = std::thread([this] {
+    int64_t next_flush = monotonic_ns() + 1'000'000'000;
+    SampleBatch batch;
+    try {
+      while (!stop_) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        queue_.take(batch);
+        file_->insert(batch);
+        if (monotonic_ns() >= next_flush) {
+          file_->flush();  // at most a second of the run is lost if the launcher is killed
+          next_flush += 1'000'000'000;
+        }
+      }
+    } catch (...) {
+      error_ = std::current_exception();
+      failed_ = true;
+    }
+  });
+  return [this](std::size_t signal, const msg::TypeSupport& ts, const void* m, const rt::SampleMeta& meta,
+                const std::vector<unsigned char>& cdr) {
+    if (failed_.load(std::memory_order_relaxed)) return;  // write() reports the error
+    queue_.push(topic_ids_.at(signal), meta.receive_time_ns, ts.header(const_cast<void*>(m)), cdr.data(), cdr.size());
   };
 }
 
 std::size_t SignalRecorder::write() {
-  file_.insert(taken_);
-  file_.commit();  // the run ended: the recording replaces any file at its path
-  return taken_.size();
+  stop_thread();
+  if (error_) std::rethrow_exception(error_);
+  queue_.take(batch_);
+  file_->insert(batch_);
+  file_->commit();  // the run ended: the recording is complete
+  return queue_.pushed();
 }
 
 }  // namespace plexus::cli

@@ -1,36 +1,55 @@
 // plexus launch --record FILE: every signal sample the lockstep clock takes, written as a
-// plexus recording (recording.hpp) of the signals' typed topics, so `plexus replay
-// --lockstep` can later stand in for any producer (`plexus launch --external`).
+// plexus recording (recording.hpp; MCAP unless the file is named *.sqlite) of the signals'
+// typed topics, so `plexus replay --lockstep` can later stand in for any producer
+// (`plexus launch --external`), and Foxglove or any MCAP reader can open the run.
 //
 // The clock sees every sample of every step, so nothing is lost to a late-joining
-// recorder (which a separate `plexus record` could suffer in a fast lockstep run).
-// Samples are kept in memory during the run and written when it ends.
+// recorder (which a separate `plexus record` could suffer in a fast lockstep run). The
+// clock's thread only copies each sample's CDR as received into a queue (sample_queue.hpp);
+// a thread of the recorder writes the queue to the file every 50 ms and ends an MCAP chunk
+// every second, so a launcher killed mid-run leaves a recording readable up to then.
 #pragma once
 
+#include <atomic>
+#include <exception>
+#include <memory>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "plexus/distributed/lockstep.hpp"
 #include "recording.hpp"
+#include "sample_queue.hpp"
 
 namespace plexus::cli {
 
 class SignalRecorder {
  public:
-  /// Creates `path` now (InputError if it cannot be created). `qos`: the signals' profile,
-  /// stored as the recorded writers' QoS so a replay publishes them the same way.
+  /// Checks now that `path` can be created (InputError if not). `qos`: the signals'
+  /// profile, stored as the recorded writers' QoS so a replay publishes them the same way.
   SignalRecorder(const std::string& path, const rt::QosProfile& qos);
+  /// A run that failed: what was recorded is written and the file closed as far as it got.
+  ~SignalRecorder();
 
-  /// The clock's tap: serialises each sample with its receive and header times.
+  /// The clock's tap: adds the signals' topics to the file and starts the writing thread.
   distributed::LockstepClock::SampleTap tap(const std::vector<scenario::SignalSpec>& signals);
-  /// Writes everything taken and commits the file (recording.hpp). Returns the number of samples.
+  /// Writes everything taken and completes the file (recording.hpp). Returns the number of
+  /// samples; rethrows a write error of the writing thread.
   std::size_t write();
 
  private:
-  RecordingWriter file_;
+  void stop_thread();
+
+  std::string path_;
+  std::unique_ptr<RecordingWriter> file_;
   std::string qos_json_;
   std::vector<int64_t> topic_ids_;  // by signal index
-  std::vector<RecordedMessage> taken_;
+  SampleQueue queue_;
+  SampleBatch batch_;
+  std::atomic<bool> stop_{false};
+  std::atomic<bool> failed_{false};
+  std::exception_ptr error_;
+  std::thread thread_;
 };
 
 }  // namespace plexus::cli

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "plexus/base/input_error.hpp"
-#include "recording.hpp"
+#include "sqlite_recording.hpp"
 #include "replay_plan.hpp"
 
 namespace plexus::cli {
@@ -54,7 +54,7 @@ class Recording : public ::testing::Test {
 
   std::string read_all() {
     return error_of([&] {
-      RecordingReader r(path_);
+      SqliteRecordingReader r(path_);
       r.for_each([](const RecordedMessage&) { return true; });
     });
   }
@@ -64,7 +64,7 @@ class Recording : public ::testing::Test {
 
 TEST_F(Recording, WrittenMessagesReadBackInReceiveOrder) {
   {
-    RecordingWriter w(path_);
+    SqliteRecordingWriter w(path_);
     const int64_t id = w.add_topic("r1/position", "plexus::msg::PositionMeasurement", "");
     RecordedMessage a, b;
     a.topic_id = b.topic_id = id;
@@ -75,7 +75,7 @@ TEST_F(Recording, WrittenMessagesReadBackInReceiveOrder) {
     w.insert({a, b});
     w.commit();
   }
-  RecordingReader r(path_);
+  SqliteRecordingReader r(path_);
   ASSERT_EQ(r.topics().size(), 1u);
   EXPECT_EQ(r.topics()[0].name, "r1/position");
   EXPECT_EQ(r.message_count(), 2);
@@ -95,18 +95,17 @@ TEST_F(Recording, WrittenMessagesReadBackInReceiveOrder) {
 // A NULL name must not be read as a null char* into std::string (a crash).
 TEST_F(Recording, TopicWithoutANameOrTypeIsRefused) {
   sql("INSERT INTO topics VALUES(1, NULL, 'plexus::msg::Pose2D', '');");
-  EXPECT_EQ(error_of([&] { RecordingReader r(path_); }),
-            path_ + ": not a plexus recording: topic 1 without a name or a type");
+  EXPECT_EQ(error_of([&] { SqliteRecordingReader r(path_); }), path_ + ": not a plexus recording: topic 1 without a name or a type");
 }
 
 TEST_F(Recording, TopicTwiceIsRefused) {
   sql("INSERT INTO topics VALUES(1, 't', 'x', ''); INSERT INTO topics VALUES(2, 't', 'x', '');");
-  EXPECT_EQ(error_of([&] { RecordingReader r(path_); }), path_ + ": not a plexus recording: topic 't' twice");
+  EXPECT_EQ(error_of([&] { SqliteRecordingReader r(path_); }), path_ + ": not a plexus recording: topic 't' twice");
 }
 
 TEST_F(Recording, TopicIdTwiceIsRefused) {
   sql("INSERT INTO topics VALUES(1, 'a', 'x', ''); INSERT INTO topics VALUES(1, 'b', 'x', '');");
-  EXPECT_EQ(error_of([&] { RecordingReader r(path_); }), path_ + ": not a plexus recording: topic id 1 twice");
+  EXPECT_EQ(error_of([&] { SqliteRecordingReader r(path_); }), path_ + ": not a plexus recording: topic id 1 twice");
 }
 
 TEST_F(Recording, MessageRowsAreChecked) {

@@ -153,12 +153,21 @@ class CycloneReader final : public ReaderBackend {
     dds_waitset_attach(waitset_, readcond_, 0);
   }
 
-  bool take(void* sample, SampleMeta* meta) override {
+  bool take(void* sample, SampleMeta* meta) override { return take_into(sample, nullptr, meta); }
+  bool take_raw(void* sample, std::vector<unsigned char>& cdr, SampleMeta* meta) override {
+    return take_into(sample, &cdr, meta);
+  }
+  // The serdata taken is the CDR as received (cdr_sertype.cpp): `cdr` gets a copy of it.
+  bool take_into(void* sample, std::vector<unsigned char>* cdr, SampleMeta* meta) {
     for (;;) {
       struct ddsi_serdata* sd = nullptr;
       dds_sample_info_t info;
       if (dds_takecdr(reader_, &sd, 1, &info, DDS_ANY_STATE) <= 0) return false;
       const bool ok = info.valid_data && detail::serdata_to_sample(sd, sample);
+      if (ok && cdr) {
+        cdr->resize(ddsi_serdata_size(sd));
+        ddsi_serdata_to_ser(sd, 0, cdr->size(), cdr->data());
+      }
       ddsi_serdata_unref(sd);
       if (!info.valid_data) continue;  // dispose / unregister notifications
       if (!ok) {

@@ -160,7 +160,14 @@ class FastReader final : public ReaderBackend, public fdds::DataReaderListener {
   }
   void attach(fdds::DataReader* r) { reader_ = r; }
 
-  bool take(void* sample, SampleMeta* meta) override {
+  bool take(void* sample, SampleMeta* meta) override { return take_into(sample, meta); }
+  bool take_raw(void* sample, std::vector<unsigned char>& cdr, SampleMeta* meta) override {
+    // Fast DDS decodes on this thread, inside take_next_sample: the checked type copies the
+    // payload it decodes (the CDR as received) into `cdr` (checked_fast_type.hpp).
+    const msg::FastRawCapture capture(cdr);
+    return take_into(sample, meta);
+  }
+  bool take_into(void* sample, SampleMeta* meta) {
     fdds::SampleInfo info;
     msg::take_fast_decode_failure();  // a stale flag of this thread is not ours
     while (reader_->take_next_sample(sample, &info) == eprosima::fastrtps::types::ReturnCode_t::RETCODE_OK) {

@@ -16,12 +16,30 @@
 #include <fastdds/dds/topic/TopicDataType.hpp>
 
 #include <exception>
+#include <vector>
 
 namespace plexus::msg {
 
 namespace detail {
 inline thread_local bool fast_decode_failed = false;
+inline thread_local std::vector<unsigned char>* fast_raw_capture = nullptr;
 }  // namespace detail
+
+/// While one exists, every Fast DDS decode on this thread first copies the serialized
+/// payload it decodes (encapsulation header included: the bytes as received) into `into`,
+/// so a reader's take can hand over the sample and its CDR (rt::ReaderBackend::take_raw).
+class FastRawCapture {
+ public:
+  explicit FastRawCapture(std::vector<unsigned char>& into) : previous_(detail::fast_raw_capture) {
+    detail::fast_raw_capture = &into;
+  }
+  ~FastRawCapture() { detail::fast_raw_capture = previous_; }
+  FastRawCapture(const FastRawCapture&) = delete;
+  FastRawCapture& operator=(const FastRawCapture&) = delete;
+
+ private:
+  std::vector<unsigned char>* previous_;
+};
 
 /// True if a Fast DDS decode in this thread failed since the last call; clears the flag.
 inline bool take_fast_decode_failure() {
@@ -34,6 +52,7 @@ template <class GeneratedPubSubType>
 class CheckedPubSubType final : public GeneratedPubSubType {
  public:
   bool deserialize(eprosima::fastrtps::rtps::SerializedPayload_t* payload, void* data) override {
+    if (auto* capture = detail::fast_raw_capture) capture->assign(payload->data, payload->data + payload->length);
     bool ok = false;
     try {
       ok = GeneratedPubSubType::deserialize(payload, data);

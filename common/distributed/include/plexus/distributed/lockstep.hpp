@@ -100,9 +100,9 @@ class LockstepClock {
   void wait_ready(int hosts, double timeout_s, const std::atomic<bool>& stop);
 
   /// Called with every signal sample the clock takes (signal index, the message type, the
-  /// message as received, its metadata), for `plexus launch --record`.
-  using SampleTap =
-      std::function<void(std::size_t signal, const msg::TypeSupport& type, const void* message, const rt::SampleMeta&)>;
+  /// message as received, its metadata, its CDR as received), for `plexus launch --record`.
+  using SampleTap = std::function<void(std::size_t signal, const msg::TypeSupport& type, const void* message,
+                                       const rt::SampleMeta&, const std::vector<unsigned char>& cdr)>;
   /// Runs every step and returns the log (the same as `plexus sim`'s). Throws LockstepError.
   scenario::RunLog run(const std::atomic<bool>& stop, const scenario::StepObserver& observer = {},
                        const SampleTap& tap = {});

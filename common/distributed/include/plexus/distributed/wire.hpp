@@ -125,6 +125,10 @@ class WireSubscriber {
   WireSubscriber(rt::Participant& p, const scenario::SignalSpec& spec, int64_t step_ns, const rt::QosProfile& qos);
   /// Oldest unread message, or nullptr. Valid until the next take().
   const void* take(rt::SampleMeta* meta = nullptr);
+  /// From now on take() also keeps the message's CDR as received (rt::ReaderBackend::take_raw),
+  /// for a recorder: raw() holds it until the next take().
+  void keep_raw() { keep_raw_ = true; }
+  const std::vector<unsigned char>& raw() const { return raw_; }
   bool wait(int64_t timeout_ns) { return reader_->wait(timeout_ns); }
   int matched_count() const { return reader_->matched_count(); }
   const WireSignal& wire() const { return wire_; }
@@ -136,6 +140,8 @@ class WireSubscriber {
   WireSignal wire_;
   std::unique_ptr<rt::ReaderBackend> reader_;
   MessagePtr msg_;
+  bool keep_raw_ = false;
+  std::vector<unsigned char> raw_;
 };
 
 }  // namespace plexus::distributed

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <vector>
 
 namespace plexus::rt {
 
@@ -38,6 +39,11 @@ class ReaderBackend {
   /// Malformed data is dropped and counted, never returned; after false, `sample` may hold
   /// part of a dropped one (it is decoded in place): read it only after true.
   virtual bool take(void* sample, SampleMeta* meta) = 0;
+  /// As take(), and copies the sample's serialized form as it arrived into `cdr`: XCDR1
+  /// with its 4-byte encapsulation header, the bytes that were on the wire, nothing
+  /// re-encoded (recorders keep exactly these). `cdr` is resized to fit; it does not
+  /// allocate once its capacity reached the type's size.
+  virtual bool take_raw(void* sample, std::vector<unsigned char>& cdr, SampleMeta* meta) = 0;
   /// Blocks until data is available or `timeout_ns` passes. True if data is available.
   virtual bool wait(int64_t timeout_ns) = 0;
   /// Receive-thread delivery (opt-in): `fn` is called on the vendor's own thread as data
