@@ -7,11 +7,14 @@
 # (`plexus topic echo --recording --json`, the first 25 samples of every topic).
 # Needs the npm packages of tests/ecosystem (tools/setup/install_npm.sh).
 set -euo pipefail
-plexus=$1 vendor=$2 domain=$3 out=$4 seconds=${5:-4}
+plexus=$1 vendor=$2 domain=$3 out=$4 seconds=${5:-10}
+# The two "after 100 s" metrics start within a shortened run (as tests/repro/four_robots.sh --short).
+from=$((seconds > 1 ? seconds - 1 : 0))
 here=$(cd "$(dirname "$0")" && pwd)
 [ -d "$here/node_modules/@mcap/core" ] || { echo "npm packages missing: run tools/setup/install_npm.sh"; exit 1; }
 rm -rf "$out" && mkdir -p "$out/echo"
-"$plexus" launch "$here/../../deploy/scenarios/four_robots.yaml" --set duration="$seconds" --dds "$vendor" --domain "$domain" \
+"$plexus" launch "$here/../../deploy/scenarios/four_robots.yaml" --set duration="$seconds" \
+  --set metrics.0.from="$from" --set metrics.1.from="$from" --dds "$vendor" --domain "$domain" \
   --record "$out/run.mcap" --out "$out/run" --quiet > "$out/launch.log" 2>&1 || {
   rc=$?
   # The main job fails its paper expectations in a shortened run (exit 1): the recording is what is checked.

@@ -116,6 +116,7 @@ void Writer::add_metadata(const std::string& name, const std::map<std::string, s
 
 void Writer::write(uint16_t channel_id, uint32_t sequence, uint64_t log_time, uint64_t publish_time,
                    const unsigned char* data, std::size_t size) {
+  if (closed_) throw std::logic_error(path_ + ": message written after close()");
   if (channel_id >= channels_.size()) throw std::logic_error(path_ + ": message on a channel it never added");
   const uint64_t at = chunk_.size();
   Builder b(chunk_);
