@@ -4,8 +4,8 @@
 # checked), every channel's schema parsed with @foxglove/omgidl-parser, every message
 # decoded with @foxglove/omgidl-serialization; the counts must equal `plexus record info`'s
 # and the first samples of every topic `plexus topic echo --recording`'s. Both vendors.
-# Label `ecosystem`; the npm packages come from tools/setup/install_npm.sh. Domains 173-174.
-foreach(variant "fast;173" "cyclone;174")
+# Label `ecosystem`; the npm packages come from tools/setup/install_npm.sh. Domains 163-164.
+foreach(variant "fast;163" "cyclone;164")
   list(POP_FRONT variant vendor domain)
   add_test(NAME ecosystem.mcap_main_job_${vendor}
            COMMAND ${CMAKE_CURRENT_LIST_DIR}/mcap_main_job.sh $<TARGET_FILE:plexus> ${vendor} ${domain}

@@ -24,9 +24,9 @@
 #include <string>
 #include <vector>
 
+#include "mcap_recording.hpp"
 #include "plexus/distributed/wire.hpp"
 #include "plexus/msg/messages.hpp"
-#include "mcap_recording.hpp"
 #include "sqlite_recording.hpp"
 
 namespace {
@@ -153,9 +153,9 @@ void mcap_seeds(const fs::path& dir) {
   const fs::path file = fs::temp_directory_path() / "plexus_fuzz_seed.mcap";
   const auto& pos = msg::type_support<msg::PositionMeasurement>();
   const auto& beat = msg::type_support<msg::Heartbeat>();
-  for (const auto& [name, compression] : {std::pair{"zstd", plexus::mcap::Compression::zstd},
-                                          std::pair{"lz4", plexus::mcap::Compression::lz4},
-                                          std::pair{"none", plexus::mcap::Compression::none}}) {
+  for (const auto& [name, compression] :
+       {std::pair{"zstd", plexus::mcap::Compression::zstd}, std::pair{"lz4", plexus::mcap::Compression::lz4},
+        std::pair{"none", plexus::mcap::Compression::none}}) {
     std::vector<unsigned char> cut;
     {
       plexus::cli::RecordingOptions o;

@@ -69,24 +69,28 @@ void write_with_writer(FuzzedDataProvider& in) {
     const int n_channels = in.ConsumeIntegralInRange(0, 4);
     for (int i = 0; i < n_channels; ++i) {
       std::map<std::string, std::string> meta;
-      if (in.ConsumeBool()) meta["qos"] = in.ConsumeBool() ? R"({"reliability":"reliable","durability":"volatile"})"
-                                                          : in.ConsumeRandomLengthString(60);
+      if (in.ConsumeBool())
+        meta["qos"] = in.ConsumeBool() ? R"({"reliability":"reliable","durability":"volatile"})"
+                                       : in.ConsumeRandomLengthString(60);
       channels.push_back(w.add_channel(schemas[in.ConsumeIntegralInRange<std::size_t>(0, schemas.size() - 1)],
-                                       in.ConsumeRandomLengthString(20), in.ConsumeBool() ? "cdr" : in.ConsumeRandomLengthString(8),
-                                       meta));
+                                       in.ConsumeRandomLengthString(20),
+                                       in.ConsumeBool() ? "cdr" : in.ConsumeRandomLengthString(8), meta));
     }
     const int n_messages = channels.empty() ? 0 : in.ConsumeIntegralInRange(0, 64);
     for (int i = 0; i < n_messages; ++i) {
       const uint16_t c = channels[in.ConsumeIntegralInRange<std::size_t>(0, channels.size() - 1)];
-      const uint64_t t = in.ConsumeBool() ? in.ConsumeIntegralInRange<uint64_t>(1'700'000'000'000'000'000, 1'700'000'001'000'000'000)
-                                          : in.ConsumeIntegral<uint64_t>();
+      const uint64_t t = in.ConsumeBool()
+                             ? in.ConsumeIntegralInRange<uint64_t>(1'700'000'000'000'000'000, 1'700'000'001'000'000'000)
+                             : in.ConsumeIntegral<uint64_t>();
       std::vector<unsigned char> data = in.ConsumeBytes<unsigned char>(in.ConsumeIntegralInRange<std::size_t>(0, 200));
       if (in.ConsumeBool()) data.insert(data.begin(), {0x00, 0x01, 0x00, 0x00});
       w.write(c, in.ConsumeIntegral<uint32_t>(), t, in.ConsumeIntegral<uint64_t>(), data.data(), data.size());
       if (in.ConsumeProbability<float>() < 0.1f) w.flush();
     }
-    if (in.ConsumeBool()) w.close();
-    else w.flush();
+    if (in.ConsumeBool())
+      w.close();
+    else
+      w.flush();
   }  // a writer not closed closes here: the cut below makes the file one that was not
   std::error_code ec;
   const auto size = std::filesystem::file_size(file_path(), ec);

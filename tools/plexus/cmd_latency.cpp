@@ -283,8 +283,8 @@ int run_pipeline(const PipeOpts& o) {
   const auto opened = open_recording(file);
   const RecordingReader& rec = *opened;
   if (!rec.cut_short().empty())
-    std::fprintf(stderr, "plexus latency pipeline: warning: %s: %s; using the %lld samples before the cut\n", file.c_str(),
-                 rec.cut_short().c_str(), static_cast<long long>(rec.message_count()));
+    std::fprintf(stderr, "plexus latency pipeline: warning: %s: %s; using the %lld samples before the cut\n",
+                 file.c_str(), rec.cut_short().c_str(), static_cast<long long>(rec.message_count()));
   struct T {
     std::string name;
     std::vector<double> to_publish, transport, to_receive;

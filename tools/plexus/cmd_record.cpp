@@ -62,7 +62,8 @@ int run_record(const RecordOpts& o) {
   if (!(o.duration >= 0)) throw InputError("--duration: must be >= 0 seconds");
   if (o.count < 0) throw InputError("--count: must be >= 0");
   if (!(o.wait >= 0 && o.wait <= 600)) throw InputError("--wait: must be in 0..600 seconds");
-  if (!o.profile.empty()) rt::QosProfiles::load(o.qos_file.empty() ? rt::default_qos_file() : o.qos_file).get(o.profile);
+  if (!o.profile.empty())
+    rt::QosProfiles::load(o.qos_file.empty() ? rt::default_qos_file() : o.qos_file).get(o.profile);
   RecordingOptions wo = writer_options(o, "plexus record");
   wo.metadata["vendor"] = o.dds.dds;
   wo.metadata["domain"] = std::to_string(o.dds.domain);
@@ -194,7 +195,8 @@ int run_info(const RecordOpts& o) {
     j["channels"] = nlohmann::ordered_json::array();
     for (const auto& t : info.topics) {
       nlohmann::ordered_json c = {{"topic", t.name}, {"type", t.type}, {"messages", t.messages}};
-      c["qos"] = t.qos_json.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json::parse(t.qos_json, nullptr, false);
+      c["qos"] =
+          t.qos_json.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json::parse(t.qos_json, nullptr, false);
       j["channels"].push_back(c);
     }
     std::printf("%s\n", j.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace).c_str());
@@ -202,15 +204,16 @@ int run_info(const RecordOpts& o) {
   }
   std::printf("%s: %s, %s\n", o.file.c_str(), info.format == "mcap" ? "MCAP" : "SQLite (plexus-recording-1)",
               info.cut_short.empty() ? "complete" : ("CUT SHORT: " + info.cut_short).c_str());
-  std::printf("messages %llu on %zu topic(s), %.3f s", static_cast<unsigned long long>(info.messages), info.topics.size(),
-              static_cast<double>(info.end_ns - info.start_ns) * 1e-9);
+  std::printf("messages %llu on %zu topic(s), %.3f s", static_cast<unsigned long long>(info.messages),
+              info.topics.size(), static_cast<double>(info.end_ns - info.start_ns) * 1e-9);
   if (info.format == "mcap")
     std::printf(", %llu chunk(s) (%s), %llu schema(s)%s", static_cast<unsigned long long>(info.chunks),
                 info.compression.empty() ? "no chunks" : info.compression.c_str(),
                 static_cast<unsigned long long>(info.schemas), info.from_summary ? "; from the summary" : "; scanned");
   std::printf("\n");
   for (const auto& t : info.topics)
-    std::printf("  %-40s %-36s %8llu messages\n", t.name.c_str(), t.type.c_str(), static_cast<unsigned long long>(t.messages));
+    std::printf("  %-40s %-36s %8llu messages\n", t.name.c_str(), t.type.c_str(),
+                static_cast<unsigned long long>(t.messages));
   return 0;
 }
 
@@ -220,7 +223,8 @@ int run_convert(const RecordOpts& o) {
     throw InputError("record convert: " + o.out + " is the recording it reads; write another file");
   const auto in = open_recording(o.in);
   if (!in->cut_short().empty())
-    std::fprintf(stderr, "plexus record convert: %s: %s; converting what is there\n", o.in.c_str(), in->cut_short().c_str());
+    std::fprintf(stderr, "plexus record convert: %s: %s; converting what is there\n", o.in.c_str(),
+                 in->cut_short().c_str());
   RecordingOptions wo = writer_options(o, "plexus record convert");
   wo.metadata["converted_from"] = o.in;
   std::map<int64_t, int64_t> ids;
@@ -258,13 +262,15 @@ int run_convert(const RecordOpts& o) {
 Command add_record_command(CLI::App& root) {
   auto o = std::make_shared<RecordOpts>();
   Command c;
-  c.app = root.add_subcommand("record", "Record topics to a file: MCAP (default) or SQLite; info and convert of recordings");
+  c.app = root.add_subcommand("record",
+                              "Record topics to a file: MCAP (default) or SQLite; info and convert of recordings");
   c.app->require_subcommand(0, 1);
   add_dds_options(c.app, o->dds);
   c.app->add_option("-o,--out", o->out,
                     "recording file to create (an existing one is replaced once the first topic is recorded)");
   c.app->add_option("--format", o->format, "mcap or sqlite (default: sqlite for *.sqlite, *.db, *.db3, else mcap)");
-  c.app->add_option("--compression", o->compression, "MCAP chunk compression: zstd, lz4 or none")->capture_default_str();
+  c.app->add_option("--compression", o->compression, "MCAP chunk compression: zstd, lz4 or none")
+      ->capture_default_str();
   c.app->add_option("--topics", o->topics, "comma-separated topics (default: every topic with a writer)");
   c.app->add_option("--duration", o->duration, "stop after S seconds (0: until Ctrl-C or --count)");
   c.app->add_option("--count", o->count, "stop after N samples in total (0: no limit)");
@@ -273,14 +279,16 @@ Command add_record_command(CLI::App& root) {
       ->check(positive_seconds());
   c.app->add_option("--profile", o->profile, "subscribe with this QoS profile (default: one matching every writer)");
   c.app->add_option("--qos-file", o->qos_file, "QoS profiles file (default: deploy/qos.yaml)");
-  auto* info = c.app->add_subcommand("info", "A recording's format, counts, time span and topics (MCAP: from its summary)");
+  auto* info =
+      c.app->add_subcommand("info", "A recording's format, counts, time span and topics (MCAP: from its summary)");
   info->add_option("file", o->file, "recording (MCAP or SQLite)")->required();
   info->add_flag("--json", o->json, "one JSON object");
   auto* convert = c.app->add_subcommand("convert", "Write a recording (MCAP or SQLite) in another format");
   convert->add_option("in", o->in, "recording to read")->required();
   convert->add_option("out", o->out, "recording to write (format by its name, or --format)")->required();
   convert->add_option("--format", o->format, "mcap or sqlite (default: by the name, as record does)");
-  convert->add_option("--compression", o->compression, "MCAP chunk compression: zstd, lz4 or none")->capture_default_str();
+  convert->add_option("--compression", o->compression, "MCAP chunk compression: zstd, lz4 or none")
+      ->capture_default_str();
   c.run = [o, info, convert] {
     if (info->parsed()) return run_info(*o);
     if (convert->parsed()) return run_convert(*o);

@@ -72,7 +72,8 @@ int run_replay(const ReplayOpts& o) {
   if (!(o.rate_scale > 0 && o.rate_scale <= 1000)) throw InputError("--rate-scale: must be in (0, 1000]");
   if (!(o.rate >= 0 && o.rate <= 1e6)) throw InputError("--rate: must be in (0, 1e6] Hz");
   if (o.restamp && (o.verbatim || o.lockstep)) throw InputError("--restamp: not with --verbatim or --lockstep");
-  if (!o.profile.empty()) rt::QosProfiles::load(o.qos_file.empty() ? rt::default_qos_file() : o.qos_file).get(o.profile);
+  if (!o.profile.empty())
+    rt::QosProfiles::load(o.qos_file.empty() ? rt::default_qos_file() : o.qos_file).get(o.profile);
   const auto opened = open_recording(o.file);
   const RecordingReader& rec = *opened;
   if (!rec.cut_short().empty())  // a recorder that was killed: what is there replays

@@ -151,12 +151,14 @@ int run_echo_recording(const TopicOpts& o) {
     if (t.name == o.topic) topic = &t;
     names += (names.empty() ? "" : ", ") + t.name;
   }
-  if (!topic) throw InputError("--recording: topic '" + o.topic + "' is not in " + o.recording + " (topics: " + names + ")");
+  if (!topic)
+    throw InputError("--recording: topic '" + o.topic + "' is not in " + o.recording + " (topics: " + names + ")");
   const msg::TypeSupport* ts = msg::find_type_support(topic->type);
-  if (!ts) throw InputError(o.recording + ": topic '" + o.topic + "' has type '" + topic->type + "', unknown to this build");
+  if (!ts)
+    throw InputError(o.recording + ": topic '" + o.topic + "' has type '" + topic->type + "', unknown to this build");
   if (!rec->cut_short().empty())
-    std::fprintf(stderr, "plexus topic echo: warning: %s: %s; printing the samples before the cut\n", o.recording.c_str(),
-                 rec->cut_short().c_str());
+    std::fprintf(stderr, "plexus topic echo: warning: %s: %s; printing the samples before the cut\n",
+                 o.recording.c_str(), rec->cut_short().c_str());
   EchoPrinter printer(o);
   void* sample = ts->create();
   int n = 0;
@@ -180,7 +182,9 @@ int run_echo_recording(const TopicOpts& o) {
     throw;
   }
   ts->destroy(sample);
-  if (bad) std::fprintf(stderr, "plexus topic echo: %llu sample(s) of '%s' did not decode\n", static_cast<unsigned long long>(bad), o.topic.c_str());
+  if (bad)
+    std::fprintf(stderr, "plexus topic echo: %llu sample(s) of '%s' did not decode\n",
+                 static_cast<unsigned long long>(bad), o.topic.c_str());
   return bad ? 1 : 0;
 }
 

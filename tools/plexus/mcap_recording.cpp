@@ -33,7 +33,8 @@ void McapRecordingWriter::start() {
   file_->add_metadata("plexus", options_.metadata);
 }
 
-int64_t McapRecordingWriter::add_topic(const std::string& name, const msg::TypeSupport& type, const std::string& qos_json) {
+int64_t McapRecordingWriter::add_topic(const std::string& name, const msg::TypeSupport& type,
+                                       const std::string& qos_json) {
   return add_topic(name, type.type_name, type.schema, qos_json);
 }
 
@@ -90,7 +91,8 @@ McapRecordingReader::McapRecordingReader(const std::string& path) : path_(path),
 }
 
 int64_t McapRecordingReader::message_count() const {
-  return static_cast<int64_t>(std::min<uint64_t>(file_.statistics().message_count, std::numeric_limits<int64_t>::max()));
+  return static_cast<int64_t>(
+      std::min<uint64_t>(file_.statistics().message_count, std::numeric_limits<int64_t>::max()));
 }
 
 void McapRecordingReader::for_each(const std::function<bool(const RecordedMessage&)>& fn) const {
@@ -127,7 +129,9 @@ RecordingInfo McapRecordingReader::info() const {
   info.messages = st.message_count;
   info.chunks = st.chunk_count;
   info.schemas = st.schema_count;
-  const auto clamp = [](uint64_t t) { return static_cast<int64_t>(std::min<uint64_t>(t, std::numeric_limits<int64_t>::max())); };
+  const auto clamp = [](uint64_t t) {
+    return static_cast<int64_t>(std::min<uint64_t>(t, std::numeric_limits<int64_t>::max()));
+  };
   info.start_ns = clamp(st.message_start_time);
   info.end_ns = clamp(st.message_end_time);
   info.compression = file_.compression();

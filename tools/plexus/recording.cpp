@@ -9,8 +9,8 @@
 
 namespace plexus::cli {
 
-void SampleBatch::add(int64_t topic_id, int64_t receive_time_ns, const msg::StampHeader* header, const unsigned char* cdr,
-                      std::size_t size) {
+void SampleBatch::add(int64_t topic_id, int64_t receive_time_ns, const msg::StampHeader* header,
+                      const unsigned char* cdr, std::size_t size) {
   Entry e{topic_id, receive_time_ns, 0, 0, 0, 0, bytes.size(), size};
   if (header) {
     e.seq_num = static_cast<int64_t>(header->seq_num());

@@ -98,12 +98,12 @@ struct RecordingInfo {
     std::string name, type, qos_json;
     uint64_t messages = 0;
   };
-  std::string format;       ///< "mcap" or "sqlite"
-  std::string cut_short;    ///< empty for a complete file
+  std::string format;     ///< "mcap" or "sqlite"
+  std::string cut_short;  ///< empty for a complete file
   bool from_summary = false;
   uint64_t messages = 0, chunks = 0, schemas = 0;
-  int64_t start_ns = 0, end_ns = 0;  ///< receive times of the first and last message
-  std::string compression;           ///< MCAP: the chunks' ("zstd", "lz4", "" for none, "mixed")
+  int64_t start_ns = 0, end_ns = 0;             ///< receive times of the first and last message
+  std::string compression;                      ///< MCAP: the chunks' ("zstd", "lz4", "" for none, "mixed")
   std::map<std::string, std::string> metadata;  ///< MCAP: the "plexus" metadata record
   std::vector<Topic> topics;
 };

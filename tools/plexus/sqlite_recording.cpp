@@ -2,8 +2,8 @@
 
 #include <sqlite3.h>
 
-#include <filesystem>
 #include <algorithm>
+#include <filesystem>
 #include <limits>
 #include <map>
 #include <memory>
@@ -77,7 +77,8 @@ void SqliteRecordingWriter::commit() {
   if (ec) throw InputError(path_ + ": cannot write the recording (" + ec.message() + ")");
 }
 
-int64_t SqliteRecordingWriter::add_topic(const std::string& name, const std::string& type, const std::string& qos_json) {
+int64_t SqliteRecordingWriter::add_topic(const std::string& name, const std::string& type,
+                                         const std::string& qos_json) {
   sqlite3_stmt* st = nullptr;
   sqlite3_prepare_v2(db_, "INSERT INTO topics(name, type, qos) VALUES(?,?,?)", -1, &st, nullptr);
   sqlite3_bind_text(st, 1, name.c_str(), -1, SQLITE_TRANSIENT);
@@ -174,9 +175,12 @@ SqliteRecordingReader::SqliteRecordingReader(const std::string& path) : path_(pa
     const auto* type = reinterpret_cast<const char*>(sqlite3_column_text(st, 2));
     const auto* qos = reinterpret_cast<const char*>(sqlite3_column_text(st, 3));
     t.id = sqlite3_column_int64(st, 0);
-    if (sqlite3_column_type(st, 0) != SQLITE_INTEGER) bad = "a topic without an integer id";
-    else if (!name || !type || !qos) bad = "topic " + std::to_string(t.id) + " without a name or a type";
-    else if (!topics_.empty() && topics_.back().id == t.id) bad = "topic id " + std::to_string(t.id) + " twice";
+    if (sqlite3_column_type(st, 0) != SQLITE_INTEGER)
+      bad = "a topic without an integer id";
+    else if (!name || !type || !qos)
+      bad = "topic " + std::to_string(t.id) + " without a name or a type";
+    else if (!topics_.empty() && topics_.back().id == t.id)
+      bad = "topic id " + std::to_string(t.id) + " twice";
     if (!bad.empty()) break;
     t.name = name;
     t.type = type;
@@ -203,7 +207,8 @@ SqliteRecordingReader::~SqliteRecordingReader() {
 int64_t SqliteRecordingReader::message_count() const {
   sqlite3_stmt* st = nullptr;
   int64_t n = 0;
-  if (sqlite3_prepare_v2(db_, "SELECT COUNT(*) FROM messages", -1, &st, nullptr) == SQLITE_OK && sqlite3_step(st) == SQLITE_ROW)
+  if (sqlite3_prepare_v2(db_, "SELECT COUNT(*) FROM messages", -1, &st, nullptr) == SQLITE_OK &&
+      sqlite3_step(st) == SQLITE_ROW)
     n = sqlite3_column_int64(st, 0);
   sqlite3_finalize(st);
   return n;
@@ -211,10 +216,11 @@ int64_t SqliteRecordingReader::message_count() const {
 
 void SqliteRecordingReader::for_each(const std::function<bool(const RecordedMessage&)>& fn) const {
   sqlite3_stmt* raw = nullptr;
-  if (sqlite3_prepare_v2(db_,
-                         "SELECT topic_id, receive_time_ns, seq_num, data_time_ns, origin_time_ns, publish_time_ns, cdr,"
-                         " id FROM messages ORDER BY receive_time_ns, id",
-                         -1, &raw, nullptr) != SQLITE_OK) {
+  if (sqlite3_prepare_v2(
+          db_,
+          "SELECT topic_id, receive_time_ns, seq_num, data_time_ns, origin_time_ns, publish_time_ns, cdr,"
+          " id FROM messages ORDER BY receive_time_ns, id",
+          -1, &raw, nullptr) != SQLITE_OK) {
     sqlite3_finalize(raw);
     throw InputError(path_ + ": not a plexus recording (no messages table)");
   }
@@ -237,7 +243,8 @@ void SqliteRecordingReader::for_each(const std::function<bool(const RecordedMess
   while ((rc = sqlite3_step(st)) == SQLITE_ROW) {
     const std::string row = "message " + std::to_string(sqlite3_column_int64(st, 7));
     for (int c = 0; c < 6; ++c)
-      if (sqlite3_column_type(st, c) != SQLITE_INTEGER) refuse(row + ": " + sqlite3_column_name(st, c) + " is not an integer");
+      if (sqlite3_column_type(st, c) != SQLITE_INTEGER)
+        refuse(row + ": " + sqlite3_column_name(st, c) + " is not an integer");
     if (sqlite3_column_type(st, 6) != SQLITE_BLOB && sqlite3_column_type(st, 6) != SQLITE_NULL)
       refuse(row + ": cdr is not a blob");
     m.topic_id = sqlite3_column_int64(st, 0);
@@ -247,7 +254,8 @@ void SqliteRecordingReader::for_each(const std::function<bool(const RecordedMess
     m.origin_time_ns = sqlite3_column_int64(st, 4);
     m.publish_time_ns = sqlite3_column_int64(st, 5);
     if (m.receive_time_ns < 0) refuse(row + ": negative receive time " + std::to_string(m.receive_time_ns));
-    if (m.receive_time_ns < last_receive) refuse("truncated or corrupt (messages out of receive-time order: a damaged index)");
+    if (m.receive_time_ns < last_receive)
+      refuse("truncated or corrupt (messages out of receive-time order: a damaged index)");
     last_receive = m.receive_time_ns;
     ++rows;
     if (!topic_ids.count(m.topic_id))
@@ -286,8 +294,9 @@ RecordingInfo SqliteRecordingReader::info() const {
     info.topics.push_back({t.name, t.type, t.qos_json, 0});
   }
   sqlite3_stmt* st = nullptr;
-  if (sqlite3_prepare_v2(db_, "SELECT topic_id, COUNT(*), MIN(receive_time_ns), MAX(receive_time_ns) FROM messages"
-                              " GROUP BY topic_id",
+  if (sqlite3_prepare_v2(db_,
+                         "SELECT topic_id, COUNT(*), MIN(receive_time_ns), MAX(receive_time_ns) FROM messages"
+                         " GROUP BY topic_id",
                          -1, &st, nullptr) != SQLITE_OK) {
     sqlite3_finalize(st);
     throw InputError(path_ + ": not a plexus recording (no messages table)");

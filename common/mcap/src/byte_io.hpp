@@ -89,8 +89,8 @@ class Cursor {
   /// n bytes in place.
   const unsigned char* take(uint64_t n, const char* field) {
     if (n > remaining())
-      throw FormatError(std::string(what_) + " record: " + field + " of " + std::to_string(n) + " bytes runs past the record (" +
-                            std::to_string(remaining()) + " left)",
+      throw FormatError(std::string(what_) + " record: " + field + " of " + std::to_string(n) +
+                            " bytes runs past the record (" + std::to_string(remaining()) + " left)",
                         offset());
     const unsigned char* at = p_ + at_;
     at_ += static_cast<std::size_t>(n);
@@ -126,8 +126,8 @@ class Cursor {
  private:
   uint64_t le(int n) {
     if (static_cast<std::size_t>(n) > remaining())
-      throw FormatError(std::string(what_) + " record ends inside a field (" + std::to_string(remaining()) + " bytes left, " +
-                            std::to_string(n) + " needed)",
+      throw FormatError(std::string(what_) + " record ends inside a field (" + std::to_string(remaining()) +
+                            " bytes left, " + std::to_string(n) + " needed)",
                         offset());
     uint64_t v = 0;
     for (int i = 0; i < n; ++i) v |= static_cast<uint64_t>(p_[at_ + static_cast<std::size_t>(i)]) << (8 * i);

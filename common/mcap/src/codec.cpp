@@ -37,14 +37,13 @@ uint32_t crc32_update(uint32_t crc, const void* p, std::size_t n) {
 void compress(Compression c, int zstd_level, void*& zstd_ctx, const unsigned char* src, std::size_t n,
               std::vector<unsigned char>& out) {
   switch (c) {
-    case Compression::none:
-      out.assign(src, src + n);
-      return;
+    case Compression::none: out.assign(src, src + n); return;
     case Compression::zstd: {
       if (!zstd_ctx) zstd_ctx = ZSTD_createCCtx();
       if (!zstd_ctx) throw std::bad_alloc();
       out.resize(ZSTD_compressBound(n));
-      const std::size_t r = ZSTD_compressCCtx(static_cast<ZSTD_CCtx*>(zstd_ctx), out.data(), out.size(), src, n, zstd_level);
+      const std::size_t r =
+          ZSTD_compressCCtx(static_cast<ZSTD_CCtx*>(zstd_ctx), out.data(), out.size(), src, n, zstd_level);
       if (ZSTD_isError(r)) throw std::runtime_error(std::string("zstd: ") + ZSTD_getErrorName(r));
       out.resize(r);
       return;
@@ -74,7 +73,8 @@ void decompress(const std::string& compression, const unsigned char* src, std::s
   }
   if (compression == "zstd") {
     const std::size_t r = ZSTD_decompress(dst, size, src, n);
-    if (ZSTD_isError(r)) throw FormatError(std::string("zstd chunk does not decompress (") + ZSTD_getErrorName(r) + ")", 0);
+    if (ZSTD_isError(r))
+      throw FormatError(std::string("zstd chunk does not decompress (") + ZSTD_getErrorName(r) + ")", 0);
     if (r != size)
       throw FormatError("zstd chunk decompresses to " + std::to_string(r) + " bytes, not the " + std::to_string(size) +
                             " it announces",
@@ -89,7 +89,8 @@ void decompress(const std::string& compression, const unsigned char* src, std::s
     while (in < n) {  // one frame, or several one after the other
       std::size_t src_n = n - in, dst_n = size - out;
       const std::size_t r = LZ4F_decompress(raw, dst + out, &dst_n, src + in, &src_n, nullptr);
-      if (LZ4F_isError(r)) throw FormatError(std::string("lz4 chunk does not decompress (") + LZ4F_getErrorName(r) + ")", 0);
+      if (LZ4F_isError(r))
+        throw FormatError(std::string("lz4 chunk does not decompress (") + LZ4F_getErrorName(r) + ")", 0);
       in += src_n;
       out += dst_n;
       if (src_n == 0 && dst_n == 0)

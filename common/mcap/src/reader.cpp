@@ -21,7 +21,7 @@ using detail::kMaxChunkBytes;
 
 namespace {
 
-constexpr uint64_t kRecordHead = 9;                // opcode + uint64 length
+constexpr uint64_t kRecordHead = 9;  // opcode + uint64 length
 constexpr uint64_t kFooterRecord = kRecordHead + 20;
 constexpr uint64_t kMaxSummaryBytes = 1ull << 30;  // a summary field claiming more is corrupt
 
@@ -112,9 +112,12 @@ struct Reader::File {
     out.resize(static_cast<std::size_t>(n));
     uint64_t done = 0;
     while (done < n) {
-      const ssize_t r = ::pread(fd, out.data() + done, static_cast<std::size_t>(n - done), static_cast<off_t>(offset + done));
+      const ssize_t r =
+          ::pread(fd, out.data() + done, static_cast<std::size_t>(n - done), static_cast<off_t>(offset + done));
       if (r < 0 && errno == EINTR) continue;
-      if (r <= 0) throw FormatError(std::string("cannot be read (") + (r < 0 ? std::strerror(errno) : "end of file") + ")", offset + done);
+      if (r <= 0)
+        throw FormatError(std::string("cannot be read (") + (r < 0 ? std::strerror(errno) : "end of file") + ")",
+                          offset + done);
       done += static_cast<uint64_t>(r);
     }
   }
@@ -122,14 +125,16 @@ struct Reader::File {
 
 void Reader::note_compression(const std::string& c) {
   const std::string name = c.empty() ? "none" : c;
-  if (compression_.empty()) compression_ = name;
-  else if (compression_ != name) compression_ = "mixed";
+  if (compression_.empty())
+    compression_ = name;
+  else if (compression_ != name)
+    compression_ = "mixed";
 }
 
 std::string Reader::where(uint64_t offset) const { return " at byte " + std::to_string(offset); }
 
 Reader::Reader(const std::string& path) : file_(std::make_unique<File>()), path_(path) {
-  struct stat st{};
+  struct stat st {};
   if (::stat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) throw InputError(path + ": no such file");
   file_->fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
   if (file_->fd < 0) throw InputError(path + ": cannot open (" + std::strerror(errno) + ")");
@@ -137,11 +142,13 @@ Reader::Reader(const std::string& path) : file_(std::make_unique<File>()), path_
   const uint64_t size = file_->size;
   std::vector<unsigned char> buf;
   try {
-    if (size < sizeof kMagic) throw InputError(path + ": not an MCAP file (" + std::to_string(size) + " bytes, no MCAP magic)");
+    if (size < sizeof kMagic)
+      throw InputError(path + ": not an MCAP file (" + std::to_string(size) + " bytes, no MCAP magic)");
     file_->read(0, sizeof kMagic, buf);
     if (std::memcmp(buf.data(), kMagic, sizeof kMagic) != 0) {
       if (std::memcmp(buf.data(), kMagic, 5) == 0)
-        throw InputError(path + ": MCAP major version '" + std::string(1, static_cast<char>(buf[5])) + "' is not supported (0)");
+        throw InputError(path + ": MCAP major version '" + std::string(1, static_cast<char>(buf[5])) +
+                         "' is not supported (0)");
       throw InputError(path + ": not an MCAP file (it does not start with the MCAP magic)");
     }
     // The header record comes first.
@@ -179,9 +186,9 @@ Reader::Reader(const std::string& path) : file_(std::make_unique<File>()), path_
         const uint32_t summary_crc = f.u32();
         if (summary_start != 0) {
           if (summary_start < data_start_ || summary_start > footer_at)
-            throw FormatError("footer points at a summary at byte " + std::to_string(summary_start) +
-                                  ", outside the file's records",
-                              footer_at);
+            throw FormatError(
+                "footer points at a summary at byte " + std::to_string(summary_start) + ", outside the file's records",
+                footer_at);
           read_summary(summary_start, footer_at, summary_crc);
         }
       }
@@ -353,7 +360,8 @@ void Reader::scan() {
     const uint64_t log_time = r.u64();
     r.u64();
     if (!channels_.count(channel))
-      throw FormatError("message on channel " + std::to_string(channel) + " before any channel record of that id", where_at);
+      throw FormatError("message on channel " + std::to_string(channel) + " before any channel record of that id",
+                        where_at);
     if (stats_.message_count == 0 || log_time < stats_.message_start_time) stats_.message_start_time = log_time;
     if (stats_.message_count == 0 || log_time > stats_.message_end_time) stats_.message_end_time = log_time;
     ++stats_.message_count;
@@ -362,7 +370,8 @@ void Reader::scan() {
   };
   while (at < size) {
     if (size - at < kRecordHead) {
-      cut_short_ = "cut short at byte " + std::to_string(at) + " of " + std::to_string(size) + ", inside a record's opcode and length";
+      cut_short_ = "cut short at byte " + std::to_string(at) + " of " + std::to_string(size) +
+                   ", inside a record's opcode and length";
       break;
     }
     file_->read(at, kRecordHead, buf);
@@ -370,9 +379,10 @@ void Reader::scan() {
     const uint8_t op = head.u8();
     const uint64_t len = head.u64();
     if (len > size - at - kRecordHead) {
-      if (op == static_cast<uint8_t>(Op::footer) || data_end) break;  // the summary or footer was cut: the data is whole
-      cut_short_ = "cut short at byte " + std::to_string(at) + " of " + std::to_string(size) + ", inside a " + op_name(op) +
-                   " record of " + std::to_string(len) + " bytes";
+      if (op == static_cast<uint8_t>(Op::footer) || data_end)
+        break;  // the summary or footer was cut: the data is whole
+      cut_short_ = "cut short at byte " + std::to_string(at) + " of " + std::to_string(size) + ", inside a " +
+                   op_name(op) + " record of " + std::to_string(len) + " bytes";
       break;
     }
     const uint64_t body = at + kRecordHead;
@@ -383,7 +393,8 @@ void Reader::scan() {
       case Op::chunk:
       case Op::metadata: {
         if (data_end) break;  // summary copies
-        if (len > kMaxChunkBytes + 65536) throw FormatError(std::string(op_name(op)) + " record of " + std::to_string(len) + " bytes", at);
+        if (len > kMaxChunkBytes + 65536)
+          throw FormatError(std::string(op_name(op)) + " record of " + std::to_string(len) + " bytes", at);
         file_->read(body, len, buf);
         Cursor r(buf.data(), buf.size(), body, op_name(op));
         if (op == static_cast<uint8_t>(Op::schema)) {
@@ -442,14 +453,11 @@ void Reader::scan() {
         }
         break;
       }
-      case Op::data_end:
-        data_end = true;
-        break;
+      case Op::data_end: data_end = true; break;
       case Op::footer:
         at = size;  // the end
         continue;
-      case Op::header:
-        throw FormatError("a second header record", at);
+      case Op::header: throw FormatError("a second header record", at);
       default:  // message indexes, attachments, summary records, later versions' records
         break;
     }
@@ -467,7 +475,7 @@ void Reader::for_each_message(const std::function<bool(const MessageView&)>& fn,
     if (blocks_[i].has_messages && blocks_[i].end_time >= start && blocks_[i].start_time <= end) order.push_back(i);
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
     return blocks_[a].start_time != blocks_[b].start_time ? blocks_[a].start_time < blocks_[b].start_time
-                                                           : blocks_[a].offset < blocks_[b].offset;
+                                                          : blocks_[a].offset < blocks_[b].offset;
   });
   struct Pending {
     uint64_t log_time;
@@ -525,11 +533,12 @@ void Reader::for_each_message(const std::function<bool(const MessageView&)>& fn,
         m.u64();
         if (log_time < b.start_time || log_time > b.end_time)
           throw FormatError("message at log time " + std::to_string(log_time) + ", outside the time range [" +
-                                std::to_string(b.start_time) + ", " + std::to_string(b.end_time) + "] given for its chunk",
+                                std::to_string(b.start_time) + ", " + std::to_string(b.end_time) +
+                                "] given for its chunk",
                             b.offset);
         if (log_time < start || log_time > end) continue;
-        heap.push({log_time, seq++, buffer, static_cast<std::size_t>(body - buffer->data()), static_cast<std::size_t>(rlen),
-                   b.offset});
+        heap.push({log_time, seq++, buffer, static_cast<std::size_t>(body - buffer->data()),
+                   static_cast<std::size_t>(rlen), b.offset});
       }
     };
     std::size_t next = 0;
@@ -544,7 +553,8 @@ void Reader::for_each_message(const std::function<bool(const MessageView&)>& fn,
       const uint16_t channel = m.u16();
       const auto it = channels_.find(channel);
       if (it == channels_.end())
-        throw FormatError("message on channel " + std::to_string(channel) + ", which the file does not define", p.record);
+        throw FormatError("message on channel " + std::to_string(channel) + ", which the file does not define",
+                          p.record);
       view.channel = &it->second;
       view.sequence = m.u32();
       view.log_time = m.u64();

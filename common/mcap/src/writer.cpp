@@ -39,8 +39,7 @@ Writer::Writer(const std::string& path, WriterOptions options) : path_(path), op
 Writer::~Writer() {
   try {
     close();
-  } catch (const std::exception&) {
-  }
+  } catch (const std::exception&) {}
   if (fd_ >= 0) ::close(fd_);
   if (zstd_) detail::free_zstd(zstd_);
 }

@@ -110,7 +110,8 @@ TEST_F(McapDamage, AFlippedByteAnywhereIsReadOrRefusedInOneLine) {
 }
 
 /// Replaces the bytes at `at` in a copy and returns the error of opening and reading it.
-std::string damage(const std::string& whole, const std::string& damaged, std::size_t at, std::vector<unsigned char> with) {
+std::string damage(const std::string& whole, const std::string& damaged, std::size_t at,
+                   std::vector<unsigned char> with) {
   auto b = read_bytes(whole);
   std::copy(with.begin(), with.end(), b.begin() + static_cast<std::ptrdiff_t>(at));
   write_bytes(damaged, b, b.size());
@@ -131,7 +132,8 @@ std::size_t first_record(const std::vector<unsigned char>& f, Op op) {
 
 TEST_F(McapDamage, NamedRefusals) {
   // Not MCAP at all; another major version.
-  EXPECT_EQ(damage(whole_, damaged_, 0, {'S', 'Q', 'L'}), damaged_ + ": not an MCAP file (it does not start with the MCAP magic)");
+  EXPECT_EQ(damage(whole_, damaged_, 0, {'S', 'Q', 'L'}),
+            damaged_ + ": not an MCAP file (it does not start with the MCAP magic)");
   EXPECT_EQ(damage(whole_, damaged_, 5, {'1'}), damaged_ + ": MCAP major version '1' is not supported (0)");
   // A chunk's records changed: its CRC says so.
   const std::size_t chunk = first_record(bytes_, Op::chunk);

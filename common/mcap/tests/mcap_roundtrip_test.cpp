@@ -44,8 +44,9 @@ TEST_P(McapRoundTrip, EveryMessageComesBackWithItsChannelTimesAndBytes) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Compressions, McapRoundTrip,
-                         ::testing::Values(Compression::zstd, Compression::lz4, Compression::none),
-                         [](const auto& p) { return std::string(p.param == Compression::none ? "none" : compression_name(p.param)); });
+                         ::testing::Values(Compression::zstd, Compression::lz4, Compression::none), [](const auto& p) {
+                           return std::string(p.param == Compression::none ? "none" : compression_name(p.param));
+                         });
 
 TEST(Mcap, TopicsAndCountsComeFromTheSummaryWithoutReadingAChunk) {
   const std::string path = temp_path("a");
@@ -84,7 +85,8 @@ TEST(Mcap, MessagesOutOfOrderAcrossChunksComeOutInLogTimeOrder) {
   const Reader r(path);
   const auto all = read_all(r);
   ASSERT_EQ(all.size(), 400u);
-  EXPECT_TRUE(std::is_sorted(all.begin(), all.end(), [](const Read& a, const Read& b) { return a.log_time < b.log_time; }));
+  EXPECT_TRUE(
+      std::is_sorted(all.begin(), all.end(), [](const Read& a, const Read& b) { return a.log_time < b.log_time; }));
   EXPECT_EQ(all[0].sequence, 0u);
   EXPECT_EQ(all[1].sequence, 1000u);
   std::filesystem::remove(path);

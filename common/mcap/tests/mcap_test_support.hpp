@@ -22,7 +22,8 @@ inline std::string temp_path(const std::string& tag) {
   std::string name = std::string(info->name()) + "_" + tag;  // a parameterised test's name holds '/'
   for (char& c : name)
     if (c == '/') c = '_';
-  return (std::filesystem::temp_directory_path() / ("plexus_mcap_" + std::to_string(::getpid()) + "_" + name + ".mcap")).string();
+  return (std::filesystem::temp_directory_path() / ("plexus_mcap_" + std::to_string(::getpid()) + "_" + name + ".mcap"))
+      .string();
 }
 
 inline std::vector<unsigned char> read_bytes(const std::string& path) {
@@ -50,7 +51,8 @@ inline Statistics write_sample(const std::string& path, uint32_t n, Compression 
   o.compression = c;
   o.chunk_size = chunk_size;
   Writer w(path, o);
-  const uint16_t s = w.add_schema("plexus::msg::Pose2D", "omgidl", "module plexus { module msg { struct Pose2D { double x; }; }; };");
+  const uint16_t s =
+      w.add_schema("plexus::msg::Pose2D", "omgidl", "module plexus { module msg { struct Pose2D { double x; }; }; };");
   const uint16_t a = w.add_channel(s, "r1/pose", "cdr", {{"qos", "{\"reliability\":\"reliable\"}"}});
   const uint16_t b = w.add_channel(s, "r2/pose", "cdr", {});
   w.add_metadata("plexus", {{"recorder", "test"}});

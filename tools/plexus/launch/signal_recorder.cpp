@@ -32,8 +32,7 @@ SignalRecorder::~SignalRecorder() {
       queue_.take(batch_);
       file_->insert(batch_);
     }
-  } catch (const std::exception&) {
-  }
+  } catch (const std::exception&) {}
   // file_'s destructor: MCAP closes the file as it is; SQLite leaves none.
 }
 

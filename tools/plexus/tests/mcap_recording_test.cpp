@@ -14,18 +14,12 @@
 #include "plexus/base/input_error.hpp"
 #include "replay_plan.hpp"
 #include "sqlite_recording.hpp"
+#include "tests/input_error_of.hpp"
 
 namespace plexus::cli {
 namespace {
 
-std::string error_of(auto&& fn) {
-  try {
-    fn();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no error";
-}
+using test_support::error_of;
 
 class McapRecording : public ::testing::Test {
  protected:
@@ -72,8 +66,8 @@ class McapRecording : public ::testing::Test {
       if (k + 1 == flushed) {
         w.flush();
         const auto bytes = read_bytes(path_);  // what a killed recorder leaves
-        std::ofstream(path_ + ".cut", std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()),
-                                                              static_cast<std::streamsize>(bytes.size()));
+        std::ofstream(path_ + ".cut", std::ios::binary)
+            .write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
       }
     }
     w.commit();
@@ -158,7 +152,8 @@ TEST_F(McapRecording, AnMcapFileThatIsNotAPlexusRecordingIsRefusedByName) {
     mcap::Writer w(path_);
     w.add_channel(0, "tf", "cdr", {});
   }
-  EXPECT_EQ(error_of([&] { open_recording(path_); }), path_ + ": not a plexus recording: channel 0 ('tf'): no schema, so no type");
+  EXPECT_EQ(error_of([&] { open_recording(path_); }),
+            path_ + ": not a plexus recording: channel 0 ('tf'): no schema, so no type");
   {
     mcap::Writer w(path_);
     const uint16_t s = w.add_schema("plexus::msg::Pose2D", "omgidl", "");
@@ -186,7 +181,8 @@ TEST(RecordingFormat, ByOptionOrFileName) {
   EXPECT_EQ(recording_format("run.sqlite", ""), RecordingFormat::sqlite);
   EXPECT_EQ(recording_format("run.db3", ""), RecordingFormat::sqlite);
   EXPECT_EQ(recording_format("run.sqlite", "mcap"), RecordingFormat::mcap);
-  EXPECT_EQ(error_of([] { recording_format("x", "bag"); }), "--format: 'bag' is not a recording format (mcap or sqlite)");
+  EXPECT_EQ(error_of([] { recording_format("x", "bag"); }),
+            "--format: 'bag' is not a recording format (mcap or sqlite)");
   EXPECT_EQ(error_of([] { recording_compression("bz2"); }),
             "--compression: 'bz2' is not a chunk compression (zstd, lz4 or none)");
 }
@@ -194,8 +190,8 @@ TEST(RecordingFormat, ByOptionOrFileName) {
 TEST(HeaderFromCdr, EitherEndianness) {
   std::vector<unsigned char> le(36, 0), be(36, 0);
   le[1] = 0x01;
-  le[4] = 7;              // seq_num 7
-  le[12 + 1] = 0x01;      // data time 256
+  le[4] = 7;          // seq_num 7
+  le[12 + 1] = 0x01;  // data time 256
   be[4 + 7] = 7;
   be[12 + 6] = 0x01;
   msg::StampHeader a, b;

@@ -13,20 +13,14 @@
 #include <vector>
 
 #include "plexus/base/input_error.hpp"
-#include "sqlite_recording.hpp"
 #include "replay_plan.hpp"
+#include "sqlite_recording.hpp"
+#include "tests/input_error_of.hpp"
 
 namespace plexus::cli {
 namespace {
 
-std::string error_of(auto&& fn) {
-  try {
-    fn();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no error";
-}
+using test_support::error_of;
 
 class Recording : public ::testing::Test {
  protected:
@@ -95,7 +89,8 @@ TEST_F(Recording, WrittenMessagesReadBackInReceiveOrder) {
 // A NULL name must not be read as a null char* into std::string (a crash).
 TEST_F(Recording, TopicWithoutANameOrTypeIsRefused) {
   sql("INSERT INTO topics VALUES(1, NULL, 'plexus::msg::Pose2D', '');");
-  EXPECT_EQ(error_of([&] { SqliteRecordingReader r(path_); }), path_ + ": not a plexus recording: topic 1 without a name or a type");
+  EXPECT_EQ(error_of([&] { SqliteRecordingReader r(path_); }),
+            path_ + ": not a plexus recording: topic 1 without a name or a type");
 }
 
 TEST_F(Recording, TopicTwiceIsRefused) {

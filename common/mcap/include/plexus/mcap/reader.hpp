@@ -59,11 +59,11 @@ class Reader {
 
   /// Where messages are: a chunk, or one message record outside any chunk.
   struct Block {
-    uint64_t offset = 0;        ///< of the record (Chunk or Message)
-    uint64_t length = 0;        ///< of the whole record
+    uint64_t offset = 0;  ///< of the record (Chunk or Message)
+    uint64_t length = 0;  ///< of the whole record
     bool chunk = true;
     uint64_t start_time = 0, end_time = 0;
-    bool has_messages = true;   ///< false for a chunk whose index says it holds none
+    bool has_messages = true;  ///< false for a chunk whose index says it holds none
   };
 
  private:

@@ -24,10 +24,10 @@ namespace plexus::mcap {
 
 struct WriterOptions {
   Compression compression = Compression::zstd;
-  int zstd_level = 3;                    ///< 1..19 (zstd's own default is 3)
-  std::size_t chunk_size = 1u << 20;     ///< uncompressed bytes of records before a chunk is closed
-  std::string profile;                   ///< Header.profile ("" : no well-known profile)
-  std::string library = "plexus";        ///< Header.library
+  int zstd_level = 3;                 ///< 1..19 (zstd's own default is 3)
+  std::size_t chunk_size = 1u << 20;  ///< uncompressed bytes of records before a chunk is closed
+  std::string profile;                ///< Header.profile ("" : no well-known profile)
+  std::string library = "plexus";     ///< Header.library
 };
 /// InputError naming the option for a level outside 1..19 or a chunk size outside 1 KiB..64 MiB.
 void validate(const WriterOptions& o);
