@@ -8,6 +8,9 @@
 #     IDL <file.idl>...       the package's files
 #     [HEADER <name>]         include name of the generated header (default <target>/messages.hpp)
 #     [DOCS <file.md>]        also write the Markdown reference of the types
+#     [ROS2 <dir>]            also write the ROS 2 interface package of the types into <dir>
+#                             (package.xml, CMakeLists.txt, msg/*.msg; docs/ros2.md): its name
+#                             is <target>
 #     [DEPENDS <target>...])  message packages whose IDL these files include (plexus's own is implied)
 #
 # Runs, for both vendors and at build time:
@@ -26,7 +29,7 @@ find_program(FASTDDSGEN fastddsgen REQUIRED)
 find_program(IDLC idlc REQUIRED)
 
 function(plexus_add_messages target)
-  cmake_parse_arguments(M "" "IDL_ROOT;HEADER;DOCS" "IDL;DEPENDS" ${ARGN})
+  cmake_parse_arguments(M "" "IDL_ROOT;HEADER;DOCS;ROS2" "IDL;DEPENDS" ${ARGN})
   if(NOT M_IDL_ROOT OR NOT M_IDL)
     message(FATAL_ERROR "plexus_add_messages(${target}): IDL_ROOT and IDL are required")
   endif()
@@ -136,6 +139,10 @@ function(plexus_add_messages target)
   if(M_DOCS)
     list(APPEND outputs ${M_DOCS})
     set(docs_args --docs ${M_DOCS})
+  endif()
+  if(M_ROS2)
+    list(APPEND outputs ${M_ROS2}/package.xml)
+    list(APPEND docs_args --ros2 ${M_ROS2})
   endif()
   set(dep_headers "")
   if(NOT own_package)

@@ -18,6 +18,7 @@ import lz4 from "@foxglove/wasm-lz4";
 import { open, readFile } from "node:fs/promises";
 import { existsSync } from "node:fs";
 import path from "node:path";
+import { comparer, parseExact } from "./echo_compare.mjs";
 
 const [file, infoFile, echoDir] = process.argv.slice(2);
 if (!file || !infoFile || !echoDir) {
@@ -119,38 +120,8 @@ for (const c of info.channels) {
   else if ((counts.get(id) ?? 0) !== Number(c.messages)) fail(`${c.topic}: read ${counts.get(id) ?? 0}, plexus ${c.messages}`);
 }
 
-// Decoded values against `plexus topic echo --json` (64-bit integers kept exact: as strings).
-const parseExact = (line) => JSON.parse(line.replace(/([:\[,]\s*)(-?\d{16,})(?=\s*[,\]}])/g, '$1"$2"'));
-const text = (v) => {
-  const bytes = Array.from(v);
-  const end = bytes.indexOf(0);
-  return new TextDecoder().decode(Uint8Array.from(end < 0 ? bytes : bytes.slice(0, end)));
-};
-function compare(expected, actual, where) {
-  if (typeof expected === "string") {
-    if (typeof actual === "bigint") return String(actual) === expected || fail(`${where}: ${actual} != ${expected}`);
-    if (typeof actual === "string") return actual === expected || fail(`${where}: "${actual}" != "${expected}"`);
-    if (actual && typeof actual.length === "number") return text(actual) === expected || fail(`${where}: "${text(actual)}" != "${expected}"`);
-    return fail(`${where}: ${typeof actual} where plexus has a string`);
-  }
-  if (typeof expected === "number") {
-    const a = typeof actual === "bigint" ? Number(actual) : actual;
-    return a === expected || (Number.isNaN(a) && Number.isNaN(expected)) || fail(`${where}: ${actual} != ${expected}`);
-  }
-  if (Array.isArray(expected)) {
-    if (!actual || actual.length !== expected.length) return fail(`${where}: ${actual?.length} elements, plexus ${expected.length}`);
-    expected.forEach((e, i) => compare(e, actual[i], `${where}[${i}]`));
-    return;
-  }
-  if (expected && typeof expected === "object") {
-    const keys = Object.keys(expected);
-    const got = Object.keys(actual ?? {});
-    if (keys.join() !== got.join()) return fail(`${where}: fields ${got.join()} != plexus ${keys.join()}`);
-    for (const k of keys) compare(expected[k], actual[k], `${where}.${k}`);
-    return;
-  }
-  return expected === actual || fail(`${where}: ${actual} != ${expected}`);
-}
+// Decoded values against `plexus topic echo --json` (echo_compare.mjs).
+const compare = comparer(fail);
 let compared = 0;
 for (const [topic, id] of byTopic) {
   const echoFile = path.join(echoDir, topic.replaceAll("/", "__") + ".jsonl");

@@ -103,8 +103,9 @@ n=$("$plexus" record info "$rec" --json | jq -r .messages)
 
 # 3. plexus record beside the realtime main job.
 rt=$((duration < 60 ? duration : 60))
-"$plexus" launch "$scenario" --set clock.mode=realtime --set duration=$((rt + 15)) --dds "$dds" --domain "$domain" --quiet \
-  --out "$out/realtime" > "$out/realtime.log" 2>&1 &
+# The two "after 100 s" metrics start within the shortened run (as tests/repro/four_robots.sh --short).
+"$plexus" launch "$scenario" --set clock.mode=realtime --set duration=$((rt + 15)) --set metrics.0.from=$((rt + 10)) \
+  --set metrics.1.from=$((rt + 10)) --dds "$dds" --domain "$domain" --quiet --out "$out/realtime" > "$out/realtime.log" 2>&1 &
 launcher=$!
 sleep 8
 TIMEFORMAT='%U %S'

@@ -29,6 +29,15 @@ std::string emit_source(const Model& model, const Package& pkg);
 /// The self-contained IDL text of a file: its includes' texts first, preprocessor lines removed
 /// (the `omgidl` schema of its types in MCAP files and on the Foxglove WebSocket).
 std::string schema_text(const Model& model, const File& file);
+/// One file of a generated folder, its path relative to the folder.
+struct GeneratedFile {
+  std::string path;
+  std::string text;
+};
+/// The ROS 2 interface package of the package's types (docs/ros2.md): package.xml,
+/// CMakeLists.txt, msg/<Type>.msg. Throws std::runtime_error, naming the IDL line, for what
+/// a .msg cannot say (a name ROS 2 refuses, a multi-dimensional array).
+std::vector<GeneratedFile> emit_ros2(const Model& model, const Package& pkg);
 /// The Markdown reference of the package's message types (docs/messages.md for plexus).
 std::string emit_docs(const Model& model, const Package& pkg);
 

@@ -3,6 +3,7 @@
 //   --header FILE  type supports, signal layouts, to_json declarations
 //   --source FILE  type supports, signal fields (the edge check), schemas, registration
 //   --docs FILE    the Markdown reference of the messages
+//   --ros2 DIR     the ROS 2 interface package of the messages (docs/ros2.md)
 // after checking the interop rules (idl_checks.hpp). A broken rule or a parse error is one
 // line "file:line: what" and exit code 2.
 #include <cstdio>
@@ -21,7 +22,8 @@ namespace {
 int usage() {
   std::fprintf(stderr,
                "usage: plexus_idlgen --package NAME --header-name INCLUDE [--dependency-header INCLUDE]...\n"
-               "                     [--header FILE] [--source FILE] [--docs FILE] [--check] -I DIR... FILE.idl...\n");
+               "                     [--header FILE] [--source FILE] [--docs FILE] [--ros2 DIR] [--check] -I DIR... "
+               "FILE.idl...\n");
   return 2;
 }
 
@@ -47,7 +49,7 @@ void write_if_changed(const std::string& path, const std::string& text) {
 int main(int argc, char** argv) {
   using namespace plexus::idlgen;
   Package pkg;
-  std::string header, source, docs;
+  std::string header, source, docs, ros2;
   std::vector<std::string> dirs, files;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -68,6 +70,8 @@ int main(int argc, char** argv) {
         source = value();
       else if (a == "--docs")
         docs = value();
+      else if (a == "--ros2")
+        ros2 = value();
       else if (a == "-I")
         dirs.push_back(value());
       else if (a.rfind("-I", 0) == 0)
@@ -91,6 +95,11 @@ int main(int argc, char** argv) {
     if (!header.empty()) write_if_changed(header, emit_header(model, pkg));
     if (!source.empty()) write_if_changed(source, emit_source(model, pkg));
     if (!docs.empty()) write_if_changed(docs, emit_docs(model, pkg));
+    if (!ros2.empty())
+      for (const auto& f : emit_ros2(model, pkg)) {
+        std::filesystem::create_directories(std::filesystem::path(ros2 + "/" + f.path).parent_path());
+        write_if_changed(ros2 + "/" + f.path, f.text);
+      }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "plexus_idlgen: error: %s\n", e.what());
     return 2;

@@ -114,6 +114,7 @@ UnitSet make_units(const scenario::Scenario& sc, const UnitOptions& o) {
     if (!interface_address.empty()) args.insert(args.end(), {"--interface", interface_address, "--peers", peers});
     // The scenario's transport (plexus launch passes it the same way); auto is every program's default.
     if (sc.dds_transport != "auto") args.insert(args.end(), {"--transport", sc.dds_transport});
+    if (sc.dds_naming != "plexus") args.insert(args.end(), {"--naming", sc.dds_naming});
     std::string exec;
     for (const auto& a : args) exec += (exec.empty() ? "" : " ") + exec_argument(a);
     std::ostringstream u;

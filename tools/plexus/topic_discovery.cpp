@@ -30,6 +30,8 @@ void add_dds_options(CLI::App* app, DdsOptions& o) {
   app->add_option("--interface", o.interface_address, "address of the one interface DDS uses")->capture_default_str();
   app->add_option("--peers", o.peers, "comma-separated unicast discovery peers")->capture_default_str();
   app->add_option("--transport", o.transport, "auto, udp or shm (docs/runtime.md, Transports)")->capture_default_str();
+  app->add_option("--naming", o.naming, "topic and type names on the wire: plexus or ros2 (docs/ros2.md)")
+      ->capture_default_str();
   rt::add_security_options(*app, o.security, o.identity, o.governance);
 }
 
@@ -41,6 +43,7 @@ std::unique_ptr<rt::Participant> make_participant(const DdsOptions& o, const std
   po.name = name;
   po.network.interface_address = o.interface_address;
   po.network.transport = rt::parse_transport(o.transport);
+  po.naming = rt::parse_naming(o.naming);
   po.network.peers.clear();
   std::stringstream ss(o.peers);
   for (std::string peer; std::getline(ss, peer, ',');)

@@ -20,4 +20,14 @@ std::unique_ptr<Participant> Participant::create(const ParticipantOptions& optio
   return std::make_unique<CycloneParticipant>(options);
 }
 
+std::vector<DiscoveredEndpoint> Participant::discovered_endpoints() const {
+  std::vector<DiscoveredEndpoint> out = dds_endpoints();
+  if (options_.naming != Naming::plexus)
+    for (auto& e : out) {
+      e.topic = plexus_topic(options_.naming, e.topic);
+      e.type_name = plexus_type(options_.naming, e.type_name);
+    }
+  return out;
+}
+
 }  // namespace plexus::rt

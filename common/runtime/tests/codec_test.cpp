@@ -36,7 +36,7 @@ void round_trip() {
   EXPECT_EQ(b1[1], 0x01);
 
   // Cyclone: T -> serdata -> wire bytes -> serdata -> T.
-  struct ddsi_sertype* st = detail::make_cdr_sertype(ts);
+  struct ddsi_sertype* st = detail::make_cdr_sertype(ts, ts.type_name);
   struct ddsi_serdata* sd = detail::serdata_from_sample(st, &a);
   ASSERT_NE(sd, nullptr);
   const uint32_t size = ddsi_serdata_size(sd);

@@ -109,7 +109,7 @@ TEST_P(TakeRawBytes, AreTheWritersNotARencoding) {
   auto wp = make(Vendor::cyclone, "raw_bytes_pub");
   const dds_entity_t participant = dynamic_cast<CycloneParticipant&>(*wp).handle();
   const auto& ts = msg::type_support<msg::Pose2D>();
-  struct ddsi_sertype* st = detail::make_cdr_sertype(ts);
+  struct ddsi_sertype* st = detail::make_cdr_sertype(ts, ts.type_name);
   const dds_entity_t topic = dds_create_topic_sertype(participant, "raw/bytes", &st, nullptr, nullptr, nullptr);
   ASSERT_GT(topic, 0);
   dds_qos_t* qos = dds_create_qos();

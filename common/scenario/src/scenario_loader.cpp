@@ -261,6 +261,9 @@ struct Loader {
       sc.dds_transport = dds.optional<std::string>("transport", "auto");
       if (sc.dds_transport != "auto" && sc.dds_transport != "udp" && sc.dds_transport != "shm")
         dds.fail("transport", "expected auto, udp or shm, got '" + sc.dds_transport + "'");
+      sc.dds_naming = dds.optional<std::string>("naming", "plexus");
+      if (sc.dds_naming != "plexus" && sc.dds_naming != "ros2")
+        dds.fail("naming", "expected plexus or ros2, got '" + sc.dds_naming + "'");
       dds.reject_unknown();
     }
     if (top.has("security")) sc.security = load_security_section(top, sc.base_dir);

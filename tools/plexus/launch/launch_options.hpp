@@ -14,6 +14,7 @@ struct LaunchOptions {
   std::vector<std::string> externals;  // processes provided from outside (replay, hardware bridge)
   std::string dds, out, qos_file, host, record;
   std::string transport;  // --transport: dds.transport of the scenario, overridden (travels as a --set)
+  std::string naming;     // --naming: dds.naming of the scenario, overridden (travels as a --set)
   int domain = -1;
   double timeout = 10.0;
   bool json = false, quiet = false, report = false;

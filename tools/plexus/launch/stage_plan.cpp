@@ -33,6 +33,11 @@ void load_launch_scenario(LaunchOptions& o, LaunchPlan& plan) {
     o.sets.push_back("dds.transport=" + o.transport);
     o.transport.clear();
   }
+  if (!o.remote && !o.naming.empty()) {  // --naming likewise
+    rt::parse_naming(o.naming, "--naming");
+    o.sets.push_back("dds.naming=" + o.naming);
+    o.naming.clear();
+  }
   for (const auto& s : o.sets) plan.overrides.push_back(scenario::parse_override(s));
   plan.sc = plan.session ? scenario::load_scenario_text(plan.request.scenario_text, o.scenario, plan.overrides)
                          : scenario::load_scenario(o.scenario, plan.overrides);

@@ -36,6 +36,7 @@ std::unique_ptr<rt::Participant> launcher_participant(const LaunchOptions& o, co
   po.name = "plexus launch" + (o.host.empty() ? std::string() : " " + o.host);
   po.network = plan.net;
   po.security = plan.security.launcher;
+  po.naming = rt::parse_naming(plan.sc.dds_naming, "dds.naming");
   return rt::Participant::create(po);
 }
 
@@ -79,15 +80,16 @@ std::vector<std::string> process_args(const LaunchOptions& o, const LaunchPlan& 
   std::vector<std::string> args{"--part", part_file, "--service", p.service()};
   args.insert(args.end(), {"--domain", std::to_string(plan.domain), "--qos-file", plan.qos_file, "--timeout",
                            std::to_string(o.timeout), "--interface", address, "--peers", plan.peers, "--transport",
-                           sc.dds_transport});
+                           sc.dds_transport, "--naming", sc.dds_naming});
   args.insert(args.end(), {"--dds", p.vendor, "--mode", plan.realtime ? "realtime" : "lockstep"});
   if (plan.realtime) args.push_back("--start-signal");
   if (plan.realtime && p.priority > 0) args.insert(args.end(), {"--priority", std::to_string(p.priority)});
   if (plan.realtime && p.cpu >= 0) args.insert(args.end(), {"--cpu", std::to_string(p.cpu)});
   if (p.program == "replay") {  // plexus replay of the robot's topics, not a service
     args = replay_args(sc, p);
-    args.insert(args.end(), {"--dds", p.vendor, "--domain", std::to_string(plan.domain), "--qos-file", plan.qos_file,
-                             "--interface", address, "--peers", plan.peers, "--transport", sc.dds_transport});
+    args.insert(args.end(),
+                {"--dds", p.vendor, "--domain", std::to_string(plan.domain), "--qos-file", plan.qos_file, "--interface",
+                 address, "--peers", plan.peers, "--transport", sc.dds_transport, "--naming", sc.dds_naming});
   }
   const auto security_args = plan.security.args(p.name);
   args.insert(args.end(), security_args.begin(), security_args.end());

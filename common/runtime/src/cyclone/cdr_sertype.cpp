@@ -219,10 +219,10 @@ const struct ddsi_sertype_ops kSertypeOps = {
 
 }  // namespace
 
-struct ddsi_sertype* make_cdr_sertype(const msg::TypeSupport& type) {
+struct ddsi_sertype* make_cdr_sertype(const msg::TypeSupport& type, const std::string& wire_name) {
   auto* st = new CdrSertype{};
   st->type = &type;
-  ddsi_sertype_init(&st->c, type.type_name, &kSertypeOps, &kSerdataOps, /*topickind_no_key=*/true);
+  ddsi_sertype_init(&st->c, wire_name.c_str(), &kSertypeOps, &kSerdataOps, /*topickind_no_key=*/true);
   st->c.allowed_data_representation = DDS_DATA_REPRESENTATION_FLAG_XCDR1;
   return &st->c;
 }

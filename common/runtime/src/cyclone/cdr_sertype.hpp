@@ -6,14 +6,17 @@
 // exactly what goes on the wire, and the same bytes Fast DDS produces.
 #pragma once
 
+#include <string>
+
 #include <dds/dds.h>
 
 #include "plexus/msg/type_support.hpp"
 
 namespace plexus::rt::detail {
 
-/// A new sertype for `type` (keyless topics). Consumed by dds_create_topic_sertype.
-struct ddsi_sertype* make_cdr_sertype(const msg::TypeSupport& type);
+/// A new sertype for `type` (keyless topics), named `wire_name` on the wire (naming.hpp).
+/// Consumed by dds_create_topic_sertype.
+struct ddsi_sertype* make_cdr_sertype(const msg::TypeSupport& type, const std::string& wire_name);
 
 /// A serdata holding `sample` (a T) serialised; write it with dds_writecdr.
 struct ddsi_serdata* serdata_from_sample(const struct ddsi_sertype* type, const void* sample);

@@ -1,4 +1,4 @@
-// CycloneParticipant::discovered_endpoints: the built-in DCPSPublication / DCPSSubscription
+// CycloneParticipant::dds_endpoints: the built-in DCPSPublication / DCPSSubscription
 // topics (local endpoints included), with each endpoint's QoS as it was discovered.
 #include <cstring>
 #include <vector>
@@ -66,7 +66,7 @@ std::string guid_hex(const dds_guid_t& g) {
 
 }  // namespace
 
-std::vector<DiscoveredEndpoint> CycloneParticipant::discovered_endpoints() const {
+std::vector<DiscoveredEndpoint> CycloneParticipant::dds_endpoints() const {
   std::vector<DiscoveredEndpoint> out;
   dds_guid_t self{};
   dds_get_guid(participant_, &self);

@@ -360,23 +360,25 @@ CycloneParticipant::~CycloneParticipant() {
   release_domain(static_cast<dds_domainid_t>(options().domain_id));
 }
 
-CycloneParticipant::Topic CycloneParticipant::topic(const msg::TypeSupport& type, const std::string& name) {
+CycloneParticipant::Topic CycloneParticipant::topic(const msg::TypeSupport& type, const DdsNames& names) {
+  const std::string& name = names.topic;
   std::lock_guard lk(mu_);
   if (auto it = topics_.find(name); it != topics_.end()) {
-    if (std::strcmp(it->second.sertype->type_name, type.type_name) != 0)
+    if (names.type != it->second.sertype->type_name)
       throw std::runtime_error("topic '" + name + "' already exists with type " + it->second.sertype->type_name);
     return it->second;
   }
-  struct ddsi_sertype* st = detail::make_cdr_sertype(type);
+  struct ddsi_sertype* st = detail::make_cdr_sertype(type, names.type);
   // Consumes st; on return it points at the sertype Cyclone actually uses for the topic.
   const dds_entity_t t = dds_create_topic_sertype(participant_, name.c_str(), &st, nullptr, nullptr, nullptr);
   if (t < 0) throw std::runtime_error(cyc_error(("cannot create topic '" + name + "'").c_str(), t));
   return topics_[name] = Topic{t, st};
 }
 
-std::unique_ptr<WriterBackend> CycloneParticipant::make_writer(const msg::TypeSupport& type,
-                                                               const std::string& topic_name, const QosProfile& qos) {
-  const Topic t = topic(type, topic_name);
+std::unique_ptr<WriterBackend> CycloneParticipant::create_writer(const msg::TypeSupport& type, const DdsNames& names,
+                                                                 const QosProfile& qos) {
+  const std::string& topic_name = names.topic;
+  const Topic t = topic(type, names);
   auto w =
       std::make_unique<CycloneWriter>(*this, topic_name, detail::local_endpoint(options().name, true, qos), t.sertype);
   dds_listener_t* l = CycloneWriter::listener(w.get());
@@ -389,9 +391,10 @@ std::unique_ptr<WriterBackend> CycloneParticipant::make_writer(const msg::TypeSu
   return w;
 }
 
-std::unique_ptr<ReaderBackend> CycloneParticipant::make_reader(const msg::TypeSupport& type,
-                                                               const std::string& topic_name, const QosProfile& qos) {
-  const Topic t = topic(type, topic_name);
+std::unique_ptr<ReaderBackend> CycloneParticipant::create_reader(const msg::TypeSupport& type, const DdsNames& names,
+                                                                 const QosProfile& qos) {
+  const std::string& topic_name = names.topic;
+  const Topic t = topic(type, names);
   auto r = std::make_unique<CycloneReader>(*this, topic_name, detail::local_endpoint(options().name, false, qos));
   dds_listener_t* l = CycloneReader::listener(r.get(), false);
   dds_qos_t* q = make_qos(qos);

@@ -19,11 +19,6 @@ class CycloneParticipant final : public Participant, public detail::EventOwner {
   ~CycloneParticipant() override;
 
   Vendor vendor() const override { return Vendor::cyclone; }
-  std::unique_ptr<WriterBackend> make_writer(const msg::TypeSupport& type, const std::string& topic,
-                                             const QosProfile& qos) override;
-  std::unique_ptr<ReaderBackend> make_reader(const msg::TypeSupport& type, const std::string& topic,
-                                             const QosProfile& qos) override;
-  std::vector<DiscoveredEndpoint> discovered_endpoints() const override;
 
   // For the endpoint listeners.
   dds_entity_t handle() const { return participant_; }
@@ -37,12 +32,19 @@ class CycloneParticipant final : public Participant, public detail::EventOwner {
   /// The configuration XML plexus gives Cyclone for these network options (for tools and tests).
   static std::string config_xml(const NetworkOptions& net);
 
+ protected:
+  std::unique_ptr<WriterBackend> create_writer(const msg::TypeSupport& type, const DdsNames& names,
+                                               const QosProfile& qos) override;
+  std::unique_ptr<ReaderBackend> create_reader(const msg::TypeSupport& type, const DdsNames& names,
+                                               const QosProfile& qos) override;
+  std::vector<DiscoveredEndpoint> dds_endpoints() const override;
+
  private:
   struct Topic {
     dds_entity_t entity;
     const struct ddsi_sertype* sertype;
   };
-  Topic topic(const msg::TypeSupport& type, const std::string& name);
+  Topic topic(const msg::TypeSupport& type, const DdsNames& names);
   std::string participant_name(const dds_guid_t& key) const;
 
   dds_entity_t participant_ = 0;

@@ -431,22 +431,23 @@ FastParticipant::~FastParticipant() {
   }
 }
 
-fdds::Topic* FastParticipant::topic(const msg::TypeSupport& type, const std::string& name) {
+fdds::Topic* FastParticipant::topic(const msg::TypeSupport& type, const DdsNames& names) {
+  const std::string& name = names.topic;
   std::lock_guard lk(mu_);
   if (auto it = topics_.find(name); it != topics_.end()) {
-    if (it->second->get_type_name() != type.type_name)
+    if (it->second->get_type_name() != names.type)
       throw std::runtime_error("topic '" + name + "' already exists with type " + it->second->get_type_name());
     return it->second;
   }
   fdds::TypeSupport ts(type.make_fast_type());
-  ts.register_type(participant_);  // no-op if this type is already registered
-  fdds::Topic* t = participant_->create_topic(name, type.type_name, fdds::TOPIC_QOS_DEFAULT);
+  ts.register_type(participant_, names.type);  // under its wire name; no-op if already registered
+  fdds::Topic* t = participant_->create_topic(name, names.type, fdds::TOPIC_QOS_DEFAULT);
   if (!t) throw std::runtime_error("Fast DDS: cannot create topic '" + name + "'");
   topics_[name] = t;
   return t;
 }
 
-bool FastParticipant::data_sharing(const msg::TypeSupport& type) const {
+bool FastParticipant::data_sharing(const DdsNames& names) const {
   // Only when asked for (transport shm), not by default: a data-sharing reader reads the
   // sample in the writer's pool, so what it has received but not yet taken is gone when
   // the writer is deleted. Measured: a reader taking 6 s after start got the writer's last
@@ -454,15 +455,16 @@ bool FastParticipant::data_sharing(const msg::TypeSupport& type) const {
   // writer's process had ended (docs/runtime.md, Transports). Plain types only (fixed size):
   // the pool holds samples of one known size; LatencyProbe (a bounded sequence) uses SHM.
   if (options().network.transport != Transport::shm) return false;
-  const fdds::TypeSupport ts = participant_->find_type(type.type_name);
+  const fdds::TypeSupport ts = participant_->find_type(names.type);
   return !ts.empty() && ts.is_plain();
 }
 
-std::unique_ptr<WriterBackend> FastParticipant::make_writer(const msg::TypeSupport& type, const std::string& topic_name,
-                                                            const QosProfile& qos) {
-  fdds::Topic* t = topic(type, topic_name);
+std::unique_ptr<WriterBackend> FastParticipant::create_writer(const msg::TypeSupport& type, const DdsNames& names,
+                                                              const QosProfile& qos) {
+  const std::string& topic_name = names.topic;
+  fdds::Topic* t = topic(type, names);
   fdds::DataWriterQos wq = publisher_->get_default_datawriter_qos();
-  apply_common(wq, qos, data_sharing(type));
+  apply_common(wq, qos, data_sharing(names));
   // A lost sample is asked for when the next heartbeat arrives, and repaired 1 ms after the
   // request (NetworkOptions::reliable_heartbeat_s; Fast DDS's defaults: 3 s and 5 ms).
   wq.reliable_writer_qos().times.heartbeatPeriod = to_fast_duration(options().network.reliable_heartbeat_s);
@@ -474,11 +476,12 @@ std::unique_ptr<WriterBackend> FastParticipant::make_writer(const msg::TypeSuppo
   return w;
 }
 
-std::unique_ptr<ReaderBackend> FastParticipant::make_reader(const msg::TypeSupport& type, const std::string& topic_name,
-                                                            const QosProfile& qos) {
-  fdds::Topic* t = topic(type, topic_name);
+std::unique_ptr<ReaderBackend> FastParticipant::create_reader(const msg::TypeSupport& type, const DdsNames& names,
+                                                              const QosProfile& qos) {
+  const std::string& topic_name = names.topic;
+  fdds::Topic* t = topic(type, names);
   fdds::DataReaderQos rq = subscriber_->get_default_datareader_qos();
-  apply_common(rq, qos, data_sharing(type));
+  apply_common(rq, qos, data_sharing(names));
   // Asks for what a heartbeat says it missed 1 ms after it (default 5 ms): NetworkOptions.
   rq.reliable_reader_qos().times.heartbeatResponseDelay = eprosima::fastrtps::Duration_t(0, 1'000'000);
   auto r = std::make_unique<FastReader>(*this, topic_name, detail::local_endpoint(options().name, false, qos));
@@ -492,7 +495,7 @@ std::unique_ptr<ReaderBackend> FastParticipant::make_reader(const msg::TypeSuppo
   return r;
 }
 
-std::vector<DiscoveredEndpoint> FastParticipant::discovered_endpoints() const { return discovery_->endpoints(); }
+std::vector<DiscoveredEndpoint> FastParticipant::dds_endpoints() const { return discovery_->endpoints(); }
 
 std::string FastParticipant::describe_remote(const fdds::InstanceHandle_t& h) const { return discovery_->describe(h); }
 

@@ -27,11 +27,6 @@ class FastParticipant final : public Participant, public detail::EventOwner {
   ~FastParticipant() override;
 
   Vendor vendor() const override { return Vendor::fast; }
-  std::unique_ptr<WriterBackend> make_writer(const msg::TypeSupport& type, const std::string& topic,
-                                             const QosProfile& qos) override;
-  std::unique_ptr<ReaderBackend> make_reader(const msg::TypeSupport& type, const std::string& topic,
-                                             const QosProfile& qos) override;
-  std::vector<DiscoveredEndpoint> discovered_endpoints() const override;
 
   // For the endpoint listeners.
   eprosima::fastdds::dds::Publisher* publisher() const { return publisher_; }
@@ -41,11 +36,18 @@ class FastParticipant final : public Participant, public detail::EventOwner {
   std::string incompatible_remotes(const std::string& topic, bool remote_is_writer,
                                    const std::string& policy) const override;
 
+ protected:
+  std::unique_ptr<WriterBackend> create_writer(const msg::TypeSupport& type, const DdsNames& names,
+                                               const QosProfile& qos) override;
+  std::unique_ptr<ReaderBackend> create_reader(const msg::TypeSupport& type, const DdsNames& names,
+                                               const QosProfile& qos) override;
+  std::vector<DiscoveredEndpoint> dds_endpoints() const override;
+
  private:
   class Discovery;
-  eprosima::fastdds::dds::Topic* topic(const msg::TypeSupport& type, const std::string& name);
+  eprosima::fastdds::dds::Topic* topic(const msg::TypeSupport& type, const DdsNames& names);
   /// Whether endpoints of this (registered) type may use data sharing (NetworkOptions::transport).
-  bool data_sharing(const msg::TypeSupport& type) const;
+  bool data_sharing(const DdsNames& names) const;
 
   std::unique_ptr<Discovery> discovery_;
   eprosima::fastdds::dds::DomainParticipant* participant_ = nullptr;

@@ -19,6 +19,7 @@
 #include "plexus/runtime/discovery.hpp"
 #include "plexus/runtime/endpoint_backend.hpp"
 #include "plexus/runtime/events.hpp"
+#include "plexus/runtime/naming.hpp"
 #include "plexus/runtime/qos.hpp"
 #include "plexus/runtime/security.hpp"
 #include "plexus/runtime/transport.hpp"
@@ -55,6 +56,8 @@ struct ParticipantOptions {
   NetworkOptions network;
   /// DDS Security (off by default): identity, permissions, governance (security.hpp).
   SecurityOptions security;
+  /// Topic and type names on the wire: plexus's, or ROS 2's mapping (naming.hpp, docs/ros2.md).
+  Naming naming = Naming::plexus;
 };
 
 template <class T>
@@ -88,18 +91,31 @@ class Participant {
     return Subscriber<T>(make_reader(msg::type_support<T>(), topic, qos));
   }
 
-  /// Untyped endpoints (tools that pick the type at run time).
-  virtual std::unique_ptr<WriterBackend> make_writer(const msg::TypeSupport& type, const std::string& topic,
-                                                     const QosProfile& qos) = 0;
-  virtual std::unique_ptr<ReaderBackend> make_reader(const msg::TypeSupport& type, const std::string& topic,
-                                                     const QosProfile& qos) = 0;
+  /// Untyped endpoints (tools that pick the type at run time). `topic` as plexus names it;
+  /// on the wire under the participant's naming (naming.hpp).
+  std::unique_ptr<WriterBackend> make_writer(const msg::TypeSupport& type, const std::string& topic,
+                                             const QosProfile& qos) {
+    return create_writer(type, dds_names(options_.naming, type, topic), qos);
+  }
+  std::unique_ptr<ReaderBackend> make_reader(const msg::TypeSupport& type, const std::string& topic,
+                                             const QosProfile& qos) {
+    return create_reader(type, dds_names(options_.naming, type, topic), qos);
+  }
 
   /// Every endpoint discovered so far on this domain, local and remote, with its type name
-  /// and QoS (see discovery.hpp). Discovery takes time: tools wait a period first.
-  virtual std::vector<DiscoveredEndpoint> discovered_endpoints() const = 0;
+  /// and QoS (see discovery.hpp), its topic and type named as plexus names them (naming.hpp).
+  /// Discovery takes time: tools wait a period first.
+  std::vector<DiscoveredEndpoint> discovered_endpoints() const;
 
  protected:
   explicit Participant(ParticipantOptions options) : options_(std::move(options)) {}
+  /// The vendor's endpoints, under the names they have on the wire.
+  virtual std::unique_ptr<WriterBackend> create_writer(const msg::TypeSupport& type, const DdsNames& names,
+                                                       const QosProfile& qos) = 0;
+  virtual std::unique_ptr<ReaderBackend> create_reader(const msg::TypeSupport& type, const DdsNames& names,
+                                                       const QosProfile& qos) = 0;
+  /// What the vendor's discovery reports, names as on the wire.
+  virtual std::vector<DiscoveredEndpoint> dds_endpoints() const = 0;
   /// Back ends call this for every event: logs it, then calls the handler.
   void emit(const Event& e) const;
 

@@ -141,6 +141,9 @@ struct Scenario {
   int dds_domain = 0;
   /// dds.transport: "auto" | "udp" | "shm" (plexus/runtime/transport.hpp, docs/runtime.md).
   std::string dds_transport = "auto";
+  /// dds.naming: "plexus" | "ros2", topic and type names on the wire (plexus/runtime/naming.hpp,
+  /// docs/ros2.md); every process of the scenario the same.
+  std::string dds_naming = "plexus";
   std::vector<std::string> hosts;                   ///< in document order; the first runs the clock
   std::map<std::string, std::string> host_address;  ///< host -> address ("" if not given)
   /// How `plexus launch` reaches a host over ssh (hosts.<h>.ssh, workdir, plexus): empty

@@ -19,16 +19,17 @@ struct ServiceDdsOptions {
   std::string interface_address = "127.0.0.1";
   std::string peers = "127.0.0.1";
   std::string transport = "auto";  ///< auto | udp | shm (plexus/runtime/transport.hpp)
+  std::string naming = "plexus";   ///< plexus | ros2 (plexus/runtime/naming.hpp)
   std::string security;            ///< PKI folder: DDS Security on (docs/security.md); empty: off
   std::string identity;            ///< identity in <security>/identities, or a folder; empty: the default
   std::string governance;          ///< governance document; empty: <security>/governance.p7s
 
-  /// --dds, --domain, --qos-file, --service, --interface, --peers, --transport, --security,
+  /// --dds, --domain, --qos-file, --service, --interface, --peers, --transport, --naming, --security,
   /// --identity, --governance.
   void add_to(CLI::App& app);
   /// The participant: vendor, domain, network, security; named `service`, else
   /// `default_name`; identity `identity`, else `default_identity`. Throws InputError for a bad
-  /// vendor or transport or bad security material (one line naming the option and the file).
+  /// vendor, transport or naming or bad security material (one line naming the option and the file).
   rt::ParticipantOptions participant(const std::string& default_name, const std::string& default_identity) const;
   rt::QosProfiles profiles() const;
 };
