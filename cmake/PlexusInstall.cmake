@@ -50,7 +50,7 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/idl/plexus DESTINATION ${CMAKE_INSTALL_D
 # The programs a user runs (test helpers stay in the build tree).
 get_property(builtin_services GLOBAL PROPERTY PLEXUS_BUILTIN_SERVICES)
 get_property(builtin_components GLOBAL PROPERTY PLEXUS_BUILTIN_COMPONENT_LIBRARIES)
-install(TARGETS plexus ${builtin_services} serial_bridge udp_bridge device_emulator demo_node pingpong_node
+install(TARGETS plexus ${builtin_services} serial_bridge udp_bridge foxglove_bridge device_emulator demo_node pingpong_node
                 raw_fast_pingpong
         RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(TARGETS ${builtin_components} LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})

@@ -14,6 +14,8 @@ PACKAGES=(
   liborocos-kdl-dev libfftw3-dev libsqlite3-dev
   # MCAP recordings (common/mcap): zstd and LZ4 chunk compression, zlib's CRC-32
   libzstd-dev liblz4-dev zlib1g-dev
+  # the Foxglove WebSocket bridge (services/foxglove_bridge): websocketpp on standalone asio
+  libwebsocketpp-dev libasio-dev
   # tests and benchmarks; clang and its libFuzzer runtime for the fuzz targets (tests/fuzz)
   libgtest-dev libgmock-dev libbenchmark-dev clang libclang-rt-14-dev
   # tools used at run time: plots, loop-jitter baseline, network namespaces for multi-host tests
