@@ -1,9 +1,5 @@
 #include "foxglove_server.hpp"
 
-#define ASIO_STANDALONE
-#include <websocketpp/config/asio_no_tls.hpp>
-#include <websocketpp/server.hpp>
-
 #include <algorithm>
 #include <chrono>
 #include <future>
@@ -16,12 +12,10 @@
 #include "plexus/base/clock.hpp"
 #include "plexus/base/input_error.hpp"
 #include "plexus/base/logging.hpp"
+#include "ws_transport.hpp"
 
 namespace plexus::foxglove {
 namespace {
-
-using WsServer = websocketpp::server<websocketpp::config::asio>;
-using Hdl = websocketpp::connection_hdl;
 
 /// The bridge's readers: best effort, volatile, a short history (see the header).
 rt::QosProfile reader_qos() {
@@ -56,17 +50,15 @@ struct FoxgloveServer::Impl {
 
   rt::Participant& participant;
   BridgeOptions o;
-  WsServer server;
-  std::thread io_thread;
   std::string session_id = std::to_string(wall_time_ns());
 
-  // Asio thread only.
-  std::map<Hdl, Client, std::owner_less<Hdl>> clients;
+  // The I/O thread only.
+  std::map<uint64_t, Client> clients;
   std::vector<double> latency_us;  // ring of the last kLatencySamples sends
   std::size_t latency_next = 0;
   uint64_t clients_seen = 0;
 
-  mutable std::mutex table_mu;  // the table: discovery (main thread) and the asio thread
+  mutable std::mutex table_mu;  // the table: discovery (main thread) and the I/O thread
   ChannelTable table;
   std::mutex readers_mu;
   std::map<uint32_t, std::unique_ptr<ChannelReader>> readers;
@@ -75,34 +67,20 @@ struct FoxgloveServer::Impl {
   std::atomic<uint64_t> sent{0}, dropped_slow_client{0}, dropped_queue_full{0}, samples{0};
   static constexpr std::size_t kLatencySamples = 100000;
 
+  std::unique_ptr<WsTransport> ws;  // the last member: destroyed first, with its I/O thread
+
   Impl(rt::Participant& p, BridgeOptions options) : participant(p), o(std::move(options)) {
     latency_us.reserve(kLatencySamples);
-    server.clear_access_channels(websocketpp::log::alevel::all);
-    server.clear_error_channels(websocketpp::log::elevel::all);
-    server.init_asio();
-    server.set_reuse_addr(true);
-    server.set_validate_handler([this](Hdl h) {
-      const auto con = server.get_con_from_hdl(h);
-      const auto& asked = con->get_requested_subprotocols();
-      if (std::find(asked.begin(), asked.end(), kSubprotocol) == asked.end()) return false;
-      con->select_subprotocol(kSubprotocol);
-      return true;
-    });
-    server.set_open_handler([this](Hdl h) { on_open(h); });
-    server.set_close_handler([this](Hdl h) { clients.erase(h); });
-    server.set_fail_handler([this](Hdl h) { clients.erase(h); });
-    server.set_message_handler([this](Hdl h, WsServer::message_ptr m) {
-      if (m->get_opcode() == websocketpp::frame::opcode::text) on_text(h, m->get_payload());
-    });
-    std::error_code ec;
-    const auto address = asio::ip::make_address(o.address, ec);
-    if (ec) throw InputError("--address: '" + o.address + "' is not an IP address");
-    server.listen(asio::ip::tcp::endpoint(address, static_cast<unsigned short>(o.port)), ec);
-    if (ec) throw InputError("--port: cannot listen on " + o.address + ":" + std::to_string(o.port) + ": " + ec.message());
-    server.start_accept(ec);
-    if (ec) throw InputError("--port: cannot accept on " + o.address + ":" + std::to_string(o.port) + ": " + ec.message());
-    server.start_perpetual();  // runs until stop(), with or without connections (stats() posts to it)
-    io_thread = std::thread([this] { server.run(); });
+    WsTransport::Handlers h;
+    h.on_open = [this](uint64_t c) { on_open(c); };
+    h.on_close = [this](uint64_t c) { clients.erase(c); };
+    h.on_text = [this](uint64_t c, const std::string& text) { on_text(c, text); };
+    try {
+      ws = std::make_unique<WsTransport>(o.address, o.port, kSubprotocol, std::move(h));
+    } catch (const std::runtime_error& e) {
+      // "'x' is not an IP address" names the address; everything else the port.
+      throw InputError(std::string(e.what()[0] == '\'' ? "--address: " : "--port: ") + e.what());
+    }
   }
 
   ~Impl() {
@@ -110,16 +88,12 @@ struct FoxgloveServer::Impl {
       std::lock_guard lk(readers_mu);
       readers.clear();  // no DDS callback posts after this
     }
-    server.stop();
-    if (io_thread.joinable()) io_thread.join();
+    ws.reset();
   }
 
-  void send_text(Hdl h, const std::string& text) {
-    std::error_code ec;
-    server.send(h, text, websocketpp::frame::opcode::text, ec);
-  }
+  void send_text(uint64_t h, const std::string& text) { ws->send_text(h, text); }
 
-  void on_open(Hdl h) {
+  void on_open(uint64_t h) {
     clients[h] = Client{};
     ++clients_seen;
     send_text(h, server_info(o.name, session_id));
@@ -131,7 +105,7 @@ struct FoxgloveServer::Impl {
     send_text(h, advertise(all));  // at least one advertise, even empty (the spec)
   }
 
-  void on_text(Hdl h, const std::string& text) {
+  void on_text(uint64_t h, const std::string& text) {
     auto c = clients.find(h);
     if (c == clients.end()) return;
     const ClientMessage m = parse_client_message(text);
@@ -179,7 +153,7 @@ struct FoxgloveServer::Impl {
     readers.emplace(channel, std::move(r));
   }
 
-  /// On a DDS receive thread: each sample's CDR to the asio thread, unless its queue is full.
+  /// On a DDS receive thread: each sample's CDR to the I/O thread, unless its queue is full.
   void on_samples(ChannelReader& r) {
     rt::SampleMeta meta;
     while (r.reader->take_raw(r.sample, r.raw, &meta)) {
@@ -191,30 +165,26 @@ struct FoxgloveServer::Impl {
       queued.fetch_add(1, std::memory_order_relaxed);
       std::vector<unsigned char> frame;
       message_data(frame, 0, static_cast<uint64_t>(meta.receive_time_ns), r.raw.data(), r.raw.size());
-      asio::post(server.get_io_service(),
-                 [this, channel = r.channel, receive = meta.receive_time_ns, frame = std::move(frame)]() mutable {
-                   queued.fetch_sub(1, std::memory_order_relaxed);
-                   deliver(channel, receive, frame);
-                 });
+      ws->post([this, channel = r.channel, receive = meta.receive_time_ns, frame = std::move(frame)]() mutable {
+        queued.fetch_sub(1, std::memory_order_relaxed);
+        deliver(channel, receive, frame);
+      });
     }
   }
 
-  /// On the asio thread: the frame to every subscriber of the channel, with its subscription id.
+  /// On the I/O thread: the frame to every subscriber of the channel, with its subscription id.
   void deliver(uint32_t channel, int64_t receive_ns, std::vector<unsigned char>& frame) {
     for (auto& [h, c] : clients)
       for (const auto& [sub, ch] : c.subscriptions) {
         if (ch != channel) continue;
-        std::error_code ec;
-        const auto con = server.get_con_from_hdl(h, ec);
-        if (ec) continue;
-        if (con->get_buffered_amount() > o.max_client_buffer_bytes) {
+        if (ws->buffered(h) > o.max_client_buffer_bytes) {
           ++c.dropped;
           dropped_slow_client.fetch_add(1, std::memory_order_relaxed);
           continue;
         }
         for (int i = 0; i < 4; ++i) frame[1 + i] = static_cast<unsigned char>(sub >> (8 * i));
         const double lat = static_cast<double>(wall_time_ns() - receive_ns) * 1e-3;
-        con->send(frame.data(), frame.size(), websocketpp::frame::opcode::binary);
+        if (!ws->send_binary(h, frame.data(), frame.size())) continue;
         ++c.sent;
         sent.fetch_add(1, std::memory_order_relaxed);
         if (latency_us.size() < kLatencySamples)
@@ -236,7 +206,7 @@ struct FoxgloveServer::Impl {
       d = table.update(topics);
     }
     if (d.added.empty() && d.removed.empty()) return;
-    asio::post(server.get_io_service(), [this, d] {
+    ws->post([this, d] {
       for (auto& [h, c] : clients) {
         for (auto it = c.subscriptions.begin(); it != c.subscriptions.end();)
           it = std::count(d.removed.begin(), d.removed.end(), it->second) ? c.subscriptions.erase(it) : std::next(it);
@@ -247,21 +217,14 @@ struct FoxgloveServer::Impl {
   }
 
   void send_time() {
-    asio::post(server.get_io_service(), [this] {
+    ws->post([this] {
       const auto frame = time_frame(static_cast<uint64_t>(wall_time_ns()));
-      for (auto& [h, c] : clients) {
-        std::error_code ec;
-        server.send(h, frame.data(), frame.size(), websocketpp::frame::opcode::binary, ec);
-      }
+      for (auto& [h, c] : clients) ws->send_binary(h, frame.data(), frame.size());
     });
   }
 
   void close_all() {
-    asio::post(server.get_io_service(), [this] {
-      std::error_code ec;
-      server.stop_listening(ec);
-      for (auto& [h, c] : clients) server.close(h, websocketpp::close::status::going_away, "bridge stopping", ec);
-    });
+    ws->post([this] { ws->close_all("foxglove_bridge stopping"); });
   }
 };
 
@@ -293,10 +256,10 @@ void FoxgloveServer::run_until(const std::atomic<bool>& stop) {
 nlohmann::ordered_json FoxgloveServer::stats() const {
   std::vector<double> lat;
   std::promise<void> done;
-  // The latency ring and the clients belong to the asio thread: read there.
+  // The latency ring and the clients belong to the I/O thread: read there.
   std::size_t clients_now = 0;
   uint64_t seen = 0;
-  asio::post(impl_->server.get_io_service(), [&] {
+  impl_->ws->post([&] {
     lat = impl_->latency_us;
     clients_now = impl_->clients.size();
     seen = impl_->clients_seen;
