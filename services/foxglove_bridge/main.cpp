@@ -25,7 +25,8 @@ void on_signal(int) { g_stop = true; }
 
 int main(int argc, char** argv) {
   using namespace plexus;
-  CLI::App app{"foxglove_bridge: the typed topics of a DDS domain on the Foxglove WebSocket protocol (docs/viewing.md)"};
+  CLI::App app{
+      "foxglove_bridge: the typed topics of a DDS domain on the Foxglove WebSocket protocol (docs/viewing.md)"};
   app.set_version_flag("--version", std::string("foxglove_bridge ") + PLEXUS_VERSION);
   scenario::ServiceDdsOptions net;
   net.add_to(app);

@@ -8,7 +8,8 @@
 // member in the schema (and that it is finite). For SECONDS after each topic's first message
 // it counts messages; OUT.json gets, per topic, the count and the rate from the messages'
 // receive timestamps, for the script to compare with `plexus topic hz`. Exit 1 on a mismatch.
-import { FoxgloveClient } from "@foxglove/ws-protocol";
+import foxgloveWs from "@foxglove/ws-protocol";
+const { FoxgloveClient } = foxgloveWs;
 import WebSocket from "ws";
 import { parseIDL } from "@foxglove/omgidl-parser";
 import { MessageReader } from "@foxglove/omgidl-serialization";

@@ -15,7 +15,8 @@ pids=()
 cleanup() { for p in "${pids[@]}"; do kill "$p" 2> /dev/null || true; done; }
 trap cleanup EXIT
 "$plexus" launch "$here/../../deploy/scenarios/wmr_output_feedback_rfid.yaml" --set clock.mode=realtime \
-  --set duration=16 --dds "$vendor" --domain "$domain" --out "$out/run" --quiet > "$out/launch.log" 2>&1 &
+  --set duration=16 --set metrics.0.from=10 --set metrics.1.from=10 --dds "$vendor" --domain "$domain" \
+  --out "$out/run" --quiet > "$out/launch.log" 2>&1 &
 launch=$!
 pids+=("$launch")
 "$bridge" --dds "$vendor" --domain "$domain" --port "$port" > "$out/bridge.json" 2> "$out/bridge.log" &

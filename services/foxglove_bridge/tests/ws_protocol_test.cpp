@@ -38,7 +38,8 @@ TEST(WsProtocol, AdvertiseCarriesTheOmgidlSchemaAndCdr) {
 }
 
 TEST(WsProtocol, ClientMessagesParsed) {
-  const auto s = parse_client_message(R"({"op":"subscribe","subscriptions":[{"id":0,"channelId":3},{"id":1,"channelId":5}]})");
+  const auto s =
+      parse_client_message(R"({"op":"subscribe","subscriptions":[{"id":0,"channelId":3},{"id":1,"channelId":5}]})");
   ASSERT_EQ(s.op, ClientMessage::Op::subscribe);
   EXPECT_EQ(s.subscriptions, (std::vector<std::pair<uint32_t, uint32_t>>{{0, 3}, {1, 5}}));
   const auto u = parse_client_message(R"({"op":"unsubscribe","subscriptionIds":[0,1]})");
