@@ -63,7 +63,16 @@ struct FoxgloveServer::Impl {
   std::mutex readers_mu;
   std::map<uint32_t, std::unique_ptr<ChannelReader>> readers;
 
-  std::atomic<int> queued{0};
+  /// Samples on their way from the DDS threads to the I/O thread: one wake-up drains them all
+  /// (a post per sample cost a wake-up, and most of the bridge's CPU, each).
+  struct Pending {
+    uint32_t channel;
+    int64_t receive_ns;
+    std::vector<unsigned char> frame;
+  };
+  std::mutex out_mu;
+  std::vector<Pending> out_queue, out_draining;
+  bool drain_posted = false;
   std::atomic<uint64_t> sent{0}, dropped_slow_client{0}, dropped_queue_full{0}, samples{0};
   static constexpr std::size_t kLatencySamples = 100000;
 
@@ -153,23 +162,35 @@ struct FoxgloveServer::Impl {
     readers.emplace(channel, std::move(r));
   }
 
-  /// On a DDS receive thread: each sample's CDR to the I/O thread, unless its queue is full.
+  /// On a DDS receive thread: each sample's CDR queued for the I/O thread, unless the queue is full.
   void on_samples(ChannelReader& r) {
     rt::SampleMeta meta;
     while (r.reader->take_raw(r.sample, r.raw, &meta)) {
       samples.fetch_add(1, std::memory_order_relaxed);
-      if (queued.load(std::memory_order_relaxed) >= o.max_queued_frames) {
+      Pending p{r.channel, meta.receive_time_ns, {}};
+      message_data(p.frame, 0, static_cast<uint64_t>(meta.receive_time_ns), r.raw.data(), r.raw.size());
+      std::lock_guard lk(out_mu);
+      if (static_cast<int>(out_queue.size()) >= o.max_queued_frames) {
         dropped_queue_full.fetch_add(1, std::memory_order_relaxed);
         continue;
       }
-      queued.fetch_add(1, std::memory_order_relaxed);
-      std::vector<unsigned char> frame;
-      message_data(frame, 0, static_cast<uint64_t>(meta.receive_time_ns), r.raw.data(), r.raw.size());
-      ws->post([this, channel = r.channel, receive = meta.receive_time_ns, frame = std::move(frame)]() mutable {
-        queued.fetch_sub(1, std::memory_order_relaxed);
-        deliver(channel, receive, frame);
-      });
+      out_queue.push_back(std::move(p));
+      if (!drain_posted) {
+        drain_posted = true;
+        ws->post([this] { drain(); });
+      }
     }
+  }
+
+  /// On the I/O thread: everything queued so far, in order.
+  void drain() {
+    {
+      std::lock_guard lk(out_mu);
+      out_draining.swap(out_queue);
+      drain_posted = false;
+    }
+    for (auto& p : out_draining) deliver(p.channel, p.receive_ns, p.frame);
+    out_draining.clear();
   }
 
   /// On the I/O thread: the frame to every subscriber of the channel, with its subscription id.

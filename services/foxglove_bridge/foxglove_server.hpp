@@ -9,8 +9,8 @@
 //   Each sample's CDR as received (ReaderBackend::take_raw) goes out unchanged, stamped with
 //   its receive time.
 // - A slow client never slows anything: a frame for a client whose socket already holds
-//   `max_client_buffer_bytes` unsent is dropped and counted, as is a sample when the send
-//   queue holds `max_queued_frames`.
+//   `max_client_buffer_bytes` unsent is dropped and counted, as is a sample when
+//   `max_queued_frames` wait for the I/O thread (which takes them all at each wake-up).
 // - The server's time goes out every `time_period_s` (capability "time").
 #pragma once
 

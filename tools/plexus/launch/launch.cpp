@@ -51,6 +51,10 @@ LaunchRun::~LaunchRun() {
 void LaunchRun::stop_all() {
   const int64_t t = monotonic_ns();
   if (supervisor) supervisor->stop();
+  if (foxglove_bridge > 0) {
+    stop(foxglove_bridge);  // SIGTERM: it closes its connections and prints its counters to its log
+    foxglove_bridge = 0;
+  }
   if (remotes) remotes->stop();
   if (teardown_s < 0) teardown_s = static_cast<double>(monotonic_ns() - t) * 1e-9;
   if (relay) relay->drain();  // the children's last lines before the launcher's verdict

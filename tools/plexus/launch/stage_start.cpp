@@ -1,10 +1,15 @@
 // Stage 3 of plexus launch: the launcher's own participant and run folder, then every
 // process of this host started with its part of the scenario, and watched (stages.hpp).
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "plexus/base/clock.hpp"
@@ -12,6 +17,7 @@
 #include "plexus/base/logging.hpp"
 #include "plexus/evaluation/run_folder.hpp"
 #include "plexus/runtime/vendor.hpp"
+#include "child_process.hpp"
 #include "preflight.hpp"
 #include "run_result.hpp"
 #include "stages.hpp"
@@ -96,6 +102,37 @@ std::vector<std::string> process_args(const LaunchOptions& o, const LaunchPlan& 
   return args;
 }
 
+/// --foxglove PORT: foxglove_bridge on the run's domain, with the launcher's DDS options; its
+/// output to <run>/logs/foxglove_bridge.log. A port in use ends the launch before the run.
+void start_foxglove_bridge(const LaunchOptions& o, const LaunchPlan& plan, LaunchRun& run) {
+  if (plan.sc.security.enabled)
+    throw InputError("--foxglove: not with DDS Security yet (the bridge has no identity of its own)");
+  const std::string log = (std::filesystem::path(run.run_dir) / "logs" / "foxglove_bridge.log").string();
+  const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) throw InputError(log + ": cannot create the bridge's log");
+  std::vector<std::string> args{"--dds",       plan.vendor,       "--domain",  std::to_string(plan.domain),
+                                "--interface", plan.net.interface_address, "--peers", plan.peers,
+                                "--transport", plan.sc.dds_transport,      "--naming", plan.sc.dds_naming,
+                                "--port",      std::to_string(o.foxglove)};
+  try {
+    run.foxglove_bridge = spawn("foxglove_bridge", args, fd);
+  } catch (const std::exception& e) {
+    ::close(fd);
+    throw InputError(std::string("--foxglove: cannot start foxglove_bridge: ") + e.what());
+  }
+  ::close(fd);
+  // It listens within a moment, or stops at once with one line (a port in use).
+  for (int i = 0; i < 20; ++i) {
+    int status = 0;
+    if (exited(run.foxglove_bridge, status)) {
+      run.foxglove_bridge = 0;
+      throw InputError("--foxglove: foxglove_bridge stopped at once (" + log + " says why)");
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(25));
+  }
+  std::fprintf(stderr, "plexus launch: Foxglove live view on ws://127.0.0.1:%d (docs/viewing.md)\n", o.foxglove);
+}
+
 }  // namespace
 
 void start_launch(const LaunchOptions& o, LaunchPlan& plan, LaunchRun& run) {
@@ -117,6 +154,7 @@ void start_launch(const LaunchOptions& o, LaunchPlan& plan, LaunchRun& run) {
     p.args = process_args(o, plan, p, write_part(parts_dir, plan.sc, p));
     run.supervisor->start(p);
   }
+  if (o.foxglove > 0 && plan.runs_clock) start_foxglove_bridge(o, plan, run);
   // A child that dies ends the run, with its name and exit code (realtime: after a grace
   // during which the others' reaction is recorded).
   run.supervisor->watch();

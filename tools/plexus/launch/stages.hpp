@@ -14,6 +14,8 @@
 // stages, and (--record, --kill, the run folder) early in the start stage.
 #pragma once
 
+#include <sys/types.h>
+
 #include <atomic>
 #include <cstdint>
 #include <memory>
@@ -90,6 +92,7 @@ struct LaunchRun {
   FaultClock fault;
   std::atomic<bool> run_active{true};  ///< realtime: restarts allowed (false once the run has ended)
   std::optional<ProcessSupervisor> supervisor;
+  pid_t foxglove_bridge = 0;  ///< --foxglove: the bridge beside the run (not supervised: no heartbeat)
   bool supervising = false;  ///< the watcher runs: whatever ends the launcher stops every process
   int64_t launched_ns = 0;   ///< monotonic time every process of this host had been started
   double startup_s = -1;     ///< from the command to every process running
