@@ -28,8 +28,9 @@ Command add_launch_command(CLI::App& root) {
   c.app->add_option("--naming", o->naming,
                     "plexus or ros2: topic and type names on the wire, of every process (docs/ros2.md; default: "
                     "dds.naming, else plexus)");
-  c.app->add_option("--foxglove", o->foxglove,
-                    "Also start foxglove_bridge on 127.0.0.1:PORT, on the clock's host, for the run (docs/viewing.md)")
+  c.app
+      ->add_option("--foxglove", o->foxglove,
+                   "Also start foxglove_bridge on 127.0.0.1:PORT, on the clock's host, for the run (docs/viewing.md)")
       ->check(CLI::Range(1, 65535));
   c.app->add_option("--kill", o->kills, "Fault injection (realtime): SIGKILL PROCESS at SECONDS, as PROCESS@SECONDS");
   c.app->add_option("--external", o->externals,

@@ -12,12 +12,12 @@
 #include <thread>
 #include <vector>
 
+#include "child_process.hpp"
 #include "plexus/base/clock.hpp"
 #include "plexus/base/input_error.hpp"
 #include "plexus/base/logging.hpp"
 #include "plexus/evaluation/run_folder.hpp"
 #include "plexus/runtime/vendor.hpp"
-#include "child_process.hpp"
 #include "preflight.hpp"
 #include "run_result.hpp"
 #include "stages.hpp"
@@ -110,9 +110,12 @@ void start_foxglove_bridge(const LaunchOptions& o, const LaunchPlan& plan, Launc
   const std::string log = (std::filesystem::path(run.run_dir) / "logs" / "foxglove_bridge.log").string();
   const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd < 0) throw InputError(log + ": cannot create the bridge's log");
-  std::vector<std::string> args{"--dds",       plan.vendor,       "--domain",  std::to_string(plan.domain),
-                                "--interface", plan.net.interface_address, "--peers", plan.peers,
-                                "--transport", plan.sc.dds_transport,      "--naming", plan.sc.dds_naming,
+  std::vector<std::string> args{"--dds",       plan.vendor,
+                                "--domain",    std::to_string(plan.domain),
+                                "--interface", plan.net.interface_address,
+                                "--peers",     plan.peers,
+                                "--transport", plan.sc.dds_transport,
+                                "--naming",    plan.sc.dds_naming,
                                 "--port",      std::to_string(o.foxglove)};
   try {
     run.foxglove_bridge = spawn("foxglove_bridge", args, fd);

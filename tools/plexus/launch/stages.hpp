@@ -93,10 +93,10 @@ struct LaunchRun {
   std::atomic<bool> run_active{true};  ///< realtime: restarts allowed (false once the run has ended)
   std::optional<ProcessSupervisor> supervisor;
   pid_t foxglove_bridge = 0;  ///< --foxglove: the bridge beside the run (not supervised: no heartbeat)
-  bool supervising = false;  ///< the watcher runs: whatever ends the launcher stops every process
-  int64_t launched_ns = 0;   ///< monotonic time every process of this host had been started
-  double startup_s = -1;     ///< from the command to every process running
-  double teardown_s = -1;    ///< from the end of the run to every process stopped, on every host
+  bool supervising = false;   ///< the watcher runs: whatever ends the launcher stops every process
+  int64_t launched_ns = 0;    ///< monotonic time every process of this host had been started
+  double startup_s = -1;      ///< from the command to every process running
+  double teardown_s = -1;     ///< from the end of the run to every process stopped, on every host
 
   LaunchRun() = default;
   LaunchRun(const LaunchRun&) = delete;
