@@ -17,6 +17,7 @@
 #include <cstdio>
 
 #include "bridge.hpp"
+#include "plexus/base/cli_style.hpp"
 #include "plexus/base/input_error.hpp"
 #include "plexus/base/logging.hpp"
 #include "plexus/base/teardown_deadline.hpp"
@@ -76,7 +77,7 @@ int main(int argc, char** argv) {
   app.add_option("--part", part_file, "The robot's part of a scenario, with its source (written by plexus launch)");
   app.add_option("--robot", alone.robot, "Robot whose topics it serves (default r1)");
   app.add_option("--params", alone.params_file, "YAML robot section: the plant and sensors it stands in for");
-  app.add_option("--step", alone.step, "Base step in s (default 0.001)");
+  app.add_option("--step", alone.step, "Base step in s (default 0.001)")->check(positive("s"));
   app.add_option("--input-rate", alone.input_rates, "cmd=HZ: the command's rate (default 100); stale after 3 periods");
   app.add_option("--set", sets, "Parameter override key=value");
   if (kSerial) {
@@ -93,11 +94,11 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"realtime", "lockstep"}));
   app.add_flag("--start-signal", start_signal, "Accepted for plexus launch; a bridge starts at once");
   app.add_option("--timeout", timeout, "Accepted for plexus launch (lockstep only)");
-  app.add_option("--log-level", log_level, "trace, debug, info, warn, error");
+  app.add_option("--log-level", log_level, "trace, debug, info, warn, error, critical or off");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? 0 : kExitBadInput;
+    return parse_error_exit(app, e, name);
   }
   if (!part_file.empty()) prctl(PR_SET_PDEATHSIG, SIGTERM);  // under the launcher: never outlive it
   std::signal(SIGINT, on_signal);

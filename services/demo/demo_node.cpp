@@ -15,6 +15,7 @@
 #include <thread>
 #include <vector>
 
+#include "plexus/base/cli_style.hpp"
 #include "plexus/base/clock.hpp"
 #include "plexus/base/input_error.hpp"
 #include "plexus/base/logging.hpp"
@@ -156,11 +157,11 @@ int main(int argc, char** argv) {
   app.add_option("--count", count, "source: samples to send")->check(CLI::Range(1, 10'000'000));
   app.add_option("--duration", duration, "echo: seconds to run (0: until SIGINT/SIGTERM)");
   app.add_option("--timeout", timeout, "source: seconds to wait for the echo");
-  app.add_option("--log-level", log_level, "trace, debug, info, warn, error");
+  app.add_option("--log-level", log_level, "trace, debug, info, warn, error, critical or off");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? 0 : kExitBadInput;
+    return plexus::parse_error_exit(app, e, "demo_node");
   }
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);

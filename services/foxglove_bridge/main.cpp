@@ -14,6 +14,7 @@
 #include <cstdio>
 
 #include "foxglove_server.hpp"
+#include "plexus/base/cli_style.hpp"
 #include "plexus/base/input_error.hpp"
 #include "plexus/base/logging.hpp"
 #include "plexus/service/dds_options.hpp"
@@ -42,9 +43,7 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    if (e.get_exit_code() == 0) return app.exit(e);
-    std::fprintf(stderr, "foxglove_bridge: error: %s (--help lists the options)\n", e.what());
-    return 2;
+    return parse_error_exit(app, e, "foxglove_bridge");
   }
   try {
     o.max_client_buffer_bytes = static_cast<std::size_t>(max_buffer_mb * 1024 * 1024);

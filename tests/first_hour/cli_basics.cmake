@@ -16,13 +16,13 @@ add_test(NAME first_hour.duration_beyond_memory
          COMMAND ${EXPECT} 2 "^plexus sim: error: .*unicycle_circle.yaml: duration: 1e\\+07 s of [0-9]+ signals needs [0-9.]+ GB to record, more than half of this machine's"
          $<TARGET_FILE:plexus> sim ${FH_SCENARIO} --quiet --set duration=1e7)
 add_test(NAME first_hour.negative_timeout
-         COMMAND ${EXPECT} 2 "^plexus launch: --timeout: must be > 0 s \\(got -1\\)"
+         COMMAND ${EXPECT} 2 "^plexus launch: error: --timeout: must be > 0 s \\(got -1\\)"
          $<TARGET_FILE:plexus> launch ${FH_SCENARIO} --timeout -1)
 add_test(NAME first_hour.zero_wait
          COMMAND ${EXPECT} 2 "--wait: must be > 0 s \\(got 0\\)"
          $<TARGET_FILE:plexus> topic list --wait 0)
 add_test(NAME first_hour.service_zero_timeout
-         COMMAND ${EXPECT} 2 "^plant_simulator: --timeout: must be > 0 s \\(got 0\\)"
+         COMMAND ${EXPECT} 2 "^plant_simulator: error: --timeout: must be > 0 s \\(got 0\\)"
          $<TARGET_FILE:plant_simulator> --timeout 0)
 set_tests_properties(first_hour.unknown_command first_hour.error_prefix_names_the_command
                      first_hour.duration_beyond_the_step_limit first_hour.duration_beyond_memory

@@ -119,7 +119,7 @@ int main(int argc, char** argv) {
   app.add_option("--faults", faults_file, "YAML list of faults: - {kind: flip, at: 1.5, count: 3}");
   app.add_option("--seed", seed, "Seed of the faults' random choices (default 1)");
   app.add_option("--duration", duration, "Run this many seconds (default: until SIGINT/SIGTERM)");
-  app.add_option("--log-level", log_level, "trace, debug, info, warn, error");
+  app.add_option("--log-level", log_level, "trace, debug, info, warn, error, critical or off");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

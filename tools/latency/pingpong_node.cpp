@@ -12,6 +12,7 @@
 #include <thread>
 
 #include "pingpong_common.hpp"
+#include "plexus/base/cli_style.hpp"
 #include "plexus/base/input_error.hpp"
 #include "plexus/base/logging.hpp"
 #include "plexus/base/teardown_deadline.hpp"
@@ -82,12 +83,12 @@ int main(int argc, char** argv) {
   app.add_option("--dds", dds, "DDS vendor: fast or cyclone");
   app.add_option("--qos-file", qos_file, "QoS profiles (default: deploy/qos.yaml)");
   app.add_option("--profile", profile, "QoS profile name");
-  app.add_option("--log-level", log_level, "trace, debug, info, warn, error");
+  app.add_option("--log-level", log_level, "trace, debug, info, warn, error, critical or off");
   app.add_option("--transport", transport, "auto, udp or shm (docs/runtime.md, Transports)");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? 0 : kExitBadInput;
+    return plexus::parse_error_exit(app, e, "pingpong_node");
   }
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);

@@ -161,13 +161,15 @@ int run_record(const RecordOpts& o) {
   write_pending();
   const std::size_t n_topics = readers.size();
   readers.clear();
-  std::printf("recorded %llu samples from %zu topic(s) to %s\n", static_cast<unsigned long long>(written), n_topics,
-              o.out.c_str());
   if (n_topics == 0) {
-    std::fprintf(stderr, "plexus record: no topic with a writer was discovered on domain %d\n", o.dds.domain);
-    return 1;  // `file` is not committed: an existing recording at -o is left as it was
+    // `file` is not committed: nothing is written, an existing recording at -o is left as it was.
+    std::fprintf(stderr, "plexus record: error: no topic with a writer was discovered on domain %d; %s not written\n",
+                 o.dds.domain, o.out.c_str());
+    return 1;
   }
   file->commit();
+  std::printf("recorded %llu samples from %zu topic(s) to %s\n", static_cast<unsigned long long>(written), n_topics,
+              o.out.c_str());
   return 0;
 }
 

@@ -236,7 +236,7 @@ Command add_replay_command(CLI::App& root) {
   c.app->add_option("--topics", o->topics, "comma-separated topics (default: all recorded)");
   c.app->add_option("--rate-scale", o->rate_scale, "speed relative to the recording (1: recorded speed)")
       ->capture_default_str();
-  c.app->add_option("--rate", o->rate, "publish one sample every 1/HZ seconds instead");
+  c.app->add_option("--rate", o->rate, "publish one sample every 1/HZ seconds instead")->check(plexus::positive("Hz"));
   c.app->add_flag("--fast", o->fast, "as fast as possible");
   c.app->add_flag("--lockstep", o->lockstep,
                   "follow the lockstep clock on --clock-topic: at each ClockStep, the samples whose header data time "

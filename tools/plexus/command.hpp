@@ -8,6 +8,8 @@
 #include <functional>
 #include <string>
 
+#include "plexus/base/cli_style.hpp"
+
 namespace plexus::cli {
 
 struct Command {
@@ -28,15 +30,6 @@ Command add_deploy_command(CLI::App& root);
 
 /// A duration option that must be > 0 s (a zero or negative wait or timeout is refused,
 /// exit 2: "--timeout: must be > 0 s (got -1)").
-inline CLI::Validator positive_seconds() {
-  return CLI::Validator(
-      [](std::string& v) -> std::string {
-        char* end = nullptr;
-        const double x = std::strtod(v.c_str(), &end);
-        if (end == v.c_str() || *end != '\0' || !std::isfinite(x) || x <= 0.0) return "must be > 0 s (got " + v + ")";
-        return {};
-      },
-      "SECONDS > 0");
-}
+inline CLI::Validator positive_seconds() { return positive("s"); }
 
 }  // namespace plexus::cli

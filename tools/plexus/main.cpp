@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "command.hpp"
+#include "plexus/base/cli_style.hpp"
 #include "plexus/base/input_error.hpp"
 #include "plexus/base/logging.hpp"
 #include "plexus/scenario/plugins.hpp"
@@ -53,11 +54,9 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     // CLI11 exits 0 for --help and 106/109... for usage errors: usage errors are bad input,
     // exit 2, with a one-line error under the same prefix as the others.
-    if (e.get_exit_code() == 0) return app.exit(e);
     std::string cmd = "plexus";
     for (const auto* sub : app.get_subcommands()) cmd += " " + sub->get_name();
-    std::fprintf(stderr, "%s: %s (--help lists the options)\n", cmd.c_str(), e.what());
-    return plexus::kExitBadInput;
+    return plexus::parse_error_exit(app, e, cmd);
   }
   // One prefix for every error line: "plexus <command>: ".
   std::string prefix = "plexus";

@@ -24,6 +24,7 @@
 #include <csignal>
 #include <cstdio>
 
+#include "plexus/base/cli_style.hpp"
 #include "plexus/base/input_error.hpp"
 #include "plexus/base/logging.hpp"
 #include "plexus/base/teardown_deadline.hpp"
@@ -105,7 +106,8 @@ int plexus::service::run_service(int argc, char** argv, const std::string& self)
                  hosts_plant ? "YAML robot section: plant and sensors (docs/scenarios.md)"
                              : "YAML parameters of the service (the keys of its scenario section, docs/scenarios.md)");
   if (!hosts_plant) app.add_option("--type", alone.type, "Component type (default: " + alone.type + ")");
-  app.add_option("--step", alone.step, "Base step in s (default: 1 / its rate; plant_simulator 0.001)");
+  app.add_option("--step", alone.step, "Base step in s (default: 1 / its rate; plant_simulator 0.001)")
+      ->check(positive("s"));
   app.add_option("--input-rate", alone.input_rates,
                  hosts_plant
                      ? "cmd=HZ: the command's rate (default 100); stale after 3 periods"
@@ -115,29 +117,20 @@ int plexus::service::run_service(int argc, char** argv, const std::string& self)
   app.add_option("--profile", profile, "QoS profile of the lockstep topics");
   app.add_option("--timeout", timeout,
                  "Seconds to wait for one input (lockstep) or for the start signal (--start-signal) before failing")
-      ->check(CLI::Validator(
-          [](std::string& v) {
-            char* end = nullptr;
-            const double x = std::strtod(v.c_str(), &end);
-            return end != v.c_str() && *end == '\0' && std::isfinite(x) && x > 0.0 ? std::string()
-                                                                                   : "must be > 0 s (got " + v + ")";
-          },
-          "SECONDS > 0"));
+      ->check(positive("s"));
   app.add_option("--mode", mode, "realtime (default) or lockstep (steps with a plexus launch clock)")
       ->check(CLI::IsMember({"lockstep", "realtime"}));
   app.add_flag("--start-signal", start_signal, "Realtime: wait for the launcher's start signal (plexus launch)");
   app.add_option("--priority", priority, "Realtime: SCHED_FIFO priority (0: normal scheduling)");
   app.add_option("--cpu", cpu, "Realtime: pin the loop to this CPU");
-  app.add_option("--log-level", log_level, "trace, debug, info, warn, error");
+  app.add_option("--log-level", log_level, "trace, debug, info, warn, error, critical or off");
   std::vector<std::string> plugins;
   app.add_option("--plugin", plugins,
                  "Load a shared library of component or message types first (docs/sdk.md); repeatable");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    if (e.get_exit_code() == 0) return app.exit(e);                                       // --help, --version
-    std::fprintf(stderr, "%s: %s (--help lists the options)\n", self.c_str(), e.what());  // one line
-    return kExitBadInput;
+    return parse_error_exit(app, e, self);
   }
   if (!part_file.empty()) prctl(PR_SET_PDEATHSIG, SIGTERM);  // under the launcher: never outlive it
   std::signal(SIGINT, on_signal);

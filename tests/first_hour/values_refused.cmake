@@ -1,0 +1,26 @@
+# Values that were accepted and should not have been (issue 31, "The rough edges"): each is
+# one line "<program>: error: <option>: ..." and exit 2, the style of every command-line
+# error (plexus/base/cli_style.hpp). Each failed before its fix: --step 0 and -0.01 ran,
+# replay --rate 0 replayed at the recorded speed, CLI11's own errors had no "error:", and a
+# recorder with nothing to record said it had recorded to a file it did not write.
+add_test(NAME first_hour.service_step_zero
+         COMMAND ${EXPECT} 2 "^plant_simulator: error: --step: must be > 0 s \\(got 0\\)"
+         $<TARGET_FILE:plant_simulator> --params ${PROJECT_SOURCE_DIR}/deploy/params/unicycle_robot.yaml --step 0)
+add_test(NAME first_hour.service_step_negative
+         COMMAND ${EXPECT} 2 "^localisation_observer: error: --step: must be > 0 s \\(got -0.01\\)"
+         $<TARGET_FILE:localisation_observer> --step -0.01)
+add_test(NAME first_hour.bridge_step_negative
+         COMMAND ${EXPECT} 2 "^udp_bridge: error: --step: must be > 0 s \\(got -0.01\\)"
+         $<TARGET_FILE:udp_bridge> --step -0.01)
+add_test(NAME first_hour.replay_rate_zero
+         COMMAND ${EXPECT} 2 "^plexus replay: error: --rate: must be > 0 Hz \\(got 0\\)"
+         $<TARGET_FILE:plexus> replay /nonexistent/run.mcap --rate 0)
+add_test(NAME first_hour.parser_error_style
+         COMMAND ${EXPECT} 2 "^plexus launch: error: --domain: Value 233 not in range 0 to 232 \\(--help lists the options\\)$"
+         $<TARGET_FILE:plexus> launch ${FH_SCENARIO} --domain 233)
+add_test(NAME first_hour.record_nothing_writes_nothing
+         COMMAND ${EXPECT} 1 "^plexus record: error: no topic with a writer was discovered on domain 214; .*/nothing.mcap not written$"
+         $<TARGET_FILE:plexus> record -o ${CMAKE_BINARY_DIR}/test-runs/first_hour/nothing.mcap --duration 0.5 --domain 214)
+set_tests_properties(first_hour.service_step_zero first_hour.service_step_negative first_hour.bridge_step_negative
+                     first_hour.replay_rate_zero first_hour.parser_error_style first_hour.record_nothing_writes_nothing
+                     PROPERTIES LABELS "cli;first_hour")
