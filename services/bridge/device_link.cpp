@@ -57,6 +57,11 @@ std::unique_ptr<DeviceLink> udp_link(const std::string& bind, const std::string&
   if (!link::parse_endpoint(bind, where + ".bind", local, error) ||
       !link::parse_endpoint(peer, where + ".peer", remote, error))
     throw InputError(error);
+  // A port that cannot be bound (in use, or an address not of this host) is a configuration
+  // error, exit 2 at start; an absent device is retried, a busy port would be forever.
+  const int fd = link::open_udp(local, remote, error);
+  if (fd < 0) throw InputError(where + ".bind: " + error);
+  ::close(fd);
   return std::make_unique<UdpLink>(std::move(local), std::move(remote));
 }
 

@@ -1,13 +1,15 @@
 // A Foxglove WebSocket client (@foxglove/ws-protocol over `ws`) against foxglove_bridge
 // (tests/ecosystem/foxglove_rfid.sh):
 //   node foxglove_check.mjs URL SECONDS OUT.json TOPIC...
+// (OUT.json.ready is written once every TOPIC has its first message.)
 // Connects with subprotocol foxglove.websocket.v1, checks the server info (capability "time")
 // and that every channel is advertised with an omgidl schema and cdr encoding; subscribes to
 // the TOPICs, decodes every message with @foxglove/omgidl-parser and
 // @foxglove/omgidl-serialization, and checks each decoded number against the @range of its
 // member in the schema (and that it is finite). For SECONDS after each topic's first message
-// it counts messages; OUT.json gets, per topic, the count and the rate from the messages'
-// receive timestamps, for the script to compare with `plexus topic hz`. TOPIC "*": every
+// it counts messages; OUT.json gets, per topic, the count, the rate from the messages'
+// receive timestamps and the timestamps themselves (wall clock, ns), for the script to count
+// over exactly the window `plexus topic hz` measured (a loaded machine's rate drifts). TOPIC "*": every
 // advertised topic (tools/bench/foxglove_cost.sh). Exit 1 on a mismatch.
 import foxgloveWs from "@foxglove/ws-protocol";
 const { FoxgloveClient } = foxgloveWs;
@@ -15,6 +17,7 @@ import WebSocket from "ws";
 import { parseIDL } from "@foxglove/omgidl-parser";
 import { MessageReader } from "@foxglove/omgidl-serialization";
 import { writeFile } from "node:fs/promises";
+import { writeFileSync } from "node:fs";
 
 const [url, secondsArg, outFile, ...topics] = process.argv.slice(2);
 if (!url || !secondsArg || !outFile || topics.length === 0) {
@@ -51,9 +54,10 @@ function ranges(idl) {
 const client = new FoxgloveClient({ ws: new WebSocket(url, [FoxgloveClient.SUPPORTED_SUBPROTOCOL]) });
 const wanted = new Map(); // subscription id -> {topic, reader, limits, first, last, n, window}
 let serverInfo = null;
+let readyWritten = false;
 let times = 0;
 const done = new Promise((resolve) => {
-  setTimeout(resolve, (seconds + 8) * 1000); // at most: the topics' first messages come within 8 s
+  setTimeout(resolve, (seconds + 20) * 1000); // at most: the topics' first messages come within 20 s
   client.on("serverInfo", (info) => {
     serverInfo = info;
   });
@@ -75,14 +79,20 @@ const done = new Promise((resolve) => {
         continue;
       }
       const id = client.subscribe(c.id);
-      wanted.set(id, { topic: c.topic, reader, limits, first: null, last: null, n: 0, decoded: 0 });
+      wanted.set(id, { topic: c.topic, reader, limits, first: null, last: null, n: 0, decoded: 0, times: [] });
     }
   });
   client.on("message", ({ subscriptionId, timestamp, data }) => {
     const w = wanted.get(subscriptionId);
     if (!w) return fail(`a message for subscription ${subscriptionId}, which the client never made`);
     const t = Number(timestamp) * 1e-9;
-    if (w.first === null) w.first = t;
+    if (w.first === null) {
+      w.first = t;
+      if (!readyWritten && wanted.size === topics.length && [...wanted.values()].every((x) => x.first !== null)) {
+        readyWritten = true;
+        writeFileSync(`${outFile}.ready`, "");
+      }
+    }
     if (t - w.first > seconds) {
       if ([...wanted.values()].every((x) => x.first !== null && x.last !== null && x.last - x.first >= seconds - 0.05))
         resolve();
@@ -90,6 +100,7 @@ const done = new Promise((resolve) => {
     }
     w.last = t;
     w.n++;
+    w.times.push(Number(timestamp));
     let value;
     try {
       value = w.reader.readMessage(new Uint8Array(data.buffer, data.byteOffset, data.byteLength));
@@ -123,10 +134,17 @@ for (const t of checked) {
     if (checked === topics) fail(`${t}: ${w.n} messages`);  // "*" takes slow topics as they come
     continue;
   }
-  result[t] = { messages: w.n, decoded: w.decoded, span_s: w.last - w.first, rate_hz: (w.n - 1) / (w.last - w.first) };
+  result[t] = {
+    messages: w.n,
+    decoded: w.decoded,
+    span_s: w.last - w.first,
+    rate_hz: (w.n - 1) / (w.last - w.first),
+    receive_ns: checked === topics ? w.times : undefined,
+  };
 }
 await writeFile(outFile, JSON.stringify(result, null, 1));
-console.log(`foxglove client: ${JSON.stringify(result)}; ${times} time messages`);
+const brief = Object.fromEntries(Object.entries(result).map(([t, r]) => [t, { ...r, receive_ns: undefined }]));
+console.log(`foxglove client: ${JSON.stringify(brief)}; ${times} time messages`);
 if (failures.length > 0) {
   for (const f of failures) console.error(`MISMATCH ${f}`);
   process.exit(1);

@@ -19,8 +19,16 @@ add_test(NAME first_hour.parser_error_style
          COMMAND ${EXPECT} 2 "^plexus launch: error: --domain: Value 233 not in range 0 to 232 \\(--help lists the options\\)$"
          $<TARGET_FILE:plexus> launch ${FH_SCENARIO} --domain 233)
 add_test(NAME first_hour.record_nothing_writes_nothing
-         COMMAND ${EXPECT} 1 "^plexus record: error: no topic with a writer was discovered on domain 214; .*/nothing.mcap not written$"
-         $<TARGET_FILE:plexus> record -o ${CMAKE_BINARY_DIR}/test-runs/first_hour/nothing.mcap --duration 0.5 --domain 214)
+         COMMAND ${EXPECT} 1 "^plexus record: error: no topic with a writer was discovered on domain 155; .*/nothing.mcap not written$"
+         $<TARGET_FILE:plexus> record -o ${CMAKE_BINARY_DIR}/test-runs/first_hour/nothing.mcap --duration 0.5 --domain 155)
 set_tests_properties(first_hour.service_step_zero first_hour.service_step_negative first_hour.bridge_step_negative
                      first_hour.replay_rate_zero first_hour.parser_error_style first_hour.record_nothing_writes_nothing
                      PROPERTIES LABELS "cli;first_hour")
+add_test(NAME first_hour.udp_bind_busy
+         COMMAND ${CMAKE_CURRENT_LIST_DIR}/udp_bind_busy.sh $<TARGET_FILE:udp_bridge>
+                 ${PROJECT_SOURCE_DIR}/deploy/params/unicycle_robot.yaml 47991)
+set_tests_properties(first_hour.udp_bind_busy PROPERTIES LABELS "cli;first_hour" TIMEOUT 60)
+add_test(NAME first_hour.stop_summary_at_default_level
+         COMMAND ${CMAKE_CURRENT_LIST_DIR}/stop_summary.sh $<TARGET_FILE:plant_simulator>
+                 ${PROJECT_SOURCE_DIR}/deploy/params/unicycle_robot.yaml 150)
+set_tests_properties(first_hour.stop_summary_at_default_level PROPERTIES LABELS "cli;first_hour" TIMEOUT 30)

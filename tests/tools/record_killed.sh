@@ -34,8 +34,11 @@ wait "$recorder" 2> /dev/null
 info=$("$bin/plexus" record info "$rec" --json) || fail "record info refused the cut recording"
 echo "$info" | jq -c '{complete, cut_short, messages, chunks, from_summary}'
 n=$(echo "$info" | jq -r .messages)
-echo "$info" | jq -e '.complete == false and .from_summary == false and .messages >= 400' > /dev/null ||
-  fail "expected a cut-short recording of at least 400 samples (two chunks at 200 Hz)"
+# The three chunks seen before the kill, read back from a file without a summary. (Not a
+# sample count: how many samples a second holds depends on the machine's load; a count of 400
+# failed once under ctest -j2 beside a realtime run, with 387 samples in 3 chunks.)
+echo "$info" | jq -e '.complete == false and .from_summary == false and .chunks >= 3 and .messages > 0' > /dev/null ||
+  fail "expected a cut-short recording read without its summary, with the 3 chunks written before the kill"
 kill "${pids[0]}" 2> /dev/null
 wait "${pids[0]}" 2> /dev/null
 

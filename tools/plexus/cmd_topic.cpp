@@ -261,7 +261,10 @@ int run_hz(const TopicOpts& o) {
                                 {"interval_min_ms", all.n ? all.min * 1e3 : 0.0},
                                 {"interval_max_ms", all.max * 1e3},
                                 {"interval_std_ms", all.stddev() * 1e3},
-                                {"span_s", static_cast<double>(last - first) * 1e-9}};
+                                {"span_s", static_cast<double>(last - first) * 1e-9},
+                                // The window itself (wall clock, ns), to compare another observer over it.
+                                {"first_receive_ns", first},
+                                {"last_receive_ns", last}};
     std::printf("%s\n", j.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace).c_str());
   } else {
     print(all, "total");

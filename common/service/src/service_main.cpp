@@ -24,6 +24,8 @@
 #include <csignal>
 #include <cstdio>
 
+#include <spdlog/fmt/fmt.h>
+
 #include "plexus/base/cli_style.hpp"
 #include "plexus/base/input_error.hpp"
 #include "plexus/base/logging.hpp"
@@ -178,17 +180,26 @@ int plexus::service::run_service(int argc, char** argv, const std::string& self)
       if (app.count("--timeout")) ro.start_timeout_s = timeout;  // the longest wait for the start signal too
       distributed::RealtimeHost host(sc, hosted, *participant, profiles, ro);
       const auto r = host.run(g_stop);
-      spdlog::info(
+      // The stop summary (docs/services.md): on stderr at any log level when the service runs
+      // alone; under plexus launch, whose summary has these counts, at info.
+      const std::string summary = fmt::format(
           "ran {} ticks: {} holds, {} stale and {} late input reads, {} refused samples, jitter p99 {:.1f} us, "
           "{} overruns, {} blind estimator steps; {} loop iterations, compute p99 {:.1f} us, "
           "{} estimator steps run after their tick, {} late samples dropped or bridged",
           r.ticks, r.holds, r.stale_inputs, r.late_inputs, r.rejected_inputs, r.loop.jitter_p99_us, r.loop.overruns,
           r.blind_steps, r.loop.iterations, r.loop.compute_p99_us, r.deferred_steps, r.dropped_late_samples);
+      if (part_file.empty())
+        std::fprintf(stderr, "%s: %s\n", po.name.c_str(), summary.c_str());
+      else
+        spdlog::info("{}", summary);
       return exit_within(0, kTeardownDeadlineS, self);  // armed before the participant is deleted
     }
     distributed::LockstepHost host(sc, hosted, *participant, profiles.get(profile), {.timeout_s = timeout});
     const int64_t steps = host.run(g_stop);
-    spdlog::info("ran {} steps", steps);
+    if (part_file.empty())
+      std::fprintf(stderr, "%s: ran %lld steps\n", po.name.c_str(), static_cast<long long>(steps));
+    else
+      spdlog::info("ran {} steps", steps);
     return exit_within(0, kTeardownDeadlineS, self);
   } catch (const InputError& e) {
     std::fprintf(stderr, "%s: error: %s\n", self.c_str(), e.what());
