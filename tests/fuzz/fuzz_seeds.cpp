@@ -44,7 +44,8 @@ void write(const fs::path& p, const std::vector<unsigned char>& bytes) {
 /// A sample of `ts`: header stamped; a signal type's fields within their ranges for `joints`.
 std::vector<unsigned char> sample_cdr(const msg::TypeSupport& ts, int joints) {
   void* s = ts.create();
-  if (const dist::WireType* wt = dist::find_wire_type(ts.type_name)) {
+  const dist::WireType* wt = dist::find_wire_type(ts.type_name);
+  if (wt && ts.header) {  // a type without a header (LinkStatus, nested) carries no signal
     plexus::scenario::SignalSpec spec;
     spec.name = "r1/seed";
     spec.producer = "seed";
