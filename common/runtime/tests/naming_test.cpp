@@ -2,6 +2,8 @@
 // meet under them while a default-named endpoint on the same domain does not.
 #include <gtest/gtest.h>
 
+#include "eventually.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <string>
@@ -68,12 +70,7 @@ class NamingOnTheWire : public ::testing::TestWithParam<NamingPair> {
     return Participant::create(o);
   }
   static bool eventually(const std::function<bool()>& cond, double seconds = 15) {
-    const int64_t end = monotonic_ns() + static_cast<int64_t>(seconds * 1e9);
-    while (monotonic_ns() < end) {
-      if (cond()) return true;
-      std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    }
-    return cond();
+    return testing::eventually(cond, seconds);
   }
 };
 

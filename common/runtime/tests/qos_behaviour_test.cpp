@@ -2,6 +2,8 @@
 // incompatible reliability is reported with the policy named, keep-last depth is honoured.
 #include <gtest/gtest.h>
 
+#include "eventually.hpp"
+
 #include <atomic>
 #include <chrono>
 #include <mutex>
@@ -31,12 +33,7 @@ class QosBehaviour : public ::testing::TestWithParam<Vendor> {
     return q;
   }
   static bool eventually(const std::function<bool()>& cond, double seconds = 10) {
-    const int64_t end = monotonic_ns() + static_cast<int64_t>(seconds * 1e9);
-    while (monotonic_ns() < end) {
-      if (cond()) return true;
-      std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    }
-    return cond();
+    return testing::eventually(cond, seconds);
   }
 };
 

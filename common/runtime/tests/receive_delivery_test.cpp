@@ -3,6 +3,8 @@
 // samples that arrived before the callback was set are delivered too. No timing asserts.
 #include <gtest/gtest.h>
 
+#include "eventually.hpp"
+
 #include <atomic>
 #include <chrono>
 #include <functional>
@@ -39,12 +41,7 @@ class ReceiveDelivery : public ::testing::TestWithParam<Pair> {
     return q;
   }
   static bool eventually(const std::function<bool()>& cond, double seconds = 15) {
-    const int64_t end = monotonic_ns() + static_cast<int64_t>(seconds * 1e9);
-    while (monotonic_ns() < end) {
-      if (cond()) return true;
-      std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    }
-    return cond();
+    return testing::eventually(cond, seconds);
   }
 };
 

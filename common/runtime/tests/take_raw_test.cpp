@@ -2,6 +2,8 @@
 // (encapsulation header included), which recorders write to MCAP untouched.
 #include <gtest/gtest.h>
 
+#include "eventually.hpp"
+
 #include <chrono>
 #include <cstring>
 #include <functional>
@@ -27,13 +29,8 @@ struct Pair {
 
 class TakeRaw : public ::testing::TestWithParam<Pair> {};
 
-bool eventually(const std::function<bool()>& cond, double seconds = 15) {
-  const int64_t end = monotonic_ns() + static_cast<int64_t>(seconds * 1e9);
-  while (monotonic_ns() < end) {
-    if (cond()) return true;
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
-  }
-  return cond();
+static bool eventually(const std::function<bool()>& cond, double seconds = 15) {
+  return testing::eventually(cond, seconds);
 }
 
 TEST_P(TakeRaw, TheSampleAndItsBytesAsReceived) {
