@@ -80,11 +80,12 @@ set(CPACK_DEBIAN_PACKAGE_ARCHITECTURE amd64)
 set(CPACK_DEBIAN_PACKAGE_SECTION science)
 set(CPACK_DEBIAN_PACKAGE_HOMEPAGE "https://localhost/plexus")
 # Runtime dependencies: dpkg-shlibdeps reads them off the installed binaries (the package's own
-# libraries found through their $ORIGIN run path). Besides those: gnuplot for `plexus report`'s plots. The SDK's
+# libraries found through their $ORIGIN run path). Besides those: gnuplot for `plexus report`'s plots, and
+# dygraphs for the page of `plexus launch --monitor` (served from /usr/share/javascript). The SDK's
 # build dependencies (headers, generators, compiler) are recommended: apt installs them by
 # default, a deployment host may leave them out (--no-install-recommends).
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
-set(CPACK_DEBIAN_PACKAGE_DEPENDS "gnuplot-nox")
+set(CPACK_DEBIAN_PACKAGE_DEPENDS "gnuplot-nox, libjs-dygraphs")
 set(CPACK_DEBIAN_PACKAGE_RECOMMENDS
   "libfastrtps-dev, libfastcdr-dev, fastddsgen, cyclonedds-dev, cyclonedds-tools, libeigen3-dev, libspdlog-dev, \
 libyaml-cpp-dev, libcli11-dev, nlohmann-json3-dev, liborocos-kdl-dev, cmake, g++")

@@ -12,10 +12,12 @@
 #include "plexus/base/clock.hpp"
 #include "plexus/base/input_error.hpp"
 #include "plexus/base/logging.hpp"
-#include "ws_transport.hpp"
+#include "plexus/web/ws_transport.hpp"
 
 namespace plexus::foxglove {
 namespace {
+
+using web::WsTransport;
 
 /// The bridge's readers: best effort, volatile, a short history (see the header).
 rt::QosProfile reader_qos() {

@@ -14,13 +14,14 @@ PACKAGES=(
   liborocos-kdl-dev libfftw3-dev libsqlite3-dev
   # MCAP recordings (common/mcap): zstd and LZ4 chunk compression, zlib's CRC-32
   libzstd-dev liblz4-dev zlib1g-dev
-  # the Foxglove WebSocket bridge (services/foxglove_bridge): websocketpp on standalone asio
-  libwebsocketpp-dev libasio-dev
+  # the Foxglove WebSocket bridge and plexus launch --monitor (common/web): websocketpp on
+  # standalone asio; the monitor's page plots with dygraphs
+  libwebsocketpp-dev libasio-dev libjs-dygraphs
   # tests and benchmarks; clang and its libFuzzer runtime for the fuzz targets (tests/fuzz)
   libgtest-dev libgmock-dev libbenchmark-dev clang libclang-rt-14-dev
   # tools used at run time: plots, loop-jitter baseline, network namespaces for multi-host tests
   gnuplot-nox rt-tests iproute2 procps
-  # the report page's test: headless Chromium renders report.html (tests/report)
+  # headless Chromium: renders report.html (tests/report) and the monitor's page (tests/ecosystem)
   chromium chromium-driver
   # plexus launch over ssh (and its tests: an sshd per namespace), systemd-analyze for the units, jq in the tests
   openssh-client openssh-server systemd jq

@@ -491,6 +491,7 @@ RealtimeReport RealtimeHost::run(const std::atomic<bool>& stop) {
   }
   const int64_t hb_every = std::max<int64_t>(1, static_cast<int64_t>(1.0 / m.sc.step));
   int64_t next_beat = k0;
+  uint64_t holds_at_beat = m.report.holds;  // DEGRADED: a hold since the previous heartbeat
   int64_t last_k = k0 - stride;
   loop.run(
       [&](const rt::PeriodicLoop::Tick& t) {
@@ -504,7 +505,9 @@ RealtimeReport RealtimeHost::run(const std::atomic<bool>& stop) {
         last_k = k;
         run_step(k);
         if (k >= next_beat) {
-          m.publish_heartbeat(m.report.holds ? msg::SERVICE_DEGRADED : msg::SERVICE_RUNNING, loop.stats());
+          m.publish_heartbeat(m.report.holds > holds_at_beat ? msg::SERVICE_DEGRADED : msg::SERVICE_RUNNING,
+                              loop.stats());
+          holds_at_beat = m.report.holds;
           next_beat = k + hb_every;
         }
         m.report.ticks = k + 1;

@@ -32,6 +32,11 @@ Command add_launch_command(CLI::App& root) {
       ->add_option("--foxglove", o->foxglove,
                    "Also start foxglove_bridge on 127.0.0.1:PORT, on the clock's host, for the run (docs/viewing.md)")
       ->check(CLI::Range(1, 65535));
+  c.app
+      ->add_option("--monitor", o->monitor,
+                   "Realtime: serve a live page of the run on http://127.0.0.1:PORT/ (processes, loops, a plot; "
+                   "docs/viewing.md)")
+      ->check(CLI::Range(1, 65535));
   c.app->add_option("--kill", o->kills, "Fault injection (realtime): SIGKILL PROCESS at SECONDS, as PROCESS@SECONDS");
   c.app->add_option("--external", o->externals,
                     "Do not start PROCESS: plexus replay or a hardware bridge provides its topics (repeatable)");

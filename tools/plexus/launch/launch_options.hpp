@@ -17,6 +17,7 @@ struct LaunchOptions {
   std::string naming;     // --naming: dds.naming of the scenario, overridden (travels as a --set)
   int domain = -1;
   int foxglove = 0;  // --foxglove PORT: foxglove_bridge beside the run on 127.0.0.1:PORT (0: none)
+  int monitor = 0;   // --monitor PORT: the run's live page on http://127.0.0.1:PORT/ (0: none)
   double timeout = 10.0;
   bool json = false, quiet = false, report = false;
   bool strict = false;  // --strict: a loop that cannot fit its timing budget ends the run (exit 2)

@@ -1,6 +1,9 @@
 #include "realtime_run.hpp"
 
+#include <signal.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <memory>
@@ -10,6 +13,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include "monitor_view.hpp"
 #include "plexus/base/clock.hpp"
 #include "plexus/distributed/lockstep.hpp"
 #include "plexus/distributed/realtime.hpp"
@@ -27,13 +31,24 @@ std::vector<bool> plants_of(const scenario::Scenario& sc) {
   return plants;
 }
 
+/// The page's status every quarter second; the latency it shows, over the last second.
+constexpr int64_t kWebPeriodNs = 250'000'000;
+constexpr std::size_t kPlotPointsPerStatus = 2000;
+
+/// The host a process runs on: its components' (the first host when they name none).
+std::string host_of(const scenario::Scenario& sc, const Process& p) {
+  const std::string first = sc.hosts.empty() ? "local" : sc.hosts.front();
+  if (p.components.empty() || sc.components[p.components.front()].host.empty()) return first;
+  return sc.components[p.components.front()].host;
+}
+
 /// One realtime run as the launcher sees it: every signal, every process's heartbeat, the
 /// start signal, the live status line, and what it all adds up to (run_realtime).
 class RealtimeMonitor {
  public:
   RealtimeMonitor(scenario::Scenario& sc, rt::Participant& participant, const rt::QosProfiles& profiles,
                   const std::vector<Process>& procs, FaultClock& fault, StatusConsole& console,
-                  const std::map<std::string, int64_t>& host_clock_offset_ns, BudgetCheck* budget);
+                  const std::map<std::string, int64_t>& host_clock_offset_ns, BudgetCheck* budget, WebMonitor* web);
   /// Every process reports, then is ready (or ready_wait_s passes); throws LockstepError.
   void wait_for_start(double start_timeout_s, double ready_wait_s, const std::atomic<bool>& stop);
   /// Publishes the start signal; returns the monotonic time of tick 0.
@@ -41,6 +56,9 @@ class RealtimeMonitor {
   /// Records until the duration has passed, every process is draining, or `stop`.
   void record(const std::atomic<bool>& stop);
   RealtimeResult result();
+  /// --monitor: the page's status ("starting", "running", "done"), at most every kWebPeriodNs
+  /// unless `now_anyway`.
+  void publish_web(int64_t now, const char* phase, bool now_anyway = false);
 
  private:
   void drain_beats();
@@ -82,11 +100,24 @@ class RealtimeMonitor {
   std::vector<double> rate_of_;
   std::vector<std::size_t> latency_before_;
   int64_t status_at_ = 0;
+  // --monitor (web_monitor.hpp): the page's view of each process, the plotted field, the
+  // latency of the last second.
+  WebMonitor* web_;
+  std::map<std::string, int64_t> host_offsets_;
+  std::vector<ProcessView> views_;    // by process: name and host set once, the rest per status
+  std::vector<bool> local_;           // by process: on this host, so its pid can be checked
+  std::vector<int64_t> received_ns_;  // by process: monotonic arrival of its last heartbeat
+  std::vector<int> restarts_;         // by process: heartbeats from a new pid
+  PlotFeed plot_;
+  nlohmann::json web_latency_ = nlohmann::json::object();
+  std::vector<std::size_t> web_latency_before_;
+  int64_t web_at_ = 0, web_latency_at_ = 0;
 };
 
 RealtimeMonitor::RealtimeMonitor(scenario::Scenario& sc, rt::Participant& participant, const rt::QosProfiles& profiles,
                                  const std::vector<Process>& procs, FaultClock& fault, StatusConsole& console,
-                                 const std::map<std::string, int64_t>& host_clock_offset_ns, BudgetCheck* budget)
+                                 const std::map<std::string, int64_t>& host_clock_offset_ns, BudgetCheck* budget,
+                                 WebMonitor* web)
     : sc_(sc),
       procs_(procs),
       budget_(budget),
@@ -106,7 +137,25 @@ RealtimeMonitor::RealtimeMonitor(scenario::Scenario& sc, rt::Participant& partic
       misses_before_(procs.size(), 0),
       beat_before_(procs.size(), 0),
       rate_of_(procs.size(), 0.0),
-      latency_before_(signals_.size(), 0) {
+      latency_before_(signals_.size(), 0),
+      web_(web),
+      host_offsets_(host_clock_offset_ns),
+      views_(procs.size()),
+      local_(procs.size(), false),
+      received_ns_(procs.size(), 0),
+      restarts_(procs.size(), 0),
+      web_latency_before_(signals_.size(), 0) {
+  const std::string here = sc.hosts.empty() ? "local" : sc.hosts.front();  // the clock's host
+  for (std::size_t i = 0; i < procs.size(); ++i) {
+    views_[i].name = procs[i].service();
+    views_[i].host = host_of(sc, procs[i]);
+    local_[i] = views_[i].host == here;
+  }
+  for (const auto& spec : signals_)  // plotted until a page asks for another field
+    if (!spec.fields.empty()) {
+      plot_.select(spec.name, spec.fields.front());
+      break;
+    }
   // A command's latency starts at its robot's sensor sample, stamped on the plant's host.
   for (const auto& c : sc.components) {
     const auto off = host_clock_offset_ns.find(c.host);
@@ -142,10 +191,25 @@ void RealtimeMonitor::drain_beats() {
   for (std::size_t i = 0; i < beats_.size(); ++i) {
     if (!beats_[i].take_latest(last_[i])) continue;
     seen_[i] = true;
+    received_ns_[i] = monotonic_ns();
     // A heartbeat from another pid than before: the process was started again.
-    if (pid_of_[i] && last_[i].pid() != pid_of_[i] && fault_.killed_ns.load() && heartbeat_after_s_ < 0)
-      heartbeat_after_s_ = static_cast<double>(monotonic_ns() - fault_.killed_ns.load()) * 1e-9;
+    if (pid_of_[i] && last_[i].pid() != pid_of_[i]) {
+      ++restarts_[i];
+      if (fault_.killed_ns.load() && heartbeat_after_s_ < 0)
+        heartbeat_after_s_ = static_cast<double>(monotonic_ns() - fault_.killed_ns.load()) * 1e-9;
+      beat_before_[i] = 0;  // its loop count starts again: its rate is not known until its next heartbeat
+      rate_of_[i] = 0;
+    }
     pid_of_[i] = last_[i].pid();
+    // Its loop rate: loops over publish time since its previous heartbeat.
+    const int64_t beat = last_[i].header().publish_time_ns();
+    if (beat > beat_before_[i]) {
+      if (beat_before_[i] > 0 && last_[i].loop_count() >= loops_before_[i])
+        rate_of_[i] = static_cast<double>(last_[i].loop_count() - loops_before_[i]) /
+                      (static_cast<double>(beat - beat_before_[i]) * 1e-9);
+      beat_before_[i] = beat;
+      loops_before_[i] = last_[i].loop_count();
+    }
   }
 }
 
@@ -177,6 +241,7 @@ void RealtimeMonitor::wait_for_start(double start_timeout_s, double ready_wait_s
           scenario::format_number(ready_wait_s), matching);
       break;
     }
+    publish_web(now, "starting");
     if (stop) throw distributed::LockstepError("realtime: stopped before the start");
     if (!silent.empty() && now > give_up) throw distributed::LockstepError("realtime: no heartbeat from " + silent);
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
@@ -204,6 +269,7 @@ void RealtimeMonitor::record(const std::atomic<bool>& stop) {
   const int64_t end = t0_ + static_cast<int64_t>((sc_.duration + 2.0) * 1e9);
   while (monotonic_ns() < end && !stop) {
     if (monotonic_ns() - status_at_ >= 1'000'000'000) show_status(monotonic_ns());
+    publish_web(monotonic_ns(), "running");
     if (budget_) budget_->conclude(monotonic_ns());  // once, after the first second
     const bool any_data = take_samples();
     drain_beats();
@@ -213,6 +279,45 @@ void RealtimeMonitor::record(const std::atomic<bool>& stop) {
     if (!any_data) std::this_thread::sleep_for(std::chrono::microseconds(200));
   }
   res_.wall = static_cast<double>(monotonic_ns() - t0_) * 1e-9;
+  publish_web(monotonic_ns(), "done", true);
+}
+
+void RealtimeMonitor::publish_web(int64_t now, const char* phase, bool now_anyway) {
+  if (!web_ || (!now_anyway && now - web_at_ < kWebPeriodNs)) return;
+  web_at_ = now;
+  for (std::size_t i = 0; i < views_.size(); ++i) {
+    auto& v = views_[i];
+    v.seen = seen_[i];
+    v.beat = last_[i];
+    v.age_s = seen_[i] ? static_cast<double>(now - received_ns_[i]) * 1e-9 : 0.0;
+    v.rate_hz = rate_of_[i];
+    v.restarts = restarts_[i];
+    // On this host a killed process is known at once: its pid is gone (reaped by the supervisor).
+    v.exited = local_[i] && seen_[i] && last_[i].pid() > 0 && ::kill(static_cast<pid_t>(last_[i].pid()), 0) != 0 &&
+               errno == ESRCH;
+  }
+  if (now - web_latency_at_ >= 1'000'000'000) {
+    web_latency_at_ = now;
+    for (std::size_t s : commands_) {
+      const auto& l = latency_[s];
+      std::vector<int64_t> window(l.begin() + static_cast<std::ptrdiff_t>(web_latency_before_[s]), l.end());
+      web_latency_before_[s] = l.size();
+      if (!window.empty())
+        web_latency_[signals_[s].name] = {{"p50_ms", percentile_us(window, 0.5) * 1e-3},
+                                          {"p99_ms", percentile_us(window, 0.99) * 1e-3}};
+    }
+  }
+  std::string signal, field;
+  bool reset = false;
+  if (web_->plot_request(signal, field, reset)) {
+    if (!signal.empty())
+      plot_.select(signal, field);
+    else if (reset)
+      plot_.reset();
+  }
+  const double t = t0_ ? static_cast<double>(now - t0_) * 1e-9 : 0.0;
+  web_->publish(status_json({phase, t, sc_.duration}, views_, host_offsets_, web_latency_,
+                            plot_.next(res_.log, kPlotPointsPerStatus)));
 }
 
 bool RealtimeMonitor::take_samples() {
@@ -254,14 +359,6 @@ void RealtimeMonitor::show_status(int64_t now) {
   std::string slowest;
   uint64_t misses = 0;
   for (std::size_t i = 0; i < procs_.size(); ++i) {
-    const int64_t beat = last_[i].header().publish_time_ns();
-    if (beat > beat_before_[i]) {
-      if (beat_before_[i] > 0 && last_[i].loop_count() >= loops_before_[i])
-        rate_of_[i] = static_cast<double>(last_[i].loop_count() - loops_before_[i]) /
-                      (static_cast<double>(beat - beat_before_[i]) * 1e-9);
-      beat_before_[i] = beat;
-      loops_before_[i] = last_[i].loop_count();
-    }
     if (rate_of_[i] > 0 && rate_of_[i] < min_rate)  // 0: unknown yet
       min_rate = rate_of_[i], slowest = procs_[i].service();
     const uint64_t miss = last_[i].overruns() + last_[i].stale_inputs();
@@ -340,8 +437,9 @@ RealtimeResult RealtimeMonitor::result() {
 RealtimeResult run_realtime(scenario::Scenario& sc, rt::Participant& participant, const rt::QosProfiles& profiles,
                             const std::vector<Process>& procs, double start_timeout_s, double ready_wait_s,
                             FaultClock& fault, StatusConsole& console, const std::atomic<bool>& stop,
-                            const std::map<std::string, int64_t>& host_clock_offset_ns, BudgetCheck* budget) {
-  RealtimeMonitor monitor(sc, participant, profiles, procs, fault, console, host_clock_offset_ns, budget);
+                            const std::map<std::string, int64_t>& host_clock_offset_ns, BudgetCheck* budget,
+                            WebMonitor* web) {
+  RealtimeMonitor monitor(sc, participant, profiles, procs, fault, console, host_clock_offset_ns, budget, web);
   monitor.wait_for_start(start_timeout_s, ready_wait_s, stop);
   monitor.start();
   monitor.record(stop);

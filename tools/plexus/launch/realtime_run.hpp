@@ -17,6 +17,7 @@
 #include "plexus/scenario/signal_log.hpp"
 #include "status_console.hpp"
 #include "timing_budget.hpp"
+#include "web_monitor.hpp"
 
 namespace plexus::cli {
 
@@ -49,10 +50,11 @@ struct FaultClock {
 /// origin time is that host's clock, the arrival this one's), and says so in its record.
 /// `budget`: the loops' timing budgets, measured over the first second (timing_budget.hpp);
 /// it throws BudgetError out of here when strict and a loop does not fit.
+/// `web`: --monitor's page, fed four times a second from the first heartbeat to the end.
 RealtimeResult run_realtime(scenario::Scenario& sc, rt::Participant& participant, const rt::QosProfiles& profiles,
                             const std::vector<Process>& procs, double start_timeout_s, double ready_wait_s,
                             FaultClock& fault, StatusConsole& console, const std::atomic<bool>& stop,
                             const std::map<std::string, int64_t>& host_clock_offset_ns = {},
-                            BudgetCheck* budget = nullptr);
+                            BudgetCheck* budget = nullptr, WebMonitor* web = nullptr);
 
 }  // namespace plexus::cli

@@ -77,7 +77,7 @@ std::optional<int> run_realtime_launch(const LaunchOptions& o, LaunchPlan& plan,
     // signal (--timeout), so that they always get it before they give up.
     BudgetCheck budget(loop_budgets(plan.sc, plan.everywhere), o.strict);
     out = run_realtime(plan.sc, *run.participant, plan.profiles, all, 30.0, o.timeout / 2, run.fault, *run.console,
-                       g_launch_stop, host_offsets, &budget);
+                       g_launch_stop, host_offsets, &budget, run.monitor.get());
     run.startup_s = static_cast<double>(out.all_running_ns - plan.command_ns) * 1e-9;
     run.run_active = false;
     run.console->clear();

@@ -18,6 +18,7 @@
 #include "plexus/base/logging.hpp"
 #include "plexus/evaluation/run_folder.hpp"
 #include "plexus/runtime/vendor.hpp"
+#include "plexus/scenario/step_executor.hpp"
 #include "preflight.hpp"
 #include "run_result.hpp"
 #include "stages.hpp"
@@ -136,10 +137,30 @@ void start_foxglove_bridge(const LaunchOptions& o, const LaunchPlan& plan, Launc
   std::fprintf(stderr, "plexus launch: Foxglove live view on ws://127.0.0.1:%d (docs/viewing.md)\n", o.foxglove);
 }
 
+/// --monitor PORT: the run's page (web_monitor.hpp), listening before any process starts, so
+/// that a port in use ends the launch with nothing started.
+std::unique_ptr<WebMonitor> open_monitor(const LaunchOptions& o, LaunchPlan& plan) {
+  if (o.monitor <= 0 || !plan.runs_clock) return nullptr;
+  if (!plan.realtime)
+    throw InputError(
+        "--monitor: realtime runs only (clock.mode: realtime); a lockstep run shows its progress on "
+        "the status line");
+  nlohmann::json signals = nlohmann::json::array();
+  const scenario::StepExecutor wiring(plan.sc, std::vector<bool>(plan.sc.components.size(), false));
+  for (const auto& s : wiring.signals()) signals.push_back({{"name", s.name}, {"fields", s.fields}});
+  auto monitor = std::make_unique<WebMonitor>(o.monitor, nlohmann::json{{"scenario", plan.sc.name},
+                                                                        {"mode", "realtime"},
+                                                                        {"vendor", plan.vendors_label},
+                                                                        {"signals", std::move(signals)}});
+  std::fprintf(stderr, "plexus launch: monitor on http://127.0.0.1:%d/ (docs/viewing.md)\n", o.monitor);
+  return monitor;
+}
+
 }  // namespace
 
 void start_launch(const LaunchOptions& o, LaunchPlan& plan, LaunchRun& run) {
   run.recorder = open_recorder(o, plan);
+  run.monitor = open_monitor(o, plan);
   init_logging("plexus launch", "", "warn");  // --quiet drops the status line, not the warnings
   stop_on_signal(SIGINT);
   stop_on_signal(SIGTERM);

@@ -40,6 +40,7 @@
 #include "signal_recorder.hpp"
 #include "status_console.hpp"
 #include "supervisor.hpp"
+#include "web_monitor.hpp"
 
 namespace plexus::cli {
 
@@ -84,6 +85,7 @@ struct LaunchPlan {
 struct LaunchRun {
   std::unique_ptr<RemoteShares> remotes;         ///< one command: the other hosts (preflight)
   std::unique_ptr<SignalRecorder> recorder;      ///< --record
+  std::unique_ptr<WebMonitor> monitor;           ///< --monitor
   std::unique_ptr<rt::Participant> participant;  ///< the clock's, or the realtime monitor's
   std::string run_dir;
   std::optional<StatusConsole> console;

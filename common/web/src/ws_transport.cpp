@@ -1,4 +1,4 @@
-#include "ws_transport.hpp"
+#include "plexus/web/ws_transport.hpp"
 
 #define ASIO_STANDALONE
 #include <websocketpp/config/asio_no_tls.hpp>
@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <thread>
 
-namespace plexus::foxglove {
+namespace plexus::web {
 
 using Server = websocketpp::server<websocketpp::config::asio>;
 using Hdl = websocketpp::connection_hdl;
@@ -60,6 +60,18 @@ WsTransport::WsTransport(const std::string& address, int port, const std::string
     d.ids[h] = id;
     if (d.handlers.on_open) d.handlers.on_open(id);
   });
+  d.server.set_http_handler([&d](Hdl h) {
+    const auto c = d.server.get_con_from_hdl(h);
+    HttpReply reply;
+    if (c->get_request().get_method() != "GET")
+      reply = {405, "text/plain; charset=utf-8", "only GET\n"};
+    else if (d.handlers.on_http)
+      reply = d.handlers.on_http(c->get_resource());
+    c->set_status(static_cast<websocketpp::http::status_code::value>(reply.status));
+    c->append_header("Content-Type", reply.content_type);
+    c->append_header("Cache-Control", "no-store");
+    c->set_body(reply.body);
+  });
   d.server.set_close_handler([&d](Hdl h) { d.forget(h); });
   d.server.set_fail_handler([&d](Hdl h) { d.forget(h); });
   d.server.set_message_handler([&d](Hdl h, Server::message_ptr m) {
@@ -107,4 +119,4 @@ void WsTransport::close_all(const std::string& reason) {
   for (const auto& [id, h] : impl_->clients) impl_->server.close(h, websocketpp::close::status::going_away, reason, ec);
 }
 
-}  // namespace plexus::foxglove
+}  // namespace plexus::web
