@@ -317,6 +317,7 @@ struct Bridge::Impl {
     hb.compute_p50_us(hb.link().latency_p50_us());
     hb.compute_p99_us(hb.link().latency_p99_us());
     hb.compute_max_us(hb.link().latency_max_us());
+    hb.uptime_s(distributed::heartbeat_uptime_s());
     hb.header().origin_time_ns(0);
     heartbeat.publish(hb);
   }

@@ -88,7 +88,8 @@ const done = new Promise((resolve) => {
     const t = Number(timestamp) * 1e-9;
     if (w.first === null) {
       w.first = t;
-      if (!readyWritten && wanted.size === topics.length && [...wanted.values()].every((x) => x.first !== null)) {
+      const everyWanted = topics[0] === "*" ? wanted.size > 0 : wanted.size === topics.length;
+      if (!readyWritten && everyWanted && [...wanted.values()].every((x) => x.first !== null)) {
         readyWritten = true;
         writeFileSync(`${outFile}.ready`, "");
       }

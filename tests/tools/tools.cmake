@@ -173,3 +173,9 @@ add_test(NAME cli.scenario_loop_bad_deadline COMMAND ${EXPECT} 2 "loops.l.deadli
 set_tests_properties(cli.scenario_loop_unknown_member cli.scenario_loop_one_member cli.scenario_loop_member_elsewhere
                      cli.scenario_loop_bad_deadline PROPERTIES LABELS "cli")
 include(${CMAKE_CURRENT_LIST_DIR}/recordings.cmake)
+# plexus service list (issue 31, docs/tools.md): two services alone, on Fast DDS and Cyclone
+# DDS, listed from either vendor with their names, host, state, rate and typed topics. Domain 184.
+add_test(NAME tools.service_list
+         COMMAND ${CMAKE_CURRENT_LIST_DIR}/service_list.sh ${CMAKE_BINARY_DIR}/bin ${PROJECT_SOURCE_DIR}/deploy 184
+                 ${CMAKE_BINARY_DIR}/test-runs/tools/service_list)
+set_tests_properties(tools.service_list PROPERTIES LABELS "cli;multiprocess" TIMEOUT 60)

@@ -101,6 +101,7 @@ int run_replay(const ReplayOpts& o) {
     next_beat = monotonic_ns() + 1'000'000'000;
     hb.state(state);
     hb.loop_count(published);
+    hb.uptime_s(distributed::heartbeat_uptime_s());
     hb.header().origin_time_ns(0);
     heartbeat.publish(hb);
   };

@@ -113,7 +113,15 @@ std::string health_topic(const std::string& service) {
   return "health/" + name;
 }
 
+namespace {
+int64_t heartbeat_epoch_ns() {
+  static const int64_t epoch = monotonic_ns();
+  return epoch;
+}
+}  // namespace
+
 msg::Heartbeat heartbeat_of(const std::string& service, const std::string& robot) {
+  heartbeat_epoch_ns();
   const auto copy = [](std::array<char, 32>& dst, const std::string& src) {
     dst.fill('\0');
     std::memcpy(dst.data(), src.data(), std::min(src.size(), dst.size() - 1));
@@ -122,8 +130,13 @@ msg::Heartbeat heartbeat_of(const std::string& service, const std::string& robot
   copy(hb.service(), service);
   copy(hb.robot(), robot);
   hb.pid(static_cast<uint32_t>(getpid()));
+  std::array<char, 256> host{};
+  if (gethostname(host.data(), host.size() - 1) != 0) host[0] = '\0';
+  copy(hb.host(), host.data());
   return hb;
 }
+
+double heartbeat_uptime_s() { return static_cast<double>(monotonic_ns() - heartbeat_epoch_ns()) * 1e-9; }
 
 double stage_phase(const scenario::Scenario& sc, const std::vector<bool>& hosted) {
   double phase = 0.0;
@@ -317,6 +330,7 @@ struct RealtimeHost::Impl {
     hb.compute_p50_us(ls.compute_p50_us);
     hb.compute_p99_us(ls.compute_p99_us);
     hb.compute_max_us(ls.compute_max_us);
+    hb.uptime_s(heartbeat_uptime_s());
     hb.header().origin_time_ns(0);
     heartbeat.publish(hb);
   }

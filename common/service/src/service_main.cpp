@@ -23,6 +23,8 @@
 #include <cmath>
 #include <csignal>
 #include <cstdio>
+#include <set>
+#include <string>
 
 #include <spdlog/fmt/fmt.h>
 
@@ -159,10 +161,17 @@ int plexus::service::run_service(int argc, char** argv, const std::string& self)
     }
     // A launched process keeps quiet about the scenario's warnings: `plexus launch` said them once.
     scenario::log_warnings(sc, {}, !part_file.empty());
-    // Each executable hosts what its declaration says.
+    // Each executable hosts what its declaration says. Its name, unless --service gives one, is
+    // the one plexus launch would give it (launch_plan.hpp): the executable and its robots (a
+    // plant's and sensors' robot) or its services, "plant_simulator r1", "localisation_observer
+    // observer"; its heartbeats go to health/<that name> (docs/topics.md).
     std::string hosted_names;
+    std::set<std::string> named;
     for (const auto& c : sc.components) {
-      hosted_names += (hosted_names.empty() ? "" : ",") + c.component->name();
+      const std::string& n = c.component->name();
+      const bool robot_part = c.kind == scenario::ComponentKind::plant || c.kind == scenario::ComponentKind::sensor;
+      const std::string name = robot_part ? n.substr(0, n.find('/')) : n;
+      if (named.insert(name).second) hosted_names += (hosted_names.empty() ? "" : ",") + name;
       if (const std::string why = hosting_error(service, c); !why.empty()) throw InputError(why);
     }
     if (sc.components.empty()) throw InputError(sc.file + ": no component to run");

@@ -63,8 +63,12 @@ inline constexpr int64_t kNoMeasurementOrigin = 1;
 std::string health_topic(const std::string& service);
 
 /// A heartbeat naming its sender: `service` and `robot` (cut to the message's 31
-/// characters) and this process's pid; the rest zero.
+/// characters), this process's pid and its host name; the rest zero. The first call starts
+/// the clock of heartbeat_uptime_s().
 msg::Heartbeat heartbeat_of(const std::string& service, const std::string& robot = {});
+/// Seconds since this process first called heartbeat_of (its start, within its set-up):
+/// Heartbeat.uptime_s. No system call.
+double heartbeat_uptime_s();
 
 /// The phase, as a fraction of the base period, at which a host of these components ticks:
 /// 0 if it hosts a plant or a sensor, else 0.5 if it hosts a controller, else 0.25 (references

@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# service_list.sh BIN DEPLOY DOMAIN OUT: `plexus service list` (docs/tools.md) finds two
+# services started alone, with no launcher, on two vendors: a plant_simulator on Fast DDS
+# and a localisation_observer on Cyclone DDS, listed by a Fast DDS and by a Cyclone DDS
+# participant. Each row must name the process as plexus launch does ("plant_simulator r1";
+# alone it used to be "plant_simulator r1/plant,r1/pos..."), with its heartbeat on
+# health/<executable>_<name>, this machine's host name, state running, a loop rate near the
+# params' step, and its typed topics out and in.
+set -u
+bin=$1 deploy=$2 domain=$3 out=$4
+rm -rf "$out" && mkdir -p "$out"
+pids=()
+trap 'kill "${pids[@]}" 2> /dev/null; wait 2> /dev/null' EXIT
+"$bin/plant_simulator" --params "$deploy/params/unicycle_robot.yaml" --step 0.01 --dds fast --domain "$domain" \
+  > /dev/null 2> "$out/plant.log" &
+pids+=($!)
+"$bin/localisation_observer" --params "$deploy/params/heading_observer.yaml" --dds cyclone --domain "$domain" \
+  > /dev/null 2> "$out/observer.log" &
+pids+=($!)
+sleep 1
+fail=0
+host=$(hostname)
+for vendor in fast cyclone; do
+  "$bin/plexus" service list --dds "$vendor" --domain "$domain" --wait 3 --json > "$out/$vendor.json" 2> "$out/$vendor.err"
+  rc=$?
+  "$bin/plexus" service list --dds "$vendor" --domain "$domain" --wait 3 > "$out/$vendor.txt" 2>&1 || rc=$?
+  [ "$rc" = 0 ] || { echo "FAIL ($vendor): plexus service list exited $rc"; cat "$out/$vendor.err"; fail=1; continue; }
+  cat "$out/$vendor.txt"
+  plant=$(jq -c '.[] | select(.name == "plant_simulator r1")' "$out/$vendor.json")
+  [ -n "$plant" ] || { echo "FAIL ($vendor): no row 'plant_simulator r1': $(jq -c '[.[].name]' "$out/$vendor.json")"; fail=1; continue; }
+  echo "$plant" | jq -e --arg h "$host" '.heartbeat_topic == "health/plant_simulator_r1" and .host == $h
+      and .state == "running" and .loop_hz > 80 and .loop_hz < 120 and .uptime_s > 0 and .heartbeat_age_s < 1.5
+      and (.out | map(select(.topic == "r1/position" and .type == "plexus::msg::PositionMeasurement")) | length) == 1
+      and (.in | map(.topic) | index("r1/cmd")) != null' > /dev/null ||
+    { echo "FAIL ($vendor): plant row: $plant"; fail=1; }
+  obs=$(jq -c '.[] | select(.executable == "localisation_observer")' "$out/$vendor.json")
+  echo "$obs" | jq -e --arg h "$host" '(.name | test("^localisation_observer [a-z0-9_,]+$")) and .host == $h
+      and (.state == "running" or .state == "degraded") and .heartbeat_topic == ("health/" + (.name | gsub(" "; "_")))
+      and (.in | map(.topic) | index("r1/position")) != null' > /dev/null 2>&1 ||
+    { echo "FAIL ($vendor): observer row: $obs"; fail=1; }
+done
+exit $fail
