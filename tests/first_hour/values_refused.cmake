@@ -32,3 +32,9 @@ add_test(NAME first_hour.stop_summary_at_default_level
          COMMAND ${CMAKE_CURRENT_LIST_DIR}/stop_summary.sh $<TARGET_FILE:plant_simulator>
                  ${PROJECT_SOURCE_DIR}/deploy/params/unicycle_robot.yaml 150)
 set_tests_properties(first_hour.stop_summary_at_default_level PROPERTIES LABELS "cli;first_hour" TIMEOUT 30)
+# plexus topic and a topic's writers: a --type the writers do not publish (exit 2, both types
+# named), and two processes writing one topic (a warning naming both). Domain 185.
+add_test(NAME first_hour.topic_type_and_producers
+         COMMAND ${CMAKE_CURRENT_LIST_DIR}/topic_producers.sh ${CMAKE_BINARY_DIR}/bin
+                 ${PROJECT_SOURCE_DIR}/deploy/params/unicycle_robot.yaml 185)
+set_tests_properties(first_hour.topic_type_and_producers PROPERTIES LABELS "cli;first_hour;multiprocess" TIMEOUT 60)

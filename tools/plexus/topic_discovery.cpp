@@ -1,6 +1,9 @@
 #include "topic_discovery.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <csignal>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <thread>
@@ -87,6 +90,15 @@ const msg::TypeSupport& resolve_topic_type(const rt::Participant& p, const std::
     if (!writers->empty() || g_stop || monotonic_ns() >= end) break;
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
+  // IDL names are case-insensitive (DESIGN.md): Pose2D and pose2d are one type.
+  const auto same_type = [](const std::string& a, const std::string& b) {
+    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
+             return std::tolower(static_cast<unsigned char>(x)) == std::tolower(static_cast<unsigned char>(y));
+           });
+  };
+  if (forced && !writers->empty() && !same_type(announced, forced->type_name))
+    throw InputError("--type " + std::string(forced->type_name) + ": the writers of '" + topic + "' publish " +
+                     announced + " (leave --type out to read them)");
   if (forced) return *forced;
   if (writers->empty())
     throw std::runtime_error("no writer on topic '" + topic + "' after " + std::to_string(wait_s).substr(0, 4) +
@@ -96,6 +108,19 @@ const msg::TypeSupport& resolve_topic_type(const rt::Participant& p, const std::
     throw std::runtime_error("topic '" + topic + "' has type '" + announced +
                              "', which this plexus build does not know");
   return *ts;
+}
+
+bool ProducerWatch::check(const rt::Participant& p, const std::string& topic) {
+  if (warned_) return true;
+  std::set<std::string> producers;
+  for (const auto& e : p.discovered_endpoints())
+    if (!e.local && e.is_writer && e.topic == topic) producers.insert(e.participant);
+  if (producers.size() < 2) return false;
+  std::string list;
+  for (const auto& w : producers) list += (list.empty() ? "" : ", ") + w;
+  spdlog::warn("{} has writers in {} processes ({}): their samples interleave", topic, producers.size(), list);
+  warned_ = true;
+  return true;
 }
 
 rt::QosProfile subscriber_qos(const std::string& qos_file, const std::string& profile,
