@@ -38,3 +38,9 @@ add_test(NAME first_hour.topic_type_and_producers
          COMMAND ${CMAKE_CURRENT_LIST_DIR}/topic_producers.sh ${CMAKE_BINARY_DIR}/bin
                  ${PROJECT_SOURCE_DIR}/deploy/params/unicycle_robot.yaml 185)
 set_tests_properties(first_hour.topic_type_and_producers PROPERTIES LABELS "cli;first_hour;multiprocess" TIMEOUT 60)
+# A robot's params file may carry its base step (`step:`); a bad one names the file and line.
+file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/bad_step_robot.yaml "plant:\n  type: unicycle\nstep: -1\n")
+add_test(NAME first_hour.params_step_bad
+         COMMAND ${EXPECT} 2 "^plant_simulator: error: .*bad_step_robot.yaml:3: step: must be a number in \\(0, 1\\] s"
+         $<TARGET_FILE:plant_simulator> --params ${CMAKE_CURRENT_BINARY_DIR}/bad_step_robot.yaml)
+set_tests_properties(first_hour.params_step_bad PROPERTIES LABELS "cli;first_hour")

@@ -4,14 +4,15 @@
 # and a localisation_observer on Cyclone DDS, listed by a Fast DDS and by a Cyclone DDS
 # participant. Each row must name the process as plexus launch does ("plant_simulator r1";
 # alone it used to be "plant_simulator r1/plant,r1/pos..."), with its heartbeat on
-# health/<executable>_<name>, this machine's host name, state running, a loop rate near the
-# params' step, and its typed topics out and in.
+# health/<executable>_<name>, this machine's host name, state running, a loop rate near
+# 100 Hz (the plant runs without --step: the params file's `step: 0.01`; it ran at 1 kHz
+# before), and its typed topics out and in.
 set -u
 bin=$1 deploy=$2 domain=$3 out=$4
 rm -rf "$out" && mkdir -p "$out"
 pids=()
 trap 'kill "${pids[@]}" 2> /dev/null; wait 2> /dev/null' EXIT
-"$bin/plant_simulator" --params "$deploy/params/unicycle_robot.yaml" --step 0.01 --dds fast --domain "$domain" \
+"$bin/plant_simulator" --params "$deploy/params/unicycle_robot.yaml" --dds fast --domain "$domain" \
   > /dev/null 2> "$out/plant.log" &
 pids+=($!)
 "$bin/localisation_observer" --params "$deploy/params/heading_observer.yaml" --dds cyclone --domain "$domain" \

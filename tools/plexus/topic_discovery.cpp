@@ -90,7 +90,7 @@ const msg::TypeSupport& resolve_topic_type(const rt::Participant& p, const std::
     if (!writers->empty() || g_stop || monotonic_ns() >= end) break;
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
-  // IDL names are case-insensitive (DESIGN.md): Pose2D and pose2d are one type.
+  // IDL names are case-insensitive (docs/architecture.md): Pose2D and pose2d are one type.
   const auto same_type = [](const std::string& a, const std::string& b) {
     return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
              return std::tolower(static_cast<unsigned char>(x)) == std::tolower(static_cast<unsigned char>(y));

@@ -21,9 +21,18 @@ Scenario load_standalone(const StandaloneSpec& s, const std::vector<std::string>
   if (s.robot_section) {
     if (s.extra && s.extra.IsMap())
       for (const auto& kv : s.extra) params[kv.first.as<std::string>()] = kv.second;
+    // Its base step: --step, else the params file's `step:` (a robot's file carries the rate its
+    // sensors are published at, docs/topics.md), else 0.01 s (100 Hz, the unicycles' rate).
+    if (const YAML::Node own = params["step"]) {
+      const double v = own.IsScalar() ? own.as<double>(0.0) : 0.0;
+      if (!(v > 0.0 && v <= 1.0) || !std::isfinite(v))
+        throw InputError(origin + ":" + std::to_string(own.Mark().line + 1) + ": step: must be a number in (0, 1] s");
+      if (step <= 0.0) step = v;
+      params.remove("step");
+    }
     root["robots"][s.robot] = params;
     prefix = "robots." + s.robot + ".";
-    if (step <= 0.0) step = 0.001;
+    if (step <= 0.0) step = 0.01;
   } else {
     if (!params["type"] && !s.type.empty()) params["type"] = s.type;
     if (!params["robot"]) params["robot"] = s.robot;
