@@ -110,7 +110,8 @@ int plexus::service::run_service(int argc, char** argv, const std::string& self)
                  hosts_plant ? "YAML robot section: plant and sensors (docs/scenarios.md)"
                              : "YAML parameters of the service (the keys of its scenario section, docs/scenarios.md)");
   if (!hosts_plant) app.add_option("--type", alone.type, "Component type (default: " + alone.type + ")");
-  app.add_option("--step", alone.step, "Base step in s (default: 1 / its rate; plant_simulator: the params file's step, else 0.01)")
+  app.add_option("--step", alone.step,
+                 "Base step in s (default: 1 / its rate; plant_simulator: the params file's step, else 0.01)")
       ->check(positive("s"));
   app.add_option("--input-rate", alone.input_rates,
                  hosts_plant
