@@ -84,7 +84,7 @@ Command add_deploy_command(CLI::App& root) {
   units->add_option("scenario", o->scenario, "Scenario file (YAML)")->required();
   units->add_option("--host", o->host,
                     "The host whose processes the units start (required when the scenario has hosts)");
-  units->add_option("--out", o->out, "Folder to write the units and their config/ folder to")->required();
+  units->add_option("-o,--out", o->out, "Folder to write the units and their config/ folder to")->required();
   units->add_option("--bin", o->bin, "Folder of the plexus executables on the robot (default: this plexus's own)");
   units->add_option("--config-dir", o->config_dir, "Folder of config/ on the robot (default /etc/plexus/<scenario>)");
   units->add_option("--set", o->sets, "Override a scenario value: dotted.key=value (repeatable)");

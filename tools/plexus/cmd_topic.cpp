@@ -97,11 +97,20 @@ int run_list(const TopicOpts& o) {
     std::printf("%s\n", j.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace).c_str());
     return 0;
   }
+  // Columns as wide as their longest entry, so that long names keep them in line.
+  std::vector<std::string> type_cells;
+  int topic_w = 0, type_w = 0;
   for (const auto& [t, r] : rows) {
     std::string types;
     for (const auto& ty : r.types) types += (types.empty() ? "" : " | ") + ty;
-    std::printf("%-40s %-36s %d writer%s, %d reader%s\n", t.c_str(), types.c_str(), r.writers,
-                r.writers == 1 ? "" : "s", r.readers, r.readers == 1 ? "" : "s");
+    topic_w = std::max(topic_w, static_cast<int>(t.size()));
+    type_w = std::max(type_w, static_cast<int>(types.size()));
+    type_cells.push_back(std::move(types));
+  }
+  std::size_t i = 0;
+  for (const auto& [t, r] : rows) {
+    std::printf("%-*s  %-*s  %d writer%s, %d reader%s\n", topic_w, t.c_str(), type_w, type_cells[i++].c_str(),
+                r.writers, r.writers == 1 ? "" : "s", r.readers, r.readers == 1 ? "" : "s");
   }
   if (rows.empty())
     std::fprintf(stderr, "plexus topic list: no topics discovered on domain %d in %.1f s\n", o.dds.domain, wait);

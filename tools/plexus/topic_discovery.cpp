@@ -29,7 +29,7 @@ void install_stop_handler() {
 
 void add_dds_options(CLI::App* app, DdsOptions& o) {
   app->add_option("--dds", o.dds, "DDS vendor: fast or cyclone")->capture_default_str();
-  app->add_option("--domain", o.domain, "DDS domain id (0..232)")->capture_default_str();
+  app->add_option("--domain", o.domain, "DDS domain id (0..232)")->capture_default_str()->check(CLI::Range(0, 232));
   app->add_option("--interface", o.interface_address, "address of the one interface DDS uses")->capture_default_str();
   app->add_option("--peers", o.peers, "comma-separated unicast discovery peers")->capture_default_str();
   app->add_option("--transport", o.transport, "auto, udp or shm (docs/runtime.md, Transports)")->capture_default_str();

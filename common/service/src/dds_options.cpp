@@ -9,9 +9,11 @@ namespace plexus::scenario {
 
 void ServiceDdsOptions::add_to(CLI::App& app) {
   app.add_option("--dds", dds, "DDS vendor: fast or cyclone");
-  app.add_option("--domain", domain, "DDS domain id");
+  app.add_option("--domain", domain, "DDS domain id (0..232)")->check(CLI::Range(0, 232));
   app.add_option("--qos-file", qos_file, "QoS profiles (default deploy/qos.yaml)");
-  app.add_option("--service", service, "Name in heartbeats and logs (default: the executable and what it hosts)");
+  app.add_option("--service", service,
+                 "The process's name in heartbeats, logs and its DDS participant (default: the executable and the "
+                 "robots or services it hosts, as plexus launch names it)");
   app.add_option("--interface", interface_address, "Address of the one interface DDS uses (default 127.0.0.1)");
   app.add_option("--peers", peers, "Comma-separated unicast discovery peers (default 127.0.0.1)");
   app.add_option(

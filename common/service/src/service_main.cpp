@@ -105,7 +105,9 @@ int plexus::service::run_service(int argc, char** argv, const std::string& self)
     alone.type = service.component_types.front();
   app.add_option("--part", part_file, "This process's part of a scenario (written by plexus launch)");
   app.add_option("--robot", alone.robot, "Robot whose topics it uses (<robot>/<topic>; default r1)");
-  app.add_option("--name", alone.name, "Service name (default: the executable's)");
+  app.add_option("--name", alone.name,
+                 "Its name in the scenario it builds alone: its parameters' section and its components' names "
+                 "(default: the executable's); --service names the process in heartbeats and logs");
   app.add_option("--params", alone.params_file,
                  hosts_plant ? "YAML robot section: plant and sensors (docs/scenarios.md)"
                              : "YAML parameters of the service (the keys of its scenario section, docs/scenarios.md)");

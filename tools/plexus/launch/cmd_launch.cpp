@@ -16,7 +16,9 @@ namespace plexus::cli {
 Command add_launch_command(CLI::App& root) {
   auto o = std::make_shared<LaunchOptions>();
   Command c;
-  c.app = root.add_subcommand("launch", "Run a scenario distributed over DDS (lockstep), one process per service");
+  c.app = root.add_subcommand(
+      "launch",
+      "Run a scenario distributed over DDS, one process per service (lockstep, or realtime with clock.mode: realtime)");
   c.app->add_option("scenario", o->scenario, "Scenario file (YAML; required but with the internal --remote)");
   c.app->add_option("--host", o->host, "Start only the processes assigned to this host of the scenario");
   c.app->add_option("--dds", o->dds,
