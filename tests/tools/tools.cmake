@@ -134,8 +134,13 @@ add_test(NAME tools.unknown_profile COMMAND ${EXPECT} 2 "unknown QoS profile 'fa
 add_test(NAME tools.bad_peer_vendor COMMAND ${EXPECT} 2 "--peer-dds: unknown DDS vendor 'rti'"
          ${PLEXUS_CLI} latency pingpong --peer-dds rti)
 set(CIRCLE ${PROJECT_SOURCE_DIR}/deploy/scenarios/unicycle_circle.yaml)
-add_test(NAME tools.launch_unknown_external COMMAND ${EXPECT} 2 "--external plant: no such process"
+add_test(NAME tools.launch_unknown_external
+         COMMAND ${EXPECT} 2 "--external plant: no such process \\(this scenario's: plant_simulator, "
          ${PLEXUS_CLI} launch ${CIRCLE} --external plant --domain 225)
+add_test(NAME tools.launch_unknown_vendor_process
+         COMMAND ${EXPECT} 2 "--vendor plant: no such process \\(this scenario's: plant_simulator, "
+         ${PLEXUS_CLI} launch ${CIRCLE} --vendor plant=cyclone --domain 225)
+set_tests_properties(tools.launch_unknown_vendor_process PROPERTIES LABELS "cli")
 add_test(NAME tools.launch_record_bad_file COMMAND ${EXPECT} 2 "/nonexistent/dir/x.mcap: cannot create recording"
          ${PLEXUS_CLI} launch ${CIRCLE} --record /nonexistent/dir/x.mcap --domain 225)
 set_tests_properties(tools.bad_topic_type tools.bad_vendor tools.missing_run_file tools.replay_missing_file

@@ -102,6 +102,8 @@ std::map<std::string, std::string> vendor_overrides(const std::vector<std::strin
 /// else --dds / dds.vendor.
 void resolve_processes(const LaunchOptions& o, LaunchPlan& plan) {
   std::map<std::string, std::string> vendor_of = vendor_overrides(o.vendors);
+  std::string names;  // the scenario's processes, for the error that names none of them
+  for (const auto& p : plan.everywhere) names += (names.empty() ? "" : ", ") + p.name;
   // --external: a process the scenario declares but something else provides (plexus replay,
   // a hardware bridge) on the same topics. Not started; the lockstep clock still waits for it.
   plan.externals = o.externals;
@@ -109,7 +111,7 @@ void resolve_processes(const LaunchOptions& o, LaunchPlan& plan) {
   for (const auto& e : o.externals) {
     const auto& all = plan.everywhere;
     if (std::none_of(all.begin(), all.end(), [&](const Process& p) { return p.name == e; }))
-      throw InputError("--external " + e + ": no such process (processes: plant_simulator or a service name)");
+      throw InputError("--external " + e + ": no such process (this scenario's: " + names + ")");
     procs.erase(std::remove_if(procs.begin(), procs.end(), [&](const Process& p) { return p.name == e; }), procs.end());
   }
   for (auto& p : procs)
@@ -119,8 +121,7 @@ void resolve_processes(const LaunchOptions& o, LaunchPlan& plan) {
   plan.vendors_label = used.size() == 1 ? plan.vendor : "mixed: fast + cyclone";
   for (const auto& p : plan.everywhere) vendor_of.erase(p.name);  // names of processes on any host are fine
   if (!vendor_of.empty())
-    throw InputError("--vendor " + vendor_of.begin()->first +
-                     ": no such process (processes: plant_simulator or a service name)");
+    throw InputError("--vendor " + vendor_of.begin()->first + ": no such process (this scenario's: " + names + ")");
 }
 
 /// DDS Security: every participant's identity checked, and a mixed deployment whose
