@@ -109,7 +109,7 @@ INSTANTIATE_TEST_SUITE_P(
     Vendors, NamingOnTheWire,
     ::testing::Values(NamingPair{Vendor::fast, Vendor::fast, 167}, NamingPair{Vendor::cyclone, Vendor::cyclone, 168},
                       NamingPair{Vendor::fast, Vendor::cyclone, 169}, NamingPair{Vendor::cyclone, Vendor::fast, 170}),
-    [](const auto& info) { return std::string(to_string(info.param.pub)) + "_to_" + to_string(info.param.sub); });
+    [](const auto& pair) { return std::string(to_string(pair.param.pub)) + "_to_" + to_string(pair.param.sub); });
 
 }  // namespace
 }  // namespace plexus::rt
