@@ -267,6 +267,18 @@ scenario::RunLog LockstepClock::run(const std::atomic<bool>& stop, const scenari
   rt::SampleMeta meta;
   if (tap)
     for (auto& sub : m.subs) sub->keep_raw();  // the tap gets the bytes as received
+  // A producer's response runs from the tick that released its step: a host may run `lead`
+  // steps past the latest tick, so step k is released by the first tick at or after k - lead
+  // (ticks come every `stride` steps). Timed from tick k itself instead, a host that had run
+  // ahead answered "before" the tick: negative responses (launch.json, response_p50_us -470).
+  // The first `lead` steps are left out: every host is still joining, and tick 0 releases them all.
+  const int64_t lead = std::clamp<int64_t>(m.opt.lead_steps, 0, kMaxLeadSteps);
+  std::vector<int64_t> tick_wall(static_cast<std::size_t>(lead + 2 * stride + 1), 0);  // by tick step, a ring
+  const auto released_at = [&](int64_t k) {
+    const int64_t first = std::max<int64_t>(0, k - lead);
+    const int64_t j = std::min(k, (first + stride - 1) / stride * stride);
+    return tick_wall[static_cast<std::size_t>(j) % tick_wall.size()];
+  };
   for (int64_t k = 0; k <= m.sc.steps; ++k) {
     if (stop.load(std::memory_order_relaxed)) throw LockstepError("lockstep: stopped at " + step_text(k));
     tick.step_index(static_cast<uint64_t>(k));
@@ -274,15 +286,19 @@ scenario::RunLog LockstepClock::run(const std::atomic<bool>& stop, const scenari
     tick.step_ns(step_ns);
     tick.header().origin_time_ns(0);
     tick.header().data_time_ns(k * step_ns);
-    if (k % stride == 0 || k == m.sc.steps) m.clock.publish(tick);
-    const int64_t published = wall_time_ns();  // producers stamp their samples' publish time on the wall clock
+    if (k % stride == 0 || k == m.sc.steps) {
+      m.clock.publish(tick);
+      // producers stamp their samples' publish time on the wall clock
+      tick_wall[static_cast<std::size_t>(k) % tick_wall.size()] = wall_time_ns();
+    }
+    const int64_t published = released_at(k);
     // Every signal due at step k, from every host: then step k is complete everywhere.
     for (std::size_t s = 0; s < signals.size(); ++s) {
       if (k % signals[s].period_steps != 0) continue;
       const int64_t deadline = monotonic_ns() + timeout;
       for (;;) {
         if (const void* in = m.subs[s]->take(&meta)) {
-          m.note_response(s, m.subs[s]->header().publish_time_ns() - published);
+          if (k > lead) m.note_response(s, m.subs[s]->header().publish_time_ns() - published);
           if (tap) tap(s, m.subs[s]->wire().support(), in, meta, m.subs[s]->raw());
           if (!m.guard.accept(m.subs[s]->wire(), in, sample))
             throw LockstepError("lockstep: refused the sample of '" + signals[s].name + "' from '" +

@@ -109,8 +109,9 @@ class LockstepClock {
   /// The scenario's signals, by the index SampleTap reports.
   const std::vector<scenario::SignalSpec>& signals() const;
 
-  /// How fast each producer answers: from the clock publishing step k to the producer
-  /// publishing its sample of step k (both wall-clock stamps: one machine, or synchronised
+  /// How fast each producer answers: from the clock publishing the tick that released step k
+  /// (a host runs up to lead_steps past the latest tick: the first tick at or after k - lead)
+  /// to the producer publishing its sample of step k, for the steps after the first lead_steps (both wall-clock stamps: one machine, or synchronised
   /// clocks), over the most recent samples (up to 4096) since the previous call. Call it
   /// from the observer (the run's thread); it does not allocate once `out` has grown to
   /// the producer count.
