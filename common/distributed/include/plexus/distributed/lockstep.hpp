@@ -111,8 +111,8 @@ class LockstepClock {
 
   /// How fast each producer answers: from the clock publishing the tick that released step k
   /// (a host runs up to lead_steps past the latest tick: the first tick at or after k - lead)
-  /// to the producer publishing its sample of step k, for the steps after the first lead_steps (both wall-clock stamps: one machine, or synchronised
-  /// clocks), over the most recent samples (up to 4096) since the previous call. Call it
+  /// to the producer publishing its sample of step k, for the steps after the first lead_steps (both wall-clock stamps:
+  /// one machine, or synchronised clocks), over the most recent samples (up to 4096) since the previous call. Call it
   /// from the observer (the run's thread); it does not allocate once `out` has grown to
   /// the producer count.
   struct ProducerStatus {
