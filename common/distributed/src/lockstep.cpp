@@ -287,9 +287,10 @@ scenario::RunLog LockstepClock::run(const std::atomic<bool>& stop, const scenari
     tick.header().origin_time_ns(0);
     tick.header().data_time_ns(k * step_ns);
     if (k % stride == 0 || k == m.sc.steps) {
-      m.clock.publish(tick);
-      // producers stamp their samples' publish time on the wall clock
+      // Stamped before it is sent (producers stamp their samples' publish time on the wall
+      // clock): a producer waiting for this tick can answer before publish() returns here.
       tick_wall[static_cast<std::size_t>(k) % tick_wall.size()] = wall_time_ns();
+      m.clock.publish(tick);
     }
     const int64_t published = released_at(k);
     // Every signal due at step k, from every host: then step k is complete everywhere.
