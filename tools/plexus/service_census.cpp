@@ -4,6 +4,8 @@
 #include <array>
 #include <cstring>
 
+#include "service_state.hpp"
+
 namespace plexus::cli {
 namespace {
 
@@ -13,17 +15,6 @@ std::string text_of(const std::array<char, 32>& a) { return std::string(a.data()
 bool internal_topic(const std::string& t) { return t.rfind("health/", 0) == 0 || t.rfind("lockstep/", 0) == 0; }
 
 }  // namespace
-
-const char* state_name(msg::ServiceState s) {
-  switch (s) {
-    case msg::SERVICE_CONFIGURING: return "configuring";
-    case msg::SERVICE_WAITING: return "waiting";
-    case msg::SERVICE_RUNNING: return "running";
-    case msg::SERVICE_DEGRADED: return "degraded";
-    case msg::SERVICE_DRAINING: return "draining";
-  }
-  return "?";
-}
 
 void ServiceCensus::heartbeat(const std::string& topic, const msg::Heartbeat& hb, int64_t receive_ns) {
   auto& s = by_topic_[topic];

@@ -33,7 +33,4 @@ class ServiceCensus {
   std::map<std::string, Seen> by_topic_;
 };
 
-/// The heartbeat state as docs/topics.md names it: "running", "degraded", ...
-const char* state_name(msg::ServiceState s);
-
 }  // namespace plexus::cli

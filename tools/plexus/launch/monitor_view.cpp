@@ -4,6 +4,8 @@
 #include <set>
 #include <utility>
 
+#include "service_state.hpp"
+
 namespace plexus::cli {
 
 Health health_of(const ProcessView& v) {
@@ -26,17 +28,6 @@ const char* health_name(Health h) {
 }
 
 namespace {
-
-const char* state_name(msg::ServiceState s) {
-  switch (s) {
-    case msg::SERVICE_CONFIGURING: return "configuring";
-    case msg::SERVICE_WAITING: return "waiting";
-    case msg::SERVICE_RUNNING: return "running";
-    case msg::SERVICE_DEGRADED: return "degraded";
-    case msg::SERVICE_DRAINING: return "draining";
-  }
-  return "?";
-}
 
 /// A bridge's link, or null for a service without one (every counter zero, link down).
 nlohmann::json link_json(const msg::LinkStatus& l) {

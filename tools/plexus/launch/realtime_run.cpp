@@ -100,8 +100,8 @@ class RealtimeMonitor {
   std::vector<double> rate_of_;
   std::vector<std::size_t> latency_before_;
   int64_t status_at_ = 0;
-  // --monitor (web_monitor.hpp): the page's view of each process, the plotted field, the
-  // latency of the last second.
+  // --monitor (web_monitor.hpp): the page's view of each process, the plotted field, and the
+  // latency of the last status line's second.
   WebMonitor* web_;
   std::map<std::string, int64_t> host_offsets_;
   std::vector<ProcessView> views_;    // by process: name and host set once, the rest per status
@@ -109,9 +109,8 @@ class RealtimeMonitor {
   std::vector<int64_t> received_ns_;  // by process: monotonic arrival of its last heartbeat
   std::vector<int> restarts_;         // by process: heartbeats from a new pid
   PlotFeed plot_;
-  nlohmann::json web_latency_ = nlohmann::json::object();
-  std::vector<std::size_t> web_latency_before_;
-  int64_t web_at_ = 0, web_latency_at_ = 0;
+  nlohmann::json latency_json_ = nlohmann::json::object();  // latency_status()'s, per command
+  int64_t web_at_ = 0;
 };
 
 RealtimeMonitor::RealtimeMonitor(scenario::Scenario& sc, rt::Participant& participant, const rt::QosProfiles& profiles,
@@ -143,8 +142,7 @@ RealtimeMonitor::RealtimeMonitor(scenario::Scenario& sc, rt::Participant& partic
       views_(procs.size()),
       local_(procs.size(), false),
       received_ns_(procs.size(), 0),
-      restarts_(procs.size(), 0),
-      web_latency_before_(signals_.size(), 0) {
+      restarts_(procs.size(), 0) {
   const std::string here = sc.hosts.empty() ? "local" : sc.hosts.front();  // the clock's host
   for (std::size_t i = 0; i < procs.size(); ++i) {
     views_[i].name = procs[i].service();
@@ -296,17 +294,6 @@ void RealtimeMonitor::publish_web(int64_t now, const char* phase, bool now_anywa
     v.exited = local_[i] && seen_[i] && last_[i].pid() > 0 && ::kill(static_cast<pid_t>(last_[i].pid()), 0) != 0 &&
                errno == ESRCH;
   }
-  if (now - web_latency_at_ >= 1'000'000'000) {
-    web_latency_at_ = now;
-    for (std::size_t s : commands_) {
-      const auto& l = latency_[s];
-      std::vector<int64_t> window(l.begin() + static_cast<std::ptrdiff_t>(web_latency_before_[s]), l.end());
-      web_latency_before_[s] = l.size();
-      if (!window.empty())
-        web_latency_[signals_[s].name] = {{"p50_ms", percentile_us(window, 0.5) * 1e-3},
-                                          {"p99_ms", percentile_us(window, 0.99) * 1e-3}};
-    }
-  }
   std::string signal, field;
   bool reset = false;
   if (web_->plot_request(signal, field, reset)) {
@@ -316,7 +303,7 @@ void RealtimeMonitor::publish_web(int64_t now, const char* phase, bool now_anywa
       plot_.reset();
   }
   const double t = t0_ ? static_cast<double>(now - t0_) * 1e-9 : 0.0;
-  web_->publish(status_json({phase, t, sc_.duration}, views_, host_offsets_, web_latency_,
+  web_->publish(status_json({phase, t, sc_.duration}, views_, host_offsets_, latency_json_,
                             plot_.next(res_.log, kPlotPointsPerStatus)));
 }
 
@@ -376,7 +363,8 @@ void RealtimeMonitor::show_status(int64_t now) {
   status_at_ = now;
 }
 
-/// Each command's sensor-to-command latency since the last status line: "r1/cmd 1.2/3.4, ...".
+/// Each command's sensor-to-command latency since the last status line: "r1/cmd 1.2/3.4, ...";
+/// the same figures, as JSON, for the page (latency_json_).
 std::string RealtimeMonitor::latency_status() {
   std::string lat;
   for (std::size_t s : commands_) {
@@ -384,9 +372,10 @@ std::string RealtimeMonitor::latency_status() {
     std::vector<int64_t> window(l.begin() + static_cast<std::ptrdiff_t>(latency_before_[s]), l.end());
     latency_before_[s] = l.size();
     if (window.empty()) continue;
+    const double p50_ms = percentile_us(window, 0.5) * 1e-3, p99_ms = percentile_us(window, 0.99) * 1e-3;
+    latency_json_[signals_[s].name] = {{"p50_ms", p50_ms}, {"p99_ms", p99_ms}};
     char buf[96];
-    std::snprintf(buf, sizeof buf, "%s%s %.1f/%.1f", lat.empty() ? "" : ", ", signals_[s].name.c_str(),
-                  percentile_us(window, 0.5) * 1e-3, percentile_us(window, 0.99) * 1e-3);
+    std::snprintf(buf, sizeof buf, "%s%s %.1f/%.1f", lat.empty() ? "" : ", ", signals_[s].name.c_str(), p50_ms, p99_ms);
     lat += buf;
   }
   return lat;
