@@ -218,9 +218,11 @@ class IcrEkfComponent final : public Component {
   long fallbacks_ = 0;
 };
 
-const ComponentRegistration kEkf{"icr_ekf", ComponentKind::estimator,
+const ComponentRegistration kEkf{"icr_ekf",
+                                 ComponentKind::estimator,
                                  "6-state ICR EKF with optional classifier-driven covariance reset (paper 001)",
-                                 [](const ComponentConfig& c) { return std::make_unique<IcrEkfComponent>(c); }};
+                                 [](const ComponentConfig& c) { return std::make_unique<IcrEkfComponent>(c); },
+                                 {"paper001.estimator"}};
 
 }  // namespace
 }  // namespace plexus::scenario

@@ -47,9 +47,11 @@ class ArmCtPdComponent final : public ArmControllerBase {
   alg::CtPdController ctpd_;
 };
 
-const ComponentRegistration kArmCtPd{"arm_ct_pd", ComponentKind::controller,
+const ComponentRegistration kArmCtPd{"arm_ct_pd",
+                                     ComponentKind::controller,
                                      "computed torque + PD comparator (paper 004 eq. (60))",
-                                     [](const ComponentConfig& c) { return std::make_unique<ArmCtPdComponent>(c); }};
+                                     [](const ComponentConfig& c) { return std::make_unique<ArmCtPdComponent>(c); },
+                                     {"paper004.controller"}};
 
 }  // namespace
 }  // namespace plexus::scenario

@@ -72,9 +72,11 @@ class ArmVdcComponent final : public ArmControllerBase {
   alg::VdcController vdc_;
 };
 
-const ComponentRegistration kArmVdc{"arm_vdc", ComponentKind::controller,
+const ComponentRegistration kArmVdc{"arm_vdc",
+                                    ComponentKind::controller,
                                     "virtual decomposition control (paper 004 eqs. (9)-(23))",
-                                    [](const ComponentConfig& c) { return std::make_unique<ArmVdcComponent>(c); }};
+                                    [](const ComponentConfig& c) { return std::make_unique<ArmVdcComponent>(c); },
+                                    {"paper004.controller"}};
 
 }  // namespace
 }  // namespace plexus::scenario

@@ -15,6 +15,7 @@
 #include <memory>
 
 #include "plexus/algorithms/unicycle/heading_observer.hpp"
+#include "plexus/msg/messages.hpp"
 #include "plexus/scenario/registry.hpp"
 #include "services/common/input_values.hpp"
 #include "services/localisation_observer/observer_common.hpp"
@@ -32,13 +33,13 @@ class HeadingObserverComponent final : public Component {
         z0_(c.params().optional<double>("z3_0", 0.0), c.params().optional<double>("z4_0", 0.0)),
         base_step_(c.base_step),
         pos_(add_input("position", {"x", "y"}, "PositionMeasurement")),
-        cmd_(add_input("cmd", {"v", "omega"}, "UnicycleCommand")),
+        cmd_(add_input<msg::UnicycleCommand>("cmd")),
         out_(add_output("heading", {"theta", "z3", "z4", "L"}, "HeadingEstimate")) {}
 
   void step(int64_t /*k*/, double /*t*/) override {
     const double dt = clock_.advance(pos_, base_step_);
     if (dt == 0.0) obs_.reset(z0_, vec2(pos_));  // paper 000: z_hat(0) = (0, 0)
-    if (dt > 0.0) obs_.update(dt, vec2(pos_), {cmd_.valid() ? cmd_[0] : 0.0, cmd_.valid() ? cmd_[1] : 0.0});
+    if (dt > 0.0) obs_.update(dt, vec2(pos_), {cmd_.valid() ? cmd_->v() : 0.0, cmd_.valid() ? cmd_->omega() : 0.0});
     const Eigen::Vector2d z = obs_.state().has_position ? obs_.state().z_hat : z0_;
     out_[0] = heading_(std::atan2(z.y(), z.x()));  // eq. (11), made continuous
     out_[1] = z.x();
@@ -53,7 +54,7 @@ class HeadingObserverComponent final : public Component {
   SampleClock clock_;
   ContinuousHeading heading_;
   InputPort& pos_;
-  InputPort& cmd_;
+  TypedInput<msg::UnicycleCommand>& cmd_;
   OutputPort& out_;
 };
 

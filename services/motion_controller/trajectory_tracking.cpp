@@ -102,9 +102,11 @@ class TrajectoryTrackingComponent final : public Component {
 };
 
 const ComponentRegistration kTracking{
-    "trajectory_tracking", ComponentKind::controller,
+    "trajectory_tracking",
+    ComponentKind::controller,
     "state / output-feedback trajectory tracking (paper 000 eqs. (14), (27)-(28))",
-    [](const ComponentConfig& c) { return std::make_unique<TrajectoryTrackingComponent>(c); }};
+    [](const ComponentConfig& c) { return std::make_unique<TrajectoryTrackingComponent>(c); },
+    {"paper000.controller"}};
 
 }  // namespace
 }  // namespace plexus::scenario

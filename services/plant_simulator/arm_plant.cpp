@@ -80,9 +80,11 @@ class FlexibleJointArmComponent final : public Component {
 };
 
 const ComponentRegistration kArmPlant{
-    "flexible_joint_arm", ComponentKind::plant,
+    "flexible_joint_arm",
+    ComponentKind::plant,
     "n-DoF flexible-joint arm (paper 004), KDL dynamics, RK4 sub-steps; in cmd, out truth/state",
-    [](const ComponentConfig& c) { return std::make_unique<FlexibleJointArmComponent>(c); }};
+    [](const ComponentConfig& c) { return std::make_unique<FlexibleJointArmComponent>(c); },
+    {"paper004.plant"}};
 
 }  // namespace
 }  // namespace plexus::scenario

@@ -64,10 +64,12 @@ class PendulumPlantComponent final : public Component {
 };
 
 const ComponentRegistration kBalancingPlant{
-    "wheeled_inverted_pendulum", ComponentKind::plant,
+    "wheeled_inverted_pendulum",
+    ComponentKind::plant,
     "two-wheeled balancing robot (paper 002 eq. (10)); in cmd {torque}, out truth/state {x, v, theta, theta_dot, "
     "x_ddot, theta_ddot}",
-    [](const ComponentConfig& c) { return std::make_unique<PendulumPlantComponent>(c); }};
+    [](const ComponentConfig& c) { return std::make_unique<PendulumPlantComponent>(c); },
+    {"paper002.plant"}};
 
 }  // namespace
 }  // namespace plexus::scenario

@@ -111,10 +111,12 @@ class SkidSteerPlantComponent final : public Component {
 };
 
 const ComponentRegistration kSkidSteerPlant{
-    "skid_steer", ComponentKind::plant,
+    "skid_steer",
+    ComponentKind::plant,
     "skid-steer ICR kinematics with a terrain schedule and vibration (paper 001); "
     "in cmd {v_l, v_r}, out state {x, y, theta, y_l, y_r, x_G, terrain, a_z, v_l, v_r}",
-    [](const ComponentConfig& c) { return std::make_unique<SkidSteerPlantComponent>(c); }};
+    [](const ComponentConfig& c) { return std::make_unique<SkidSteerPlantComponent>(c); },
+    {"paper001.plant"}};
 
 }  // namespace
 }  // namespace plexus::scenario

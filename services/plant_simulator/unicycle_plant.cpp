@@ -14,6 +14,7 @@
 
 #include "plexus/algorithms/core/random.hpp"
 #include "plexus/algorithms/unicycle/unicycle_plant.hpp"
+#include "plexus/msg/messages.hpp"
 #include "plexus/scenario/params.hpp"
 #include "plexus/scenario/registry.hpp"
 
@@ -30,19 +31,19 @@ class UnicyclePlantComponent final : public Component {
         v_noise_(optional_non_negative(c.params(), "v_noise_std")),
         omega_noise_(optional_non_negative(c.params(), "omega_noise_std")),
         rng_(c.seed),
-        cmd_(add_input("cmd", {"v", "omega"}, "UnicycleCommand")),
-        out_(add_output("truth/state", {"x", "y", "theta"}, "Pose2D")) {}
+        cmd_(add_input<msg::UnicycleCommand>("cmd")),
+        out_(add_output<msg::Pose2D>("truth/state")) {}
 
   void step(int64_t k, double /*t*/) override {
     if (k > 0 && cmd_.valid()) {
-      algorithms::UnicycleInput u{cmd_[0], cmd_[1]};
+      algorithms::UnicycleInput u{cmd_->v(), cmd_->omega()};
       if (v_noise_ > 0.0) u.v += v_noise_ * rng_.normal();
       if (omega_noise_ > 0.0) u.omega += omega_noise_ * rng_.normal();
       state_ = algorithms::unicycle_step(state_, u, h_);
     }
-    out_[0] = state_.x;
-    out_[1] = state_.y;
-    out_[2] = state_.theta;
+    out_->x() = state_.x;
+    out_->y() = state_.y;
+    out_->theta() = state_.theta;
   }
 
  private:
@@ -51,14 +52,16 @@ class UnicyclePlantComponent final : public Component {
   double v_noise_;
   double omega_noise_;
   algorithms::Rng rng_;
-  InputPort& cmd_;
-  OutputPort& out_;
+  TypedInput<msg::UnicycleCommand>& cmd_;
+  TypedOutput<msg::Pose2D>& out_;
 };
 
 const ComponentRegistration kUnicycle{
-    "unicycle", ComponentKind::plant,
+    "unicycle",
+    ComponentKind::plant,
     "unicycle kinematics, exact integration; in cmd {v, omega}, out truth/state {x, y, theta}",
-    [](const ComponentConfig& c) { return std::make_unique<UnicyclePlantComponent>(c); }};
+    [](const ComponentConfig& c) { return std::make_unique<UnicyclePlantComponent>(c); },
+    {"paper000.plant"}};
 
 }  // namespace
 }  // namespace plexus::scenario

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <initializer_list>
 #include <limits>
 #include <map>
 #include <memory>
@@ -32,6 +33,20 @@ namespace plexus::services_test {
 
 using distributed::Rejection;
 using scenario::SignalSample;
+
+/// The component types whose data path a test file covers, with the file's service: each
+/// services/<executable>/tests/<executable>_test.cpp names its types once with a `Covers`,
+/// and coverage_test.cpp checks that every registered type is named (a new type of a
+/// service's folder is untested until its own test file says so).
+inline std::map<std::string, std::string>& covered_types() {
+  static std::map<std::string, std::string> types;
+  return types;
+}
+struct Covers {
+  Covers(std::initializer_list<const char*> types, const char* file = __builtin_FILE()) {
+    for (const char* t : types) covered_types().emplace(t, file);
+  }
+};
 
 inline constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 inline constexpr double kInf = std::numeric_limits<double>::infinity();

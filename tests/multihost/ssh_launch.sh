@@ -3,7 +3,8 @@
 # namespaces starts the other hosts' shares over ssh (tests/multihost/ssh_hosts.sh: an sshd
 # per namespace, keys and known_hosts in OUT/ssh, ssh -F). Cases:
 #   lockstep2, lockstep3   closed loop over 2 / 3 hosts: the digest of `plexus sim`, remote
-#                          log lines relayed into the run folder, nothing left in any namespace
+#                          log lines relayed into the run folder, nothing left in any namespace;
+#                          lockstep3's h3 runs an installed plexus (`plexus:` an install prefix)
 #   realtime_rfid          paper 000's RFID case in realtime over 3 hosts: its steady bounds
 #   teardown               Ctrl-C mid-run (realtime, 3 hosts): everything stops, nothing left
 #   session_dies           the ssh session of h2 killed mid-run: h2's share stops, the run
@@ -90,6 +91,12 @@ lockstep2|lockstep3)
   place=(--set robots.r1.host=h1 --set services.path.host=h1 --set services.observer.host=h2)
   if [ "$n" -eq 3 ]; then place+=(--set services.controller.host=h3); vendors=(--dds cyclone --vendor observer=fast)
   else place+=(--set services.controller.host=h2); vendors=(--dds fast --vendor observer=cyclone); fi
+  if [ "$n" -eq 3 ]; then
+    # h3 runs an installed plexus, not this build tree: its `plexus:` is an install prefix
+    # (cmake --install; the preflight checks its version as for a build tree).
+    cmake --install "$(dirname "$plexus")/.." --prefix "$out/prefix_h3" > "$out/install_h3.log" || fail "cmake --install failed"
+    HOSTSET+=(--set "hosts.h3.plexus=$out/prefix_h3")
+  fi
   "$plexus" sim "$path" --json --quiet --out "$out/sim" "${HOSTSET[@]}" "${place[@]}" > "$out/sim.out" || fail "plexus sim failed"
   launch "$path" --json "${place[@]}" "${vendors[@]}"
   rc=$?
@@ -103,6 +110,12 @@ lockstep2|lockstep3)
     [ -f "$out/launch-h$i/logs/localisation_observer_observer.log" ] || [ -d "$out/launch-h$i/logs" ] || fail "no run folder on h$i"
     [ "$(json_get "$out/launch/launch.json" ".hosts.h$i.state")" = done ] || fail "launch.json: h$i not done"
   done
+  if [ "$n" -eq 3 ]; then
+    # h3's launcher was the installed one: it started the controller with its own share's
+    # QoS file (a build tree's launcher gives deploy/qos.yaml).
+    grep -q -- "--qos-file $out/prefix_h3/share/plexus/qos.yaml" "$out/launch-h3/logs/motion_controller_controller.log" \
+      || fail "h3 did not run the installed plexus ($out/prefix_h3): $(head -1 "$out/launch-h3/logs/motion_controller_controller.log")"
+  fi
   json_get "$out/launch/launch.json" '"startup \(.startup_s) s, teardown \(.teardown_s) s"'
   json_get "$out/launch/launch.json" '.hosts | to_entries[] | "\(.key): clock offset \(.value.clock_offset_ms) ms +- \(.value.clock_uncertainty_ms) ms"'
   wait_all_stopped "the run" 10 || fail "processes left after the run"

@@ -23,6 +23,7 @@
 #include "plexus/evaluation/evaluation.hpp"
 #include "plexus/evaluation/report_figures.hpp"
 #include "plexus/scenario/expectation.hpp"
+#include "plexus/scenario/registry.hpp"
 
 namespace plexus::scenario {
 namespace fs = std::filesystem;
@@ -82,10 +83,16 @@ std::vector<std::pair<std::string, YAML::Node>> services_of(const ReportInputs& 
   return out;
 }
 
-bool has_service(const ReportInputs& in, const std::string& robot, const std::string& type) {
+/// Whether a service of `robot` is of a type that takes part in `figure` (ComponentType::figures).
+bool has_service_in(const ReportInputs& in, const std::string& robot, const std::string& figure) {
   for (const auto& [name, node] : services_of(in, robot))
-    if (node["type"] && node["type"].Scalar() == type) return true;
+    if (node["type"] && scenario::takes_part_in(node["type"].Scalar(), figure)) return true;
   return false;
+}
+
+/// Whether `robot`'s plant is of a type that takes part in `figure`.
+bool plant_in(const ReportInputs& in, const std::string& robot, const std::string& figure) {
+  return scenario::takes_part_in(in.plant_type(robot), figure);
 }
 
 std::vector<YAML::Node> metric_entries(const ReportInputs& in) {
@@ -137,14 +144,16 @@ std::string t_column_label() { return "t [s]"; }
 std::optional<Figure> paper000(const ReportInputs& in, const std::string& robot) {
   const ReportTable* truth = in.truth(robot);
   const ReportTable* ref = in.signal(robot + "/reference");
-  if (in.plant_type(robot) != "unicycle" || !has_service(in, robot, "trajectory_tracking") || !truth || !ref) return {};
+  if (!plant_in(in, robot, "paper000.plant") || !has_service_in(in, robot, "paper000.controller") || !truth || !ref)
+    return {};
   if (!truth->column("x") || !truth->column("y") || !ref->column("x") || !ref->column("y")) return {};
 
   // Which of the paper's simulations: state feedback (Figs. 2-3), output feedback on exact
   // positions (Figs. 4-5) or on the RFID grid (Figs. 6-7).
   std::string figs = "Figs. 4-5";
   for (const auto& [name, node] : services_of(in, robot))
-    if (scalar_or_empty(node, "type") == "trajectory_tracking" && scalar_or_empty(node, "feedback") == "state")
+    if (scenario::takes_part_in(scalar_or_empty(node, "type"), "paper000.controller") &&
+        scalar_or_empty(node, "feedback") == "state")
       figs = "Figs. 2-3";
   if (figs != "Figs. 2-3" && in.scenario["robots"][robot]["sensors"])
     for (const auto& s : in.scenario["robots"][robot]["sensors"])
@@ -219,7 +228,7 @@ std::optional<Figure> paper000(const ReportInputs& in, const std::string& robot)
 /// calls the ICR EKF with the terrain-triggered reset the AKF.
 std::string icr_label(const ReportInputs& in, const ReportTable& e) {
   const YAML::Node s = in.scenario["services"] ? in.scenario["services"][e.producer] : YAML::Node();
-  if (!s || scalar_or_empty(s, "type") != "icr_ekf") return e.name;
+  if (!s || !scenario::takes_part_in(scalar_or_empty(s, "type"), "paper001.estimator")) return e.name;
   const bool adaptive = scalar_or_empty(s, "adaptive_reset") == "true";
   const std::string reset_mode = scalar_or_empty(s, "reset_mode");
   const std::string mode = reset_mode.empty() ? "covariance" : reset_mode;
@@ -228,7 +237,7 @@ std::string icr_label(const ReportInputs& in, const ReportTable& e) {
 
 std::optional<Figure> paper001(const ReportInputs& in, const std::string& robot) {
   const ReportTable* truth = in.truth(robot);
-  if (in.plant_type(robot) != "skid_steer" || !truth) return {};
+  if (!plant_in(in, robot, "paper001.plant") || !truth) return {};
   const std::vector<std::string> icrs = {"y_l", "y_r", "x_G"};
   for (const auto& c : icrs)
     if (!truth->column(c)) return {};
@@ -283,7 +292,7 @@ std::optional<Figure> paper001(const ReportInputs& in, const std::string& robot)
 
 std::optional<Figure> paper002(const ReportInputs& in, const std::string& robot) {
   const ReportTable* truth = in.truth(robot);
-  if (in.plant_type(robot) != "wheeled_inverted_pendulum" || !truth || !truth->column("theta")) return {};
+  if (!plant_in(in, robot, "paper002.plant") || !truth || !truth->column("theta")) return {};
   std::vector<const ReportTable*> estimates;
   for (const auto& t : in.signals)
     if (t.robot == robot && &t != truth && !in.is_sensor(t) && t.column("theta")) estimates.push_back(&t);
@@ -359,7 +368,7 @@ std::optional<Figure> paper004(const ReportInputs& in, const std::string& robot)
   const ReportTable* truth = in.truth(robot);
   const ReportTable* ref = in.signal(robot + "/reference");
   const ReportTable* cmd = in.signal(robot + "/cmd");
-  if (in.plant_type(robot) != "flexible_joint_arm" || !truth || !ref || !cmd) return {};
+  if (!plant_in(in, robot, "paper004.plant") || !truth || !ref || !cmd) return {};
   int n = 0;
   while (truth->column("q" + std::to_string(n + 1)) && ref->column("q" + std::to_string(n + 1)) &&
          cmd->column("u" + std::to_string(n + 1)))
@@ -398,7 +407,7 @@ std::optional<Figure> paper004(const ReportInputs& in, const std::string& robot)
   f.file = "plots/paper004." + robot + ".png";
   const std::string controller = [&] {
     for (const auto& [name, node] : services_of(in, robot))
-      if (const std::string type = scalar_or_empty(node, "type"); type == "arm_vdc" || type == "arm_ct_pd")
+      if (const std::string type = scalar_or_empty(node, "type"); scenario::takes_part_in(type, "paper004.controller"))
         return name + ": " + type;
     return cmd->producer;
   }();

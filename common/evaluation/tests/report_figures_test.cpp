@@ -36,7 +36,7 @@ std::map<std::string, Fields> by_quantity(const std::vector<FieldGroup>& groups)
 }
 
 TEST(ReportPanels, SkidSteerIcrEstimateIsFivePanelsNotOne) {
-  // The ICR EKF's output (IcrEstimate): 10 fields from 0.01 m to 37 m used to share one axis.
+  // The ICR EKF's output (IcrEstimate): 10 fields from 0.01 m to 37 m, unreadable on one axis.
   const auto g = by_quantity(group_fields({{"x", "m"},
                                            {"y", "m"},
                                            {"theta", "rad"},

@@ -1,5 +1,7 @@
 #include "plexus/scenario/registry.hpp"
 
+#include <algorithm>
+
 #include <cstdio>
 #include <cstdlib>
 
@@ -21,8 +23,14 @@ detail::NamedRegistry<ServiceDeclaration>& service_registry() {
 }  // namespace
 
 ComponentRegistration::ComponentRegistration(std::string name, ComponentKind kind, std::string summary,
-                                             ComponentFactory factory) {
-  component_type_registry().add(ComponentType{std::move(name), kind, std::move(summary), std::move(factory)});
+                                             ComponentFactory factory, std::vector<std::string> figures) {
+  component_type_registry().add(
+      ComponentType{std::move(name), kind, std::move(summary), std::move(factory), std::move(figures)});
+}
+
+bool takes_part_in(const std::string& type, const std::string& figure) {
+  const ComponentType* t = find_component_type(type);
+  return t && std::find(t->figures.begin(), t->figures.end(), figure) != t->figures.end();
 }
 
 const ComponentType* find_component_type(const std::string& name) { return component_type_registry().find(name); }

@@ -214,7 +214,7 @@ struct Loader {
     load_plugins(top);
     sc.step = top.required<double>("step");
     // At least 1 us: distributed runs carry the step in whole nanoseconds (a step below 0.5 ns
-    // was 0 there, and every process divided by it).
+    // would be 0 there, and every process divides by it).
     if (!(sc.step >= 1e-6) || !std::isfinite(sc.step)) top.fail("step", "must be at least 1e-6 s");
     if (sc.partial && !top.has("duration")) {
       sc.until_stopped = true;

@@ -9,8 +9,8 @@
 #  - after the transient (from 1 s) the arm tracks within Table 4's settling band in RMS,
 #    rms_e*_steady_mrad <= 1.15 (sim 0.03; measured in realtime 0.03-0.37 with the start-up
 #    wait of docs/distributed.md, "Start-up"; 0.6-1.2 in half the runs without it): a loop that
-#    holds, lags or oscillates fails this, whereas the old check (whole-run RMS < 100 mrad,
-#    58x the sim's) passed it.
+#    holds, lags or oscillates fails this, whereas a whole-run RMS < 100 mrad (58x the
+#    sim's) would pass it.
 # The input deadline is 20 periods: a hold (zero torque) answers a dead producer, not a few
 # milliseconds of scheduling delay on a shared machine; the EKF goes blind 10 ms after its
 # joint samples go stale (its blind_after_s; docs/distributed.md). RUN_SERIAL (realtime.cmake).

@@ -35,12 +35,18 @@ struct ComponentType {
   ComponentKind kind{};
   std::string summary;
   ComponentFactory factory;
+  /// The paper figures of the report (plexus/evaluation, report_paper_figures.cpp) that this
+  /// type takes part in, each "<paper>.<part>": "paper000.plant", "paper000.controller",
+  /// "paper001.plant", "paper001.estimator", "paper002.plant", "paper004.plant",
+  /// "paper004.controller". A user's type may declare one too (docs/sdk.md).
+  std::vector<std::string> figures;
 };
 
 /// Registers a component type at static-initialisation time. A second type with the
 /// same name aborts the program at start-up (a programming error, found by any test).
 struct ComponentRegistration {
-  ComponentRegistration(std::string name, ComponentKind kind, std::string summary, ComponentFactory factory);
+  ComponentRegistration(std::string name, ComponentKind kind, std::string summary, ComponentFactory factory,
+                        std::vector<std::string> figures = {});
 };
 
 /// The registered type, or nullptr.
@@ -48,6 +54,10 @@ const ComponentType* find_component_type(const std::string& name);
 
 /// All registered types, sorted by name.
 std::vector<const ComponentType*> component_types();
+
+/// Whether the registered type `type` declares the figure part `figure` (ComponentType::figures);
+/// false for a type that is not registered.
+bool takes_part_in(const std::string& type, const std::string& figure);
 
 /// Where a service runs relative to the robots. plant: it hosts a robot's plant and sensors
 /// (`plexus launch` gives it one process per robot group, restarts it never, and a robot's

@@ -11,8 +11,7 @@
 // Jacobian F = df/dx:
 //  - kFull (default): exact, including the dependence of M, C, G on q(phi, tau) and
 //    q'(phi', tau'); with A = dq''/dq = -M^{-1} dID/dq, B = dq''/dq' = -M^{-1} dID/dq'
-//    (exact: the tangents of chain_dynamics.hpp; `fd_step` is no longer used, kept so that
-//    existing parameter sets stay valid):
+//    (exact: the tangents of chain_dynamics.hpp; `fd_step` is accepted and not read):
 //      df2/dtau = K (-J^{-1} - M^{-1} + A K^{-1}),  df2/dtau' = K B K^{-1},
 //      df2/dphi = -K A,                               df2/dphi' = -K (J^{-1} F + B),
 //      df4/dtau = -J^{-1},                             df4/dphi' = -J^{-1} F.
@@ -42,7 +41,7 @@
 // torque the nominal model misses (payload, mass and inertia errors):
 //   M(q) q'' + C(q, q') q' + G(q) = tau + d,   d' = w_d,  E[w_d w_d^T] = q_disturbance I,
 // so q'' = M^{-1} (tau + d - C q' - G) everywhere above (tau'', A, B, the feedback's q'' and
-// q'''), and df2/dd = -K M^{-1}. The measured states stay last, so H = [0 I] as before.
+// q'''), and df2/dd = -K M^{-1}. The measured states stay last, so H = [0 I].
 // `q_tau_rate` (> 0) replaces q on the tau' rows when set (Q = diag(q, q_tau_rate, q_d, q, q)).
 // Payload state (also issue 18): with `payload` on, one more state m_p (kg), an unknown point
 // mass at the tip of the last link added to the model's (x = [tau, tau', (d), m_p, phi, phi']):
@@ -72,7 +71,7 @@ struct FlexibleJointEkfParams {
   int substeps = 1;                         ///< RK4 sub-steps per update, >= 1 (1 at the scenarios' 5 kHz)
   double step = 1e-3;                       ///< s, the update period (for the q'' differentiator), > 0
   double accel_filter_hz = 50.0;            ///< cutoff of the q'' differentiator, > 0
-  double fd_step = 1e-6;                    ///< rad, rad/s: central-difference step of A and B, > 0
+  double fd_step = 1e-6;                    ///< not read (A and B are exact tangents); accepted in parameter files, > 0
   EkfJacobian jacobian = EkfJacobian::kFull;
   LinkAcceleration acceleration = LinkAcceleration::kModel;
   bool disturbance = false;    ///< augment x with a link-side disturbance torque d per joint (header)

@@ -19,6 +19,9 @@
 namespace plexus::services_test {
 namespace {
 
+// The component types of services/terrain_classifier/ whose data path this file tests.
+const Covers kCovers{"terrain_classifier", "terrain_recorder"};
+
 namespace alg = plexus::algorithms;
 namespace fs = std::filesystem;
 

@@ -15,6 +15,9 @@
 namespace plexus::services_test {
 namespace {
 
+// The component types of services/motion_controller/ whose data path this file tests.
+const Covers kCovers{"trajectory_tracking", "path_following", "reference_feedforward", "skid_steer_driver"};
+
 namespace alg = plexus::algorithms;
 
 msg::PlanarReference reference(const ServiceUnderTest& s, int64_t k, Eigen::Vector2d p, Eigen::Vector2d dp,

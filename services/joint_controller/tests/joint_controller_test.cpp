@@ -14,6 +14,9 @@
 namespace plexus::services_test {
 namespace {
 
+// The component types of services/joint_controller/ whose data path this file tests.
+const Covers kCovers{"arm_ct_pd", "arm_vdc", "arm_ekf"};
+
 namespace alg = plexus::algorithms;
 using Eigen::Vector2d;
 

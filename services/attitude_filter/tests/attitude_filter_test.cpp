@@ -16,6 +16,9 @@
 namespace plexus::services_test {
 namespace {
 
+// The component types of services/attitude_filter/ whose data path this file tests.
+const Covers kCovers{"attitude_filter", "balancing_controller", "motion_profile"};
+
 namespace alg = plexus::algorithms;
 constexpr double kDeg = std::numbers::pi / 180.0;
 

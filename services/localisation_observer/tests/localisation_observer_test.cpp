@@ -13,6 +13,9 @@
 namespace plexus::services_test {
 namespace {
 
+// The component types of services/localisation_observer/ whose data path this file tests.
+const Covers kCovers{"heading_observer", "velocity_heading_observer"};
+
 namespace alg = plexus::algorithms;
 
 const std::string kHeading = R"(name: obs_part
@@ -57,7 +60,7 @@ void feed_track(ServiceUnderTest& s, int64_t k) {
 TEST(HeadingObserver, ReadsItsInputsAsTheirIdlTypes) {
   ServiceUnderTest s(kHeading);
   EXPECT_EQ(s.message_type("r1/position"), "PositionMeasurement");
-  EXPECT_EQ(s.message_type("r1/cmd"), "UnicycleCommand");
+  EXPECT_EQ(s.message_type("r1/cmd"), "plexus::msg::UnicycleCommand");  // a typed port: the scoped name
   EXPECT_EQ(s.message_type("r1/heading"), "HeadingEstimate");
 }
 

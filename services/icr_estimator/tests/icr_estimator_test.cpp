@@ -16,6 +16,9 @@
 namespace plexus::services_test {
 namespace {
 
+// The component types of services/icr_estimator/ whose data path this file tests.
+const Covers kCovers{"icr_ekf", "icr_odometry", "icr_library_recorder"};
+
 namespace alg = plexus::algorithms;
 
 msg::TrackSpeeds wheels(const ServiceUnderTest& s, int64_t k, double v_l, double v_r) {

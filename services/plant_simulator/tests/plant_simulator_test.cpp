@@ -22,6 +22,11 @@
 namespace plexus::services_test {
 namespace {
 
+// The component types of services/plant_simulator/ whose data path this file tests.
+const Covers kCovers{"unicycle",        "skid_steer",    "flexible_joint_arm", "wheeled_inverted_pendulum",
+                     "position_sensor", "measurement",   "pose_sensor",        "track_speed_sensor",
+                     "imu_z_sensor",    "balancing_imu", "wheel_odometry",     "joint_encoders"};
+
 namespace alg = plexus::algorithms;
 constexpr double kPi = std::numbers::pi;
 
@@ -104,7 +109,7 @@ msg::Pose2D pose(const ServiceUnderTest& s, int64_t k, double x, double y, doubl
 TEST(PositionSensor, RfidGridByHand) {
   // Nearest tag of a 0.1 m grid: (0.123, -0.051) -> (0.1, -0.1) (paper 000 6.3.2).
   ServiceUnderTest s(kUnicycle, {"r1/position"});
-  EXPECT_EQ(s.message_type("r1/truth/state"), "Pose2D");
+  EXPECT_EQ(s.message_type("r1/truth/state"), "plexus::msg::Pose2D");  // a typed port: the scoped name
   ASSERT_EQ(s.deliver("r1/truth/state", pose(s, 0, 0.123, -0.051, 0.0)), Rejection::none);
   s.step(0);
   const auto m = s.published<msg::PositionMeasurement>("r1/position");
