@@ -44,3 +44,15 @@ add_test(NAME first_hour.params_step_bad
          COMMAND ${EXPECT} 2 "^plant_simulator: error: .*bad_step_robot.yaml:3: step: must be a number in \\(0, 1\\] s"
          $<TARGET_FILE:plant_simulator> --params ${CMAKE_CURRENT_BINARY_DIR}/bad_step_robot.yaml)
 set_tests_properties(first_hour.params_step_bad PROPERTIES LABELS "cli;first_hour")
+# The late-read count of services started alone means what it means under a launch (issue 31):
+# the RFID loop by hand, four services, 4 s. Domain 186.
+add_test(NAME first_hour.late_reads_alone
+         COMMAND ${CMAKE_CURRENT_LIST_DIR}/late_reads_alone.sh ${CMAKE_BINARY_DIR}/bin ${PROJECT_SOURCE_DIR}/deploy 186
+                 ${CMAKE_BINARY_DIR}/test-runs/first_hour/late_reads_alone)
+set_tests_properties(first_hour.late_reads_alone PROPERTIES LABELS "first_hour;multiprocess;realtime" TIMEOUT 60)
+# An algorithm's own range check names the key's line, not its section's (line 4 of the file,
+# not line 1): issue 31, "a range error names line 1 of a file where the key is on line 3".
+add_test(NAME first_hour.range_error_line
+         COMMAND ${EXPECT} 2 "^localisation_observer: error: .*/observer_gain_negative.yaml:4: services.localisation_observer.L: heading_observer: L must be finite and > 0 \\(got -3\\)$"
+         $<TARGET_FILE:localisation_observer> --params ${PROJECT_SOURCE_DIR}/tests/data/observer_gain_negative.yaml)
+set_tests_properties(first_hour.range_error_line PROPERTIES LABELS "cli;first_hour")

@@ -29,13 +29,13 @@ add_test(NAME cli.arm_controller_torque_limit_size
          COMMAND ${EXPECT} 2 "services.controller.torque_limit: needs 2 numbers \\(one per joint\\)"
                  $<TARGET_FILE:plexus> sim ${ARM_ROBUST} --quiet --set services.controller.torque_limit=[50])
 add_test(NAME cli.arm_bad_q_disturbance
-         COMMAND ${EXPECT} 2 "services.observer: flexible_joint_ekf: q_disturbance must be finite and > 0 \\(got 0\\)"
+         COMMAND ${EXPECT} 2 "--set services.observer.q_disturbance=0: services.observer.q_disturbance: flexible_joint_ekf: q_disturbance must be finite and > 0 \\(got 0\\)"
                  $<TARGET_FILE:plexus> sim ${ARM_ROBUST} --quiet --set services.observer.q_disturbance=0)
 add_test(NAME cli.arm_bad_payload_prior
-         COMMAND ${EXPECT} 2 "services.observer: flexible_joint_ekf: p0_payload must be finite and > 0 \\(got -1\\)"
+         COMMAND ${EXPECT} 2 "--set services.observer.p0_payload=-1: services.observer.p0_payload: flexible_joint_ekf: p0_payload must be finite and > 0 \\(got -1\\)"
                  $<TARGET_FILE:plexus> sim ${ARM_ROBUST} --quiet --set services.observer.p0_payload=-1)
 add_test(NAME cli.arm_bad_disturbance_compensation
-         COMMAND ${EXPECT} 2 "services.controller: vdc_controller: disturbance_compensation must be in \\[0, 1\\] \\(got 2\\)"
+         COMMAND ${EXPECT} 2 "--set services.controller.disturbance_compensation=2: services.controller.disturbance_compensation: vdc_controller: disturbance_compensation must be in \\[0, 1\\] \\(got 2\\)"
                  $<TARGET_FILE:plexus> sim ${ARM_ROBUST} --quiet --set services.controller.disturbance_compensation=2)
 set_tests_properties(cli.arm_bad_observer_tuning cli.arm_bad_controller_tuning cli.arm_bad_plant_torque_limit
                      cli.arm_controller_torque_limit_size cli.arm_bad_q_disturbance cli.arm_bad_payload_prior

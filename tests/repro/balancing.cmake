@@ -69,13 +69,13 @@ add_test(NAME cli.balance_bad_noise
          COMMAND ${EXPECT} 2 "services.ukf.r_tilt_deg: must be finite and > 0"
                  $<TARGET_FILE:plexus> sim ${BAL_SCENARIO} --quiet --set services.ukf.r_tilt_deg=0)
 add_test(NAME cli.balance_bad_plant
-         COMMAND ${EXPECT} 2 "balance_ukf_ekf.yaml:[0-9]+: robots.r1.plant: wheeled_inverted_pendulum: body_mass must be finite and > 0 \\(got -1\\)"
+         COMMAND ${EXPECT} 2 "balance_ukf_ekf.yaml: --set robots.r1.plant.body_mass=-1: robots.r1.plant.body_mass: wheeled_inverted_pendulum: body_mass must be finite and > 0 \\(got -1\\)"
                  $<TARGET_FILE:plexus> sim ${BAL_SCENARIO} --quiet --set robots.r1.plant.body_mass=-1)
 add_test(NAME cli.balance_bad_poles
          COMMAND ${EXPECT} 2 "balancing_controller: poles\\[3\\] must be distinct from the others \\(got -3\\)"
                  $<TARGET_FILE:plexus> sim ${BAL_SCENARIO} --quiet --set services.balance.poles=[-1,-2,-3,-3])
 add_test(NAME cli.balance_bad_sigma
-         COMMAND ${EXPECT} 2 "services.ukf: augmented_ukf: alpha must be finite and > 0 \\(got 0\\)"
+         COMMAND ${EXPECT} 2 "--set services.ukf.alpha=0: services.ukf.alpha: augmented_ukf: alpha must be finite and > 0 \\(got 0\\)"
                  $<TARGET_FILE:plexus> sim ${BAL_SCENARIO} --quiet --set services.ukf.alpha=0)
 add_test(NAME cli.balance_bad_stat
          COMMAND ${EXPECT} 2 "metrics.0.stat: expected mean, abs_mean, std"

@@ -106,7 +106,7 @@ function(unicycle_bad_config name scenario stderr)
                    -P ${PROJECT_SOURCE_DIR}/common/scenario/tests/cli/expect_cli.cmake)
   set_tests_properties(unicycle_cli.${name} PROPERTIES LABELS "cli")
 endfunction()
-unicycle_bad_config(observer_gain wmr_observer "wmr_observer.yaml:[0-9]+: services.observer: heading_observer: L must be finite and > 0 \\(got -1\\)"
+unicycle_bad_config(observer_gain wmr_observer "wmr_observer.yaml: --set services.observer.L=-1: services.observer.L: heading_observer: L must be finite and > 0 \\(got -1\\)"
                     --set services.observer.L=-1)
 unicycle_bad_config(sensor_kind wmr_output_feedback_rfid "robots.r1.sensors.position.kind: expected exact, gaussian or rfid_grid, got 'laser'"
                     --set robots.r1.sensors.position.kind=laser)

@@ -40,4 +40,14 @@ for vendor in fast cyclone; do
       and (.in | map(.topic) | index("r1/position")) != null' > /dev/null 2>&1 ||
     { echo "FAIL ($vendor): observer row: $obs"; fail=1; }
 done
+# The heartbeat as `plexus topic echo` prints it for reading: its state by name (issue 31);
+# --json keeps the wire's integer, as every third-party decoder gives it.
+for vendor in fast cyclone; do
+  "$bin/plexus" topic echo health/plant_simulator_r1 --dds "$vendor" --domain "$domain" --count 1 > "$out/echo_$vendor.txt" 2>&1
+  "$bin/plexus" topic echo health/plant_simulator_r1 --dds "$vendor" --domain "$domain" --count 1 --json > "$out/echo_$vendor.json" 2>&1
+  grep -Eq '"state": "SERVICE_(RUNNING|DEGRADED)"' "$out/echo_$vendor.txt" ||
+    { echo "FAIL ($vendor): topic echo does not name the heartbeat's state: $(grep -m1 '"state"' "$out/echo_$vendor.txt")"; fail=1; }
+  jq -e '.state == 2 or .state == 3' "$out/echo_$vendor.json" > /dev/null 2>&1 ||
+    { echo "FAIL ($vendor): topic echo --json: state is not the wire's integer: $(head -c 300 "$out/echo_$vendor.json")"; fail=1; }
+done
 exit $fail

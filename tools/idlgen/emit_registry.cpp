@@ -82,6 +82,19 @@ std::vector<const Struct*> topic_structs(const Model& model) {
   return out;
 }
 
+/// The enum members of `s` and of the structs nested in it, as JSON pointers into its
+/// to_json (arrays and sequences left out).
+void enum_members(const Model& model, const Struct& s, const std::string& prefix,
+                  std::vector<std::pair<std::string, const Enum*>>& out) {
+  for (const auto& m : s.members) {
+    if (!m.dims.empty() || m.type.kind != TypeRef::Kind::named) continue;
+    if (const Enum* e = model.find_enum(m.type.name))
+      out.emplace_back(prefix + "/" + m.name, e);
+    else if (const Struct* inner = model.find_struct(m.type.name))
+      enum_members(model, *inner, prefix + "/" + m.name, out);
+  }
+}
+
 const File& file_of(const Model& model, const Struct& s) {
   for (const auto& f : model.files)
     for (const auto& t : f.structs)
@@ -195,6 +208,23 @@ std::string emit_source(const Model& model, const Package& pkg) {
   for (const Struct* s : topics) {
     const std::string T = cpp_name(s->scoped());
     const File& f = file_of(model, *s);
+    std::vector<std::pair<std::string, const Enum*>> enums;
+    enum_members(model, *s, "", enums);
+    const std::string enums_var = "kEnums_" + c_symbol(s->scoped());
+    if (!enums.empty()) {
+      o << "\nnamespace {\n";
+      for (std::size_t i = 0; i < enums.size(); ++i) {
+        o << "constexpr const char* " << enums_var << "_" << i << "[] = {";
+        for (std::size_t k = 0; k < enums[i].second->enumerators.size(); ++k)
+          o << (k ? ", " : "") << quoted(enums[i].second->enumerators[k]);
+        o << "};\n";
+      }
+      o << "constexpr EnumMember " << enums_var << "[] = {\n";
+      for (std::size_t i = 0; i < enums.size(); ++i)
+        o << "    {" << quoted(enums[i].first) << ", " << enums_var << "_" << i << ", "
+          << enums[i].second->enumerators.size() << "},\n";
+      o << "};\n}  // namespace\n";
+    }
     o << "\ntemplate <>\nconst TypeSupport& type_support<" << T << ">() {\n  static const TypeSupport ts{\n"
       << "      " << quoted(s->scoped()) << ",\n"
       << "      []() -> eprosima::fastdds::dds::TopicDataType* { return new CheckedPubSubType<" << T
@@ -210,7 +240,9 @@ std::string emit_source(const Model& model, const Package& pkg) {
     else
       o << "      nullptr,\n";
     o << "      " << (variable_size(model, *s) ? "true" : "false") << ",\n"
-      << "      " << schema_var[f.include_name] << ",\n      " << quoted(f.include_name) << "};\n  return ts;\n}\n";
+      << "      " << schema_var[f.include_name] << ",\n      " << quoted(f.include_name) << ",\n      "
+      << (enums.empty() ? std::string("nullptr, 0") : enums_var + ", " + std::to_string(enums.size()))
+      << "};\n  return ts;\n}\n";
   }
 
   o << "\nnamespace {\n";

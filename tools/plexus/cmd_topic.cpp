@@ -138,8 +138,8 @@ class EchoPrinter {
       std::printf("%s\n", line.c_str());
     } else if (o_.json) {
       std::printf("%s\n", j.dump().c_str());
-    } else {
-      std::printf("%s\n---\n", j.dump(2).c_str());
+    } else {  // for reading: enumerators by name (--json and --csv keep the wire's integer)
+      std::printf("%s\n---\n", msg::with_enum_names(ts, j).dump(2).c_str());
     }
     std::fflush(stdout);
   }

@@ -12,5 +12,6 @@ cmake --build build-fuzz -j"${FUZZ_JOBS:-2}" --target fuzz  # the fuzz targets a
 echo "fuzz build: $(( $(date +%s) - start )) s"
 [ "${FUZZ_BUILD_ONLY:-0}" = 1 ] && exit 0
 start=$(date +%s)
-ctest --test-dir build-fuzz --output-on-failure -j1 -L fuzz
+# Two at a time: each target fuzzes in one process, one core each.
+ctest --test-dir build-fuzz --output-on-failure -j"${FUZZ_JOBS:-2}" -L fuzz
 echo "fuzz smoke: $(( $(date +%s) - start )) s"

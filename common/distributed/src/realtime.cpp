@@ -186,13 +186,18 @@ struct RealtimeHost::Impl {
   // gaps (a late sample on a loaded machine, a lost one) it bridges with its prediction.
   std::vector<std::vector<std::size_t>> measurements;  // by component: its remote inputs from plants and sensors
   std::vector<std::vector<std::size_t>> outputs_of;    // by component: the signals it produces here
-  std::vector<bool> fresh;                             // by signal: the last read found it fresh
-  std::vector<bool> blind;                             // by signal: its producer here is blind
-  std::vector<int64_t> last_measured_ns;               // by component: last tick with a fresh measurement (0: never)
-  std::vector<int64_t> blind_after_ns;                 // by component: its grace
-  int64_t stride = 1;                                  // the loop period in base steps (gcd of the hosted periods)
-  std::vector<bool> deferred;                          // by component: an estimator that waits for its remote samples
-  std::vector<int64_t> next_step;                      // by component (deferred): its next step to run
+  // A read is late when its newest sample is older than the step `plexus sim` would read,
+  // less this slack: 0 for an input whose producer's stage is known (a part of a launch, or
+  // `inputs: {stage}`), one period of the signal when it is not (a service alone), which
+  // then reads the newest sample there is and counts a read late only past one period.
+  std::vector<int64_t> late_slack;        // by signal
+  std::vector<bool> fresh;                // by signal: the last read found it fresh
+  std::vector<bool> blind;                // by signal: its producer here is blind
+  std::vector<int64_t> last_measured_ns;  // by component: last tick with a fresh measurement (0: never)
+  std::vector<int64_t> blind_after_ns;    // by component: its grace
+  int64_t stride = 1;                     // the loop period in base steps (gcd of the hosted periods)
+  std::vector<bool> deferred;             // by component: an estimator that waits for its remote samples
+  std::vector<int64_t> next_step;         // by component (deferred): its next step to run
   // A host of plants and their sensors (the plant simulator) publishes the sensors' samples
   // of a step before the plants' states: the estimators in other processes read the
   // sensors a quarter period after the plant's tick, and a plant's state (the truth, which
@@ -230,6 +235,10 @@ struct RealtimeHost::Impl {
         for (std::size_t in : exec.inputs_of(c)) stop_when_stale[in] = true;
     measurements.resize(sc.components.size());
     outputs_of.resize(sc.components.size());
+    late_slack.assign(signals.size(), 0);
+    for (std::size_t i = 0; i < signals.size(); ++i)
+      if (const auto it = sc.inputs.find(signals[i].name); sc.partial && (it == sc.inputs.end() || !it->second.staged))
+        late_slack[i] = signals[i].period_steps;
     fresh.assign(signals.size(), false);
     blind.assign(signals.size(), false);
     last_measured_ns.assign(sc.components.size(), 0);
@@ -403,7 +412,7 @@ RealtimeReport RealtimeHost::run(const std::atomic<bool>& stop) {
       s = SignalSample{};  // never received
     } else {
       s = e->sample;
-      if (s.step < due) ++m.report.late_inputs;  // the sample of this step has not arrived
+      if (s.step < due - m.late_slack[signal]) ++m.report.late_inputs;  // the sample it expects has not arrived
       m.origin = std::max(m.origin, e->origin_ns);
     }
     const bool stale = e == nullptr || monotonic_ns() - r.received_ns > r.deadline_ns;

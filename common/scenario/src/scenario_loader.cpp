@@ -173,7 +173,15 @@ struct Loader {
     } catch (const InputError&) {
       throw;
     } catch (const std::invalid_argument& e) {  // an algorithm's own parameter check
-      throw InputError(out.where + ": " + e.what());
+      // "<algorithm>: <key> must be ...": named at the key's own line when the section has it.
+      const std::string what = e.what();
+      const auto colon = what.find(": ");
+      const auto must = what.find(" must be ");
+      if (colon != std::string::npos && must != std::string::npos && must > colon + 2) {
+        const std::string param = what.substr(colon + 2, must - colon - 2);
+        if (section.has(param)) section.fail(param, what);
+      }
+      throw InputError(out.where + ": " + what);
     } catch (const std::domain_error& e) {
       throw InputError(out.where + ": " + e.what());
     }

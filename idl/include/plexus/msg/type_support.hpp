@@ -22,6 +22,13 @@ namespace plexus::msg {
 
 class StampHeader;
 
+/// An enum member of a message type: where to_json() puts it, and its enumerators in order.
+struct EnumMember {
+  const char* json_pointer;  ///< "/state", "/link/state"
+  const char* const* names;  ///< names[i]: the enumerator of value i
+  std::size_t count;
+};
+
 struct TypeSupport {
   /// Scoped IDL name, identical for both vendors ("plexus::msg::Pose2D").
   const char* type_name;
@@ -55,7 +62,15 @@ struct TypeSupport {
   const char* schema;
   /// The IDL file it is defined in, as included ("plexus/msg/pose.idl").
   const char* idl_file;
+  /// Its enum members (in nested structs too, arrays left out), for output that names
+  /// enumerators (`plexus topic echo`); to_json() writes their integer, as the wire does.
+  const EnumMember* enum_members = nullptr;
+  std::size_t enum_member_count = 0;
 };
+
+/// `j` (to_json of a sample of `ts`) with each enum member's integer replaced by its
+/// enumerator's name ("state": "SERVICE_RUNNING"); a value out of the enum's range stays a number.
+nlohmann::ordered_json with_enum_names(const TypeSupport& ts, nlohmann::ordered_json j);
 
 /// The TypeSupport of a scoped IDL type name ("plexus::msg::Pose2D": exact), or nullptr. Every
 /// type of every message package loaded (registry.hpp).
