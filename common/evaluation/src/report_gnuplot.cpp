@@ -86,7 +86,11 @@ std::string gnuplot_script(const std::vector<Figure>& figures) {
     const int columns = std::max(1, f.columns);
     const int rows = static_cast<int>((f.panels.size() + static_cast<std::size_t>(columns) - 1) / columns);
     const int width = columns == 1 ? 1100 : 620 * columns;
-    const int height = 70 + std::max(1, rows) * (columns == 1 ? 280 : 460);
+    // A panel at equal scales (a path in the plane) gets a row about as tall as it is wide:
+    // in a 280-pixel row it took a third of the width, and its x tick labels ran together.
+    const bool equal = std::any_of(f.panels.begin(), f.panels.end(), [](const Panel& p) { return p.equal_axes; });
+    const int row_height = columns == 1 ? (equal ? 760 : 280) : 460;
+    const int height = 70 + std::max(1, rows) * row_height;
     gp << "\n# " << f.title << "\n"
        << "set terminal pngcairo size " << width << "," << height << " noenhanced font 'sans,10'\n"
        << "set output " << quote(f.file) << "\n"

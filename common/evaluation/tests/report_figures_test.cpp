@@ -329,5 +329,26 @@ TEST_F(MainJobFolder, HtmlHasTheTableAndEveryFigure) {
   EXPECT_EQ(html.find("http"), std::string::npos);  // nothing from the network
 }
 
+TEST(ReportScript, APanelAtEqualScalesGetsARowAboutAsTallAsTheFigureIsWide) {
+  // A path in the plane (set size ratio -1) in a row 280 pixels tall took a third of the
+  // figure's width, and its x tick labels ran together (issue 31).
+  Figure f;
+  f.file = "plots/r1.trajectory.png";
+  f.title = "r1: paths in the plane";
+  Panel p;
+  p.title = "path (equal scales)";
+  p.xlabel = "x [m]";
+  p.ylabel = "y [m]";
+  p.equal_axes = true;
+  p.curves.push_back({"signals/r1.csv", "2", "3", "r1/truth/state", Curve::Style::line, 1});
+  f.panels.push_back(p);
+  const std::string gp = gnuplot_script({f});
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(gp, m, std::regex("set terminal pngcairo size ([0-9]+),([0-9]+)"))) << gp;
+  const int width = std::stoi(m[1]), height = std::stoi(m[2]);
+  EXPECT_GE(height * 3, width * 2) << "canvas " << width << "x" << height;
+  EXPECT_NE(gp.find("set size ratio -1"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace plexus::scenario

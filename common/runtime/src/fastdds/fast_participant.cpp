@@ -107,6 +107,20 @@ void apply_common(Q& q, const QosProfile& p, bool data_sharing) {
   }
 }
 
+/// Empties a writer's history before it is deleted. Fast DDS 2.9 (Debian 12's 2.9.1) releases
+/// a deleted writer's samples while they are still in its history, without its lock
+/// (RTPSWriter::deinit): a periodic heartbeat that fires meanwhile computes the gaps of that
+/// history from released samples and loops for good (StatefulWriter::
+/// add_gaps_for_holes_in_history_). Seen as a service that spun for 10 s at the end of a
+/// launch until its teardown deadline (1 of 300 five-second launches on a loaded machine;
+/// the launcher then waited 10 s for its acknowledgement; docs/runtime.md). Fixed upstream by
+/// eProsima/Fast-DDS#4076 (December 2023), not in 2.9.1. clear_history() removes each sample
+/// under the writer's lock, so the history stays whole, and the deletion has none to release.
+void clear_before_delete(fdds::DataWriter* w) {
+  std::size_t removed = 0;
+  w->clear_history(&removed);
+}
+
 class FastWriter final : public WriterBackend, public fdds::DataWriterListener {
  public:
   FastWriter(const FastParticipant& owner, std::string topic, std::string local)
@@ -114,6 +128,7 @@ class FastWriter final : public WriterBackend, public fdds::DataWriterListener {
   ~FastWriter() override {
     if (writer_) {
       writer_->set_listener(nullptr);
+      clear_before_delete(writer_);
       owner_.publisher()->delete_datawriter(writer_);
     }
   }
@@ -426,6 +441,11 @@ FastParticipant::FastParticipant(const ParticipantOptions& o)
 FastParticipant::~FastParticipant() {
   if (participant_) {
     participant_->set_listener(nullptr);
+    if (publisher_) {  // writers not deleted by their FastWriter yet (clear_before_delete)
+      std::vector<fdds::DataWriter*> writers;
+      publisher_->get_datawriters(writers);
+      for (fdds::DataWriter* w : writers) clear_before_delete(w);
+    }
     participant_->delete_contained_entities();
     fdds::DomainParticipantFactory::get_instance()->delete_participant(participant_);
   }
