@@ -50,6 +50,32 @@ echo "$echo_out" | head -3
 [ "$(echo "$echo_out" | grep -c '"tilt"')" -eq 3 ] || { echo "FAIL: 3 TiltEstimate samples expected" >&2; exit 1; }
 echo "$echo_out" | jq -e 'select(.tau != 0.5) | halt_error(1)' > /dev/null 2>&1 && { echo "FAIL: tau is not 0.5" >&2; exit 1; }
 
+step "the user's type through topic hz and info, record, echo from the recording and replay"
+plug=(--plugin build/libmylab_msgs.so)
+"$plexus" launch tilt_beside_ukf.yaml --quiet --domain "$domain" --out "$out/realtime2" \
+  --set clock.mode=realtime --set duration=8 > "$out/realtime2.log" 2>&1 &
+launch=$!
+"$plexus" record "${plug[@]}" -o "$out/tilt.mcap" --topics r1/tilt --duration 4 --wait 10 --domain "$domain" \
+  > "$out/record.log" 2>&1 &
+record=$!
+"$plexus" topic hz r1/tilt "${plug[@]}" --domain "$domain" --duration 3 --wait 10 --json > "$out/hz.json" 2> "$out/hz.err" ||
+  { cat "$out/hz.err" >&2; kill $launch $record; exit 1; }
+"$plexus" topic info r1/tilt "${plug[@]}" --domain "$domain" --json > "$out/info.json" 2> "$out/info.err" ||
+  { cat "$out/info.err" >&2; kill $launch $record; exit 1; }
+wait $record || { echo "FAIL: plexus record failed" >&2; cat "$out/record.log" >&2; kill $launch; exit 1; }
+wait $launch || { echo "FAIL: the second realtime launch failed" >&2; cat "$out/realtime2.log" >&2; exit 1; }
+jq -e '.type == "mylab::msg::TiltEstimate" and .rate_hz > 50' "$out/hz.json" > /dev/null || { echo "FAIL: topic hz: $(cat "$out/hz.json")" >&2; exit 1; }
+grep -q "mylab::msg::TiltEstimate" "$out/info.json" || { echo "FAIL: topic info does not name the type" >&2; cat "$out/info.json" >&2; exit 1; }
+rec=$("$plexus" topic echo r1/tilt --recording "$out/tilt.mcap" "${plug[@]}" --json --count 3 2> "$out/echo_rec.err") ||
+  { cat "$out/echo_rec.err" >&2; exit 1; }
+[ "$(echo "$rec" | grep -c '"tilt"')" -eq 3 ] || { echo "FAIL: 3 recorded TiltEstimate samples expected: $rec" >&2; exit 1; }
+replay_domain=187  # the replay on a domain of its own (tests/CMakeLists.txt)
+"$plexus" replay "$out/tilt.mcap" "${plug[@]}" --domain "$replay_domain" --rate 50 > "$out/replay.log" 2>&1 &
+replay=$!
+replayed=$("$plexus" topic echo r1/tilt "${plug[@]}" --domain "$replay_domain" --count 3 --json --wait 10 2> "$out/echo_replay.err")
+kill $replay 2> /dev/null; wait $replay 2> /dev/null
+[ "$(echo "$replayed" | grep -c '"tilt"')" -eq 3 ] || { echo "FAIL: 3 replayed TiltEstimate samples expected" >&2; cat "$out/echo_replay.err" "$out/replay.log" >&2; exit 1; }
+
 step "the user's service alone: SIGTERM -> exit 0; a bad parameter -> one line, exit 2"
 build/tilt_filter --robot r1 --domain "$domain" --set tau=0.2 > "$out/alone.log" 2>&1 &
 alone=$!
