@@ -8,6 +8,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include "plexus/algorithms/core/validation.hpp"
 #include "plexus/base/input_error.hpp"
 #include "plexus/base/logging.hpp"
 #include "plexus/base/yaml_reader.hpp"
@@ -172,16 +173,11 @@ struct Loader {
       out.component = type->factory(cfg);
     } catch (const InputError&) {
       throw;
-    } catch (const std::invalid_argument& e) {  // an algorithm's own parameter check
-      // "<algorithm>: <key> must be ...": named at the key's own line when the section has it.
-      const std::string what = e.what();
-      const auto colon = what.find(": ");
-      const auto must = what.find(" must be ");
-      if (colon != std::string::npos && must != std::string::npos && must > colon + 2) {
-        const std::string param = what.substr(colon + 2, must - colon - 2);
-        if (section.has(param)) section.fail(param, what);
-      }
-      throw InputError(out.where + ": " + what);
+    } catch (const algorithms::validation::ParameterError& e) {               // an algorithm's own parameter check
+      if (section.has(e.parameter())) section.fail(e.parameter(), e.what());  // at the key's own line
+      throw InputError(out.where + ": " + e.what());
+    } catch (const std::invalid_argument& e) {
+      throw InputError(out.where + ": " + e.what());
     } catch (const std::domain_error& e) {
       throw InputError(out.where + ": " + e.what());
     }

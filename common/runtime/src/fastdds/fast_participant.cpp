@@ -441,11 +441,6 @@ FastParticipant::FastParticipant(const ParticipantOptions& o)
 FastParticipant::~FastParticipant() {
   if (participant_) {
     participant_->set_listener(nullptr);
-    if (publisher_) {  // writers not deleted by their FastWriter yet (clear_before_delete)
-      std::vector<fdds::DataWriter*> writers;
-      publisher_->get_datawriters(writers);
-      for (fdds::DataWriter* w : writers) clear_before_delete(w);
-    }
     participant_->delete_contained_entities();
     fdds::DomainParticipantFactory::get_instance()->delete_participant(participant_);
   }

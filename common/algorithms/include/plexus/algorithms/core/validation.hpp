@@ -1,9 +1,9 @@
 // Parameter validation helpers shared by every algorithm's Params check.
 //
-// Each throws std::invalid_argument with a message that names the algorithm, the
+// Each throws ParameterError (a std::invalid_argument) with a message that names the algorithm, the
 // parameter, the requirement and the offending value, e.g.
 //   "heading_observer: L must be finite and > 0 (got -1)"
-// The scenario layer catches it and prefixes the file:line of the parameter.
+// The scenario layer catches it and names the file:line of the parameter's key.
 #pragma once
 
 #include <cmath>
@@ -21,12 +21,25 @@ inline std::string format_value(double value) {
   return os.str();
 }
 
+/// The error of one parameter: the message above, and the parameter's name, so that the
+/// scenario layer can name the line of that key.
+class ParameterError : public std::invalid_argument {
+ public:
+  ParameterError(const std::string& message, std::string_view parameter)
+      : std::invalid_argument(message), parameter_(parameter) {}
+  /// As the algorithm names it: a key of the component's section, or an element ("k_tau[1]").
+  const std::string& parameter() const { return parameter_; }
+
+ private:
+  std::string parameter_;
+};
+
 [[noreturn]] inline void fail(std::string_view where, std::string_view name, std::string_view requirement,
                               double value) {
   std::string msg;
   msg.append(where).append(": ").append(name).append(" must be ").append(requirement);
   msg.append(" (got ").append(format_value(value)).append(")");
-  throw std::invalid_argument(msg);
+  throw ParameterError(msg, name);
 }
 
 /// value is finite and > 0.
