@@ -7,7 +7,8 @@
 //   out heading {theta, z3, z4, L} (HeadingEstimate)                 000 Thm 1, eqs. (5)-(11)
 //     (theta = atan2(z4, z3) made continuous in time, starting in (-pi, pi], so it
 //     overlays the plant's continuous theta; L is the gain, for observer_rate_bound)
-//   L (required), discretisation: exact_arc | held_position, z3_0, z4_0 (0)
+//   L (required; tunable while it runs: plexus param), discretisation: exact_arc | held_position,
+//     z3_0, z4_0 (0)
 //
 // It updates when its position input carries a new sample (so a slower sensor is handled)
 // and outputs its initial estimate until inputs exist.
@@ -34,7 +35,15 @@ class HeadingObserverComponent final : public Component {
         base_step_(c.base_step),
         pos_(add_input("position", {"x", "y"}, "PositionMeasurement")),
         cmd_(add_input<msg::UnicycleCommand>("cmd")),
-        out_(add_output("heading", {"theta", "z3", "z4", "L"}, "HeadingEstimate")) {}
+        out_(add_output("heading", {"theta", "z3", "z4", "L"}, "HeadingEstimate")) {
+    add_tunable(
+        "L", "observer gain, > 0 (paper 000 eq. (5)); the estimate's gain field", [this] { return obs_.params().L; },
+        [this](double L) {
+          alg::HeadingObserverParams p = obs_.params();
+          p.L = L;
+          obs_.set_params(p);
+        });
+  }
 
   void step(int64_t /*k*/, double /*t*/) override {
     const double dt = clock_.advance(pos_, base_step_);

@@ -7,7 +7,8 @@
 //     (Pose2D; feedback: state, 000 eq. (14)) or position {x, y} (PositionMeasurement) +
 //     heading {z3, z4} (HeadingEstimate; feedback: output, eqs. (27)-(28));
 //   out cmd {v, omega} (UnicycleCommand).
-//   feedback: state | output (required), k1, k2, k3 (required), gamma (0.9),
+//   feedback: state | output (required), k1, k2, k3 (required; tunable while it runs:
+//     plexus param), gamma (0.9),
 //     min_speed_for_turn (1e-3), reference_min_speed (m/s, the reference's lowest speed
 //     v_rm: gain condition (15) is checked against it at start; none: not checked)
 //
@@ -50,6 +51,18 @@ class TrajectoryTrackingComponent final : public Component {
         est_(output_feedback_ ? &add_input("heading", {"z3", "z4"}, "HeadingEstimate") : nullptr),
         out_(add_output("cmd", {"v", "omega"}, "UnicycleCommand")) {
     check_gain_condition(c);
+    const auto gain = [this](double alg::TrackingControllerParams::*member, const char* key, const char* what) {
+      add_tunable(
+          key, what, [this, member] { return ctl_.params().*member; },
+          [this, member](double value) {
+            alg::TrackingControllerParams p = ctl_.params();
+            p.*member = value;
+            ctl_.set_params(p);  // gain condition (15) is a start-time warning, not checked again here
+          });
+    };
+    gain(&alg::TrackingControllerParams::k1, "k1", "m/s, > 0: gain of f1 = k1 atan(zeta1) (paper 000 eq. (14))");
+    gain(&alg::TrackingControllerParams::k2, "k2", "m/s, > 0: gain of f2 = k2 atan(zeta2) (paper 000 eq. (14))");
+    gain(&alg::TrackingControllerParams::k3, "k3", "1/s, > 0: heading gain (paper 000 eqs. (14), (28))");
   }
 
   void step(int64_t /*k*/, double /*t*/) override {

@@ -184,3 +184,41 @@ add_test(NAME tools.service_list
          COMMAND ${CMAKE_CURRENT_LIST_DIR}/service_list.sh ${CMAKE_BINARY_DIR}/bin ${PROJECT_SOURCE_DIR}/deploy 184
                  ${CMAKE_BINARY_DIR}/test-runs/tools/service_list)
 set_tests_properties(tools.service_list PROPERTIES LABELS "cli;multiprocess" TIMEOUT 60)
+# plexus param (issue 31, docs/parameters.md): the observer's L and the controller's k1 changed
+# while they run, refused values, the gain field and the command at the acknowledged step.
+# In lockstep under plexus launch (the services on one vendor, the tool on the other; the
+# recorded changes replay the launch's digest in plexus sim), domains 188-189; in realtime on
+# services started alone across both vendors, recorded by plexus record, domains 190-191.
+foreach(pair "fast;cyclone;188" "cyclone;fast;189")
+  list(GET pair 0 vendor)
+  list(GET pair 1 other)
+  list(GET pair 2 domain)
+  add_test(NAME tools.param_lockstep_${vendor}
+           COMMAND ${CMAKE_CURRENT_LIST_DIR}/param_lockstep.sh ${CMAKE_BINARY_DIR}/bin ${PROJECT_SOURCE_DIR}/deploy
+                   ${domain} ${CMAKE_BINARY_DIR}/test-runs/tools/param_lockstep_${vendor} ${vendor} ${other})
+  math(EXPR rt_domain "${domain} + 2")
+  add_test(NAME tools.param_realtime_${vendor}
+           COMMAND ${CMAKE_CURRENT_LIST_DIR}/param_realtime.sh ${CMAKE_BINARY_DIR}/bin ${PROJECT_SOURCE_DIR}/deploy
+                   ${rt_domain} ${CMAKE_BINARY_DIR}/test-runs/tools/param_realtime_${vendor} ${vendor} ${other})
+  set_tests_properties(tools.param_lockstep_${vendor} tools.param_realtime_${vendor}
+                       PROPERTIES LABELS "cli;multiprocess" TIMEOUT 120)
+endforeach()
+# A scenario's parameter_changes are checked at load, each at its own line, by the component's
+# own validator; the param tool's arguments and files too (exit 2, one line).
+set(RFID ${PROJECT_SOURCE_DIR}/deploy/scenarios/wmr_output_feedback_rfid.yaml)
+add_test(NAME cli.parameter_change_unknown_key
+         COMMAND ${EXPECT} 2 "parameter_changes.0.key: no tunable parameter 'observer.Lx' \\(tunable: observer.L, controller.k1"
+                 ${PLEXUS_CLI} sim ${RFID} --quiet "--set" "parameter_changes=[{step: 10, key: observer.Lx, value: 1}]")
+add_test(NAME cli.parameter_change_bad_value
+         COMMAND ${EXPECT} 2 "parameter_changes.0.value: heading_observer: L must be finite and > 0 \\(got -1\\)"
+                 ${PLEXUS_CLI} sim ${RFID} --quiet "--set" "parameter_changes=[{step: 10, key: L, value: -1}]")
+add_test(NAME cli.parameter_change_bad_step
+         COMMAND ${EXPECT} 2 "parameter_changes.0.step: must be a whole step in \\[0, 48000\\] \\(got 48001\\)"
+                 ${PLEXUS_CLI} sim ${RFID} --quiet "--set" "parameter_changes=[{step: 48001, key: k1, value: 1}]")
+add_test(NAME cli.param_set_without_value
+         COMMAND ${EXPECT} 2 "plexus param: error: value is required" ${PLEXUS_CLI} param set "motion_controller controller" k1)
+add_test(NAME cli.param_changes_missing_file
+         COMMAND ${EXPECT} 2 "plexus param: error: recording: File does not exist: /nonexistent.mcap"
+                 ${PLEXUS_CLI} param changes /nonexistent.mcap)
+set_tests_properties(cli.parameter_change_unknown_key cli.parameter_change_bad_value cli.parameter_change_bad_step
+                     cli.param_set_without_value cli.param_changes_missing_file PROPERTIES LABELS "cli")

@@ -28,6 +28,7 @@ Command add_replay_command(CLI::App& root);
 Command add_latency_command(CLI::App& root);
 Command add_deploy_command(CLI::App& root);
 Command add_service_command(CLI::App& root);
+Command add_param_command(CLI::App& root);
 
 /// A duration option that must be > 0 s (a zero or negative wait or timeout is refused,
 /// exit 2: "--timeout: must be > 0 s (got -1)").

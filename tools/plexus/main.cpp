@@ -36,6 +36,7 @@ int main(int argc, char** argv) {
   commands.push_back(plexus::cli::add_latency_command(app));
   commands.push_back(plexus::cli::add_deploy_command(app));
   commands.push_back(plexus::cli::add_service_command(app));
+  commands.push_back(plexus::cli::add_param_command(app));
   // Further subcommands register here.
 
   // An unknown first word is named, with the commands there are (CLI11 would only say that

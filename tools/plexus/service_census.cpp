@@ -4,15 +4,18 @@
 #include <array>
 #include <cstring>
 
+#include "plexus/msg/fixed_text.hpp"
 #include "service_state.hpp"
 
 namespace plexus::cli {
 namespace {
 
-std::string text_of(const std::array<char, 32>& a) { return std::string(a.data(), strnlen(a.data(), a.size())); }
+using msg::text_of;
 
-/// Heartbeats and the launcher's lockstep clock: every process has them, they say nothing of its data.
-bool internal_topic(const std::string& t) { return t.rfind("health/", 0) == 0 || t.rfind("lockstep/", 0) == 0; }
+/// Heartbeats, the launcher's lockstep clock and plexus param: every process has them, they say nothing of its data.
+bool internal_topic(const std::string& t) {
+  return t.rfind("health/", 0) == 0 || t.rfind("lockstep/", 0) == 0 || t.rfind("param/", 0) == 0;
+}
 
 }  // namespace
 

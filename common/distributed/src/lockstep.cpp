@@ -9,6 +9,7 @@
 
 #include "input_guard.hpp"
 #include "plexus/base/clock.hpp"
+#include "plexus/distributed/param_server.hpp"
 #include "plexus/scenario/format.hpp"
 
 namespace plexus::distributed {
@@ -88,11 +89,13 @@ struct LockstepHost::Impl {
   rt::Subscriber<msg::ClockStep> clock;
   std::vector<std::unique_ptr<RemoteSignal>> remote;  // indexed by signal (null if not remote)
   std::vector<std::unique_ptr<WirePublisher>> out;    // indexed by signal (null if not local)
+  std::unique_ptr<ParamServer> params;                // plexus param, when the host has a service name
 
   Impl(scenario::Scenario& s, std::vector<bool> hosted, rt::Participant& p, const rt::QosProfile& qos,
        LockstepOptions o)
-      : sc(s), exec(s, std::move(hosted)), opt(o) {
+      : sc(s), exec(s, hosted), opt(o) {
     clock = p.subscriber<msg::ClockStep>(kClockTopic, qos);
+    if (!opt.service.empty()) params = std::make_unique<ParamServer>(s, std::move(hosted), p, opt.service);
     const auto& signals = exec.signals();
     remote.resize(signals.size());
     out.resize(signals.size());
@@ -140,6 +143,7 @@ int64_t LockstepHost::run(const std::atomic<bool>& stop) {
     }
     if (ended) break;
     if (expected <= std::min(allowed, m.sc.steps)) {
+      if (m.params) m.params->serve(expected);  // a change takes effect at a step of the clock's
       m.exec.step(expected, remote, publish);
       ++expected;
       ++steps;

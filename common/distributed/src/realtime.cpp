@@ -15,6 +15,8 @@
 #include "plexus/base/clock.hpp"
 #include "plexus/base/input_error.hpp"
 #include "plexus/distributed/lockstep.hpp"
+#include "plexus/distributed/param_server.hpp"
+#include "plexus/msg/fixed_text.hpp"
 #include "plexus/scenario/format.hpp"
 #include "plexus/scenario/step_executor.hpp"
 
@@ -122,10 +124,7 @@ int64_t heartbeat_epoch_ns() {
 
 msg::Heartbeat heartbeat_of(const std::string& service, const std::string& robot) {
   heartbeat_epoch_ns();
-  const auto copy = [](std::array<char, 32>& dst, const std::string& src) {
-    dst.fill('\0');
-    std::memcpy(dst.data(), src.data(), std::min(src.size(), dst.size() - 1));
-  };
+  const auto copy = [](auto& dst, const std::string& src) { msg::set_text(dst, src); };
   msg::Heartbeat hb;
   copy(hb.service(), service);
   copy(hb.robot(), robot);
@@ -208,6 +207,7 @@ struct RealtimeHost::Impl {
   rt::Subscriber<msg::ClockStep> start;
   rt::Publisher<msg::Heartbeat> heartbeat;
   msg::Heartbeat hb;
+  std::unique_ptr<ParamServer> params;  // plexus param
   // Per component being stepped: set while its inputs are read.
   bool stale = false;
   int64_t origin = 0;            // newest origin among the inputs read so far
@@ -216,7 +216,7 @@ struct RealtimeHost::Impl {
 
   Impl(scenario::Scenario& s, std::vector<bool> hosted, rt::Participant& p, const rt::QosProfiles& profiles,
        RealtimeOptions o)
-      : sc(s), phase(stage_phase(s, hosted)), exec(s, std::move(hosted)), opt(std::move(o)) {
+      : sc(s), phase(stage_phase(s, hosted)), exec(s, hosted), opt(std::move(o)) {
     const auto& signals = exec.signals();
     remote.resize(signals.size());
     out.resize(signals.size());
@@ -301,6 +301,7 @@ struct RealtimeHost::Impl {
     start = p.subscriber<msg::ClockStep>(kClockTopic, profiles.get("lockstep"));
     heartbeat = p.publisher<msg::Heartbeat>(health_topic(opt.service), profiles.get("health"));
     hb = heartbeat_of(opt.service);
+    params = std::make_unique<ParamServer>(s, std::move(hosted), p, opt.service);
   }
 
   /// True when every input read from another process has at least one matched writer.
@@ -399,6 +400,12 @@ RealtimeReport RealtimeHost::run(const std::atomic<bool>& stop) {
   // Data times are wall-clock times on the run's grid (wire.hpp): step k is at t0 + k periods.
   for (auto& w : m.out)
     if (w) w->wire().set_epoch(t0);
+  m.params->set_epoch(t0);  // a reply's data time is its step's, on the run's grid
+  m.params->set_next_step([&m](std::size_t c, int64_t k) {
+    if (m.deferred[c]) return m.next_step[c];  // a waiting estimator runs its older steps first
+    const int64_t period = m.sc.components[c].period_steps;
+    return (k + period - 1) / period * period;
+  });
   for (auto& r : m.remote)
     if (r) r->sub.wire().set_epoch(t0);
   rt::LoopOptions lo = m.opt.loop;
@@ -481,6 +488,7 @@ RealtimeReport RealtimeHost::run(const std::atomic<bool>& stop) {
   const int64_t startup_ticks = std::max<int64_t>(
       kStartupMinTicks, static_cast<int64_t>(std::ceil(kStartupSeconds / (m.sc.step * static_cast<double>(stride)))));
   const auto run_step = [&](int64_t j) {
+    m.params->serve(j);  // between two ticks: a change takes effect at step j, acknowledged with it
     const bool starting = k0 == 0 && j < startup_ticks * stride;
     const int64_t wait_until = starting ? monotonic_ns() + kStartupWaitPeriods * loop.period_ns() : 0;
     for (std::size_t c = 0; c < m.sc.components.size(); ++c) {

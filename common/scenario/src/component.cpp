@@ -48,6 +48,17 @@ OutputPort& Component::add_output(const std::string& port, std::vector<std::stri
 
 std::string Component::signal_of(const std::string& port) const { return resolve_signal(robot_, remap_, port); }
 
+void Component::add_tunable(std::string key, std::string description, std::function<double()> get,
+                            std::function<void(double)> set) {
+  tunables_.push_back({std::move(key), std::move(description), std::move(get), std::move(set)});
+}
+
+const TunableParameter* Component::tunable(const std::string& key) const {
+  for (const auto& t : tunables_)
+    if (t.key == key) return &t;
+  return nullptr;
+}
+
 void Component::hold(int64_t, double) {
   for (auto& out : outputs_) out->clear();
 }

@@ -526,14 +526,49 @@ struct Loader {
     }
   }
 
+  /// `parameter_changes:`: [{step, key, value}], each checked against its component's own
+  /// validator now (parameter_change.hpp). A part skips the components it does not build: the
+  /// launcher has checked the whole scenario.
+  void load_parameter_changes(const YamlMap& top) {
+    if (!top.has("parameter_changes")) return;
+    const auto entries = top.sequence("parameter_changes");
+    for (std::size_t i = 0; i < entries.size(); ++i) {
+      const YamlMap entry(entries[i], sc.file, "parameter_changes." + std::to_string(i));
+      ParameterChange change;
+      change.where = entry.where() + ": parameter_changes." + std::to_string(i);
+      const double step = entry.required<double>("step");
+      if (!(step >= 0.0 && step == std::floor(step) && (sc.until_stopped || step <= static_cast<double>(sc.steps))))
+        entry.fail("step",
+                   "must be a whole step in [0, " + std::to_string(sc.steps) + "] (got " + format_number(step) + ")");
+      change.step = static_cast<int64_t>(step);
+      const auto name = entry.required<std::string>("key");
+      change.value = entry.required<double>("value");
+      entry.reject_unknown();
+      std::string why;
+      const auto ref = find_tunable(sc, {}, name, why);
+      if (!ref) {
+        if (sc.partial) continue;  // another process's component
+        entry.fail("key", why);
+      }
+      if (const std::string bad = check_value(*ref->parameter, change.value); !bad.empty()) entry.fail("value", bad);
+      change.component = ref->component;
+      change.key = ref->parameter->key;
+      sc.parameter_changes.push_back(std::move(change));
+    }
+    std::stable_sort(sc.parameter_changes.begin(), sc.parameter_changes.end(),
+                     [](const auto& a, const auto& b) { return a.step < b.step; });
+  }
+
   void load(const YamlMap& top) {
     // Read every top-level key first, so a misspelt one is reported before anything deeper.
-    for (const char* k : {"robots", "services", "loops", "metrics", "expectations", "inputs"}) top.node(k);
+    for (const char* k : {"robots", "services", "loops", "metrics", "expectations", "inputs", "parameter_changes"})
+      top.node(k);
     load_top(top);
     top.reject_unknown();
     load_inputs(top);
     load_components(top);
     load_loops(top);
+    load_parameter_changes(top);
     if (sc.partial && (top.has("metrics") || top.has("expectations")))
       top.fail(top.has("metrics") ? "metrics" : "expectations",
                "belongs to a whole scenario, not to one service's part");

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "plexus/base/input_error.hpp"
+#include "plexus/scenario/format.hpp"
 #include "wiring.hpp"
 
 namespace plexus::scenario {
@@ -21,16 +23,24 @@ struct StepExecutor::Impl {
   std::vector<Slot> bus;
   std::vector<bool> produced_here;  // per signal
   SignalSample remote_sample;       // scratch for remote inputs
+  /// By component: its scheduled parameter changes (Scenario::parameter_changes, by step)
+  /// and the next one to apply.
+  std::vector<std::vector<const ParameterChange*>> changes;
+  std::vector<std::size_t> next_change;
 };
 
 StepExecutor::StepExecutor(Scenario& scenario, std::vector<bool> hosted)
-    : scenario_(scenario), hosted_(std::move(hosted)), impl_(new Impl{detail::wire(scenario), {}, {}, {}}) {
+    : scenario_(scenario), hosted_(std::move(hosted)), impl_(new Impl{detail::wire(scenario), {}, {}, {}, {}, {}}) {
   if (hosted_.empty()) hosted_.assign(scenario_.components.size(), true);
   impl_->bus.resize(impl_->wiring.signals.size());
   impl_->produced_here.assign(impl_->wiring.signals.size(), false);
   for (std::size_t ci = 0; ci < scenario_.components.size(); ++ci)
     if (hosted_[ci])
       for (const auto& out : impl_->wiring.outputs[ci]) impl_->produced_here[out.signal] = true;
+  impl_->changes.resize(scenario_.components.size());
+  impl_->next_change.assign(scenario_.components.size(), 0);
+  for (const auto& change : scenario_.parameter_changes)
+    if (hosted_[change.component]) impl_->changes[change.component].push_back(&change);
 }
 
 StepExecutor::~StepExecutor() { delete impl_; }
@@ -93,12 +103,28 @@ int64_t StepExecutor::remote_input_due(std::size_t component, std::size_t n, int
   return due_step(k, impl_->wiring.signals[in.signal].period_steps, in.delayed);
 }
 
+void StepExecutor::apply_parameter_changes(std::size_t ci, int64_t k) {
+  const auto& changes = impl_->changes[ci];
+  std::size_t& next = impl_->next_change[ci];
+  for (; next < changes.size() && changes[next]->step <= k; ++next) {  // none: no work, no allocation
+    const ParameterChange& change = *changes[next];
+    const Component& c = *scenario_.components[ci].component;
+    const TunableParameter* t = c.tunable(change.key);
+    const double previous = t->get();
+    if (const std::string why = try_set(*t, change.value); !why.empty())  // checked at load: cannot happen
+      throw InputError(change.where + ": " + why);
+    parameter_log().info("{}.{}: {} -> {} at step {} ({})", c.name(), change.key, format_number(previous),
+                         format_number(change.value), k, change.where);
+  }
+}
+
 void StepExecutor::run_component(std::size_t ci, int64_t k, const RemoteInput& remote, const OutputSink& sink,
                                  const Gate& gate) {
   auto& w = impl_->wiring;
   const double t = static_cast<double>(k) * scenario_.step;
   auto& c = scenario_.components[ci];
   if (k % c.period_steps != 0) return;
+  apply_parameter_changes(ci, k);
   for (const auto& in : w.inputs[ci]) {
     const SignalSample* src = nullptr;
     const int64_t due = due_step(k, w.signals[in.signal].period_steps, in.delayed);

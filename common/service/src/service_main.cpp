@@ -206,7 +206,8 @@ int plexus::service::run_service(int argc, char** argv, const std::string& self)
         spdlog::info("{}", summary);
       return exit_within(0, kTeardownDeadlineS, self);  // armed before the participant is deleted
     }
-    distributed::LockstepHost host(sc, hosted, *participant, profiles.get(profile), {.timeout_s = timeout});
+    distributed::LockstepHost host(sc, hosted, *participant, profiles.get(profile),
+                                   {.timeout_s = timeout, .service = po.name});
     const int64_t steps = host.run(g_stop);
     if (part_file.empty())
       std::fprintf(stderr, "%s: ran %lld steps\n", po.name.c_str(), static_cast<long long>(steps));

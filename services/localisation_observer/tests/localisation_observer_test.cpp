@@ -3,11 +3,14 @@
 // HeadingEstimate out.
 #include <gtest/gtest.h>
 
+#include <functional>
+
 #include <cmath>
 #include <numbers>
 
 #include "plexus/algorithms/unicycle/heading_observer.hpp"
 #include "plexus/algorithms/unicycle/velocity_heading_observer.hpp"
+#include "plexus/scenario/parameter_change.hpp"
 #include "service_harness.hpp"
 
 namespace plexus::services_test {
@@ -101,6 +104,50 @@ TEST(HeadingObserver, MatchesTheAlgorithmAlongAnArc) {
   // The estimate converges towards the true heading 0.3 + 0.5 t (eq. (10)): it has moved.
   EXPECT_GT(s.out("r1/heading", "z3"), 0.1);
   EXPECT_GT(s.out("r1/heading", "theta"), 0.2);
+}
+
+// plexus param (docs/parameters.md): L changes between two steps, through the component's
+// tunable parameter (as the param server does) or the scenario's parameter_changes; the
+// estimate follows the algorithm with the new gain from that step on, and its gain field says it.
+void expect_gain_change_at_step_10(ServiceUnderTest& s, const std::function<void(int64_t)>& before_step) {
+  alg::HeadingObserver ref({4.0, alg::ObserverDiscretisation::kExactArc});
+  for (int64_t k = 0; k < 20; ++k) {
+    before_step(k);
+    if (k == 10) ref.set_params({1.5, alg::ObserverDiscretisation::kExactArc});
+    feed_track(s, k);
+    s.step(k);
+    if (k == 0)
+      ref.reset({0.0, 0.0}, track(0));
+    else
+      ref.update(0.01, track(k), {1.0, 0.5});
+    const auto m = s.published<msg::HeadingEstimate>("r1/heading");
+    ASSERT_EQ(m.gain(), k < 10 ? 4.0 : 1.5) << k;
+    ASSERT_NEAR(m.direction()[0], ref.state().z_hat.x(), 1e-12) << k;
+    ASSERT_NEAR(m.direction()[1], ref.state().z_hat.y(), 1e-12) << k;
+  }
+}
+
+TEST(HeadingObserver, ItsGainChangesWhileItRunsFromTheNextStep) {
+  ServiceUnderTest s(kHeading);
+  const scenario::TunableParameter* L = s.scenario().components[0].component->tunable("L");
+  ASSERT_NE(L, nullptr);
+  EXPECT_EQ(L->get(), 4.0);
+  expect_gain_change_at_step_10(s, [L](int64_t k) {
+    if (k == 10) L->set(1.5);
+  });
+  // A bad value is refused by the constructor's own check, and changes nothing.
+  EXPECT_THROW(L->set(-1.0), std::invalid_argument);
+  EXPECT_EQ(L->get(), 1.5);
+  EXPECT_EQ(scenario::try_set(*L, 0.0), "heading_observer: L must be finite and > 0 (got 0)");
+  EXPECT_EQ(scenario::try_set(*L, kNaN), "L: must be a finite number");
+  feed_track(s, 20);
+  s.step(20);
+  EXPECT_EQ(s.published<msg::HeadingEstimate>("r1/heading").gain(), 1.5);
+}
+
+TEST(HeadingObserver, TheScenarioScheduleChangesItsGainAtItsStep) {
+  ServiceUnderTest s(kHeading + "parameter_changes: [{step: 10, key: obs.L, value: 1.5}]\n");
+  expect_gain_change_at_step_10(s, [](int64_t) {});
 }
 
 // `reads_v`: the heading observer reads the command's v; the velocity observer reads only

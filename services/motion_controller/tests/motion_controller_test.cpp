@@ -128,6 +128,40 @@ TEST(TrajectoryTracking, OutputFeedbackUsesPositionAndObserverHeading) {
   EXPECT_NEAR(s.out("r1/cmd", "omega"), u.omega, 1e-15);
 }
 
+// plexus param (docs/parameters.md): k1 changes between two steps; the command responds from
+// that step on, as the algorithm with the new gain; a refused value leaves gain and command alone.
+TEST(TrajectoryTracking, ItsGainsChangeWhileItRunsFromTheNextStep) {
+  ServiceUnderTest s(kTrackingState);
+  const auto& ctl = *s.scenario().components[0].component;
+  ASSERT_EQ(ctl.tunables().size(), 3u);
+  const scenario::TunableParameter* k1 = ctl.tunable("k1");
+  ASSERT_NE(k1, nullptr);
+  EXPECT_EQ(k1->get(), 0.11);
+  alg::ReferenceSample r;
+  r.dp = {1, 0};
+  const auto command_at = [&](int64_t k) {  // 1 m behind and 0.5 m right of the reference
+    s.deliver("r1/reference", reference(s, k, {0, 0}, {1, 0}, {0, 0}));
+    s.deliver("r1/truth/state", pose(s, k, -1, -0.5, 0));
+    s.step(k);
+    return s.published<msg::UnicycleCommand>("r1/cmd");
+  };
+  const auto before = command_at(0);
+  const auto u_before =
+      alg::TrajectoryTrackingController({0.11, 0.11, 0.01, 0.9, 1e-3}).state_feedback(r, {-1, -0.5, 0});
+  EXPECT_NEAR(before.v(), u_before.input.v, 1e-15);
+  k1->set(0.3);
+  const auto after = command_at(1);
+  const auto u_after = alg::TrajectoryTrackingController({0.3, 0.11, 0.01, 0.9, 1e-3}).state_feedback(r, {-1, -0.5, 0});
+  EXPECT_NEAR(after.v(), u_after.input.v, 1e-15);
+  EXPECT_NEAR(after.omega(), u_after.input.omega, 1e-15);
+  EXPECT_GT(after.v(), before.v() + 0.1);  // f1 = k1 atan(1): a larger k1 catches up faster
+  EXPECT_THROW(k1->set(0.0), std::invalid_argument);
+  EXPECT_EQ(k1->get(), 0.3);
+  const auto refused = command_at(2);
+  EXPECT_EQ(refused.v(), after.v());
+  EXPECT_EQ(refused.omega(), after.omega());
+}
+
 void feed_tracking(ServiceUnderTest& s, int64_t k) {
   const auto r = ref_at(k);
   ASSERT_EQ(s.deliver("r1/reference", reference(s, k, r.p, r.dp, r.ddp)), Rejection::none);

@@ -191,7 +191,7 @@ std::vector<Process> plan(const scenario::Scenario& sc, const std::string& host)
 YAML::Node part_document(const scenario::Scenario& sc, const Process& p) {
   const YAML::Node& r = sc.resolved;
   YAML::Node part(YAML::NodeType::Map);
-  for (const char* key : {"name", "description", "duration", "step", "seed", "clock", "plugins"})
+  for (const char* key : {"name", "description", "duration", "step", "seed", "clock", "plugins", "parameter_changes"})
     if (r[key]) part[key] = YAML::Clone(r[key]);
   // Relative file parameters (a training file) stay relative to the original scenario.
   part["base_dir"] = std::filesystem::absolute(sc.base_dir.empty() ? "." : sc.base_dir).lexically_normal().string();

@@ -4,6 +4,7 @@
 
 #include "plexus/base/clock.hpp"
 #include "plexus/base/input_error.hpp"
+#include "plexus/distributed/param_server.hpp"
 #include "plexus/distributed/wire.hpp"
 #include "plexus/msg/messages.hpp"
 #include "topic_discovery.hpp"
@@ -71,6 +72,25 @@ distributed::LockstepClock::SampleTap SignalRecorder::tap(const std::vector<scen
     if (failed_.load(std::memory_order_relaxed)) return;  // write() reports the error
     queue_.push(topic_ids_.at(signal), meta.receive_time_ns, ts.header(const_cast<void*>(m)), cdr.data(), cdr.size());
   };
+}
+
+void SignalRecorder::record_param_replies(rt::Participant& participant) {
+  const auto& ts = msg::type_support<msg::ParamReply>();
+  rt::EndpointQos q;
+  const rt::QosProfile param = distributed::param_qos();
+  q.reliability = param.reliability;
+  q.durability = param.durability;
+  q.history_known = true;
+  q.history = param.history;
+  q.depth = param.depth;
+  const int64_t topic = file_->add_topic(distributed::kParamReplyTopic, ts, qos_to_json(q).dump());
+  param_cdr_.resize(ts.max_cdr_size);
+  param_replies_ = participant.subscriber<msg::ParamReply>(distributed::kParamReplyTopic, param);
+  param_replies_.on_sample([this, topic, &ts](msg::ParamReply& r, const rt::SampleMeta& meta) {
+    if (failed_.load(std::memory_order_relaxed)) return;
+    const std::size_t n = ts.serialize(&r, param_cdr_.data(), param_cdr_.size());
+    if (n > 0) queue_.push(topic, meta.receive_time_ns, &r.header(), param_cdr_.data(), n);
+  });
 }
 
 std::size_t SignalRecorder::write() {

@@ -28,6 +28,11 @@ HeadingObserver::HeadingObserver(const HeadingObserverParams& params) : params_(
   validation::require_positive("heading_observer", "L", params.L);
 }
 
+void HeadingObserver::set_params(const HeadingObserverParams& params) {
+  validation::require_positive("heading_observer", "L", params.L);
+  params_ = params;
+}
+
 void HeadingObserver::reset(const Eigen::Vector2d& z_hat0, const Eigen::Vector2d& position0) {
   state_.z_hat = z_hat0;
   state_.position = position0;

@@ -24,6 +24,11 @@ TrajectoryTrackingController::TrajectoryTrackingController(const TrackingControl
   validate(params);
 }
 
+void TrajectoryTrackingController::set_params(const TrackingControllerParams& params) {
+  validate(params);
+  params_ = params;
+}
+
 TrackingOutput TrajectoryTrackingController::state_feedback(const ReferenceSample& ref,
                                                             const UnicycleState& state) const {
   return compute(ref, {state.x, state.y}, {std::cos(state.theta), std::sin(state.theta)}, state.theta);

@@ -55,6 +55,8 @@ struct LockstepOptions {
   /// is the exact sample); a lead takes the clock's round trip off a closed loop's critical
   /// path. Clamped to [0, kMaxLeadSteps].
   int64_t lead_steps = 8;
+  /// Its name (the participant's): it then answers `plexus param` for it (param_server.hpp).
+  std::string service{};
 };
 
 /// Clock: publishes ClockStep k only for k a multiple of this (and the last step). A host

@@ -27,6 +27,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -199,6 +200,18 @@ class TypedOutput final : public OutputPort {
   T value_{};
 };
 
+/// A parameter that may change while its component runs (`plexus param`, docs/parameters.md):
+/// a gain, a threshold, a noise level; never a size or a model. `set` validates the value
+/// with the validator the component's start uses and applies it, or throws (an InputError
+/// or validation::ParameterError naming the key) and leaves the running value as it was.
+/// Both run on the loop's thread, between two steps.
+struct TunableParameter {
+  std::string key;          ///< as in the component's YAML section ("L", "k1")
+  std::string description;  ///< meaning and unit, one short line
+  std::function<double()> get;
+  std::function<void(double)> set;
+};
+
 class Component {
  public:
   explicit Component(const ComponentConfig& config);
@@ -226,8 +239,15 @@ class Component {
   std::string default_signal(const std::string& port) const;
   const std::vector<std::unique_ptr<InputPort>>& inputs() const { return inputs_; }
   const std::vector<std::unique_ptr<OutputPort>>& outputs() const { return outputs_; }
+  /// The parameters it lets change while it runs, in the order it declared them.
+  const std::vector<TunableParameter>& tunables() const { return tunables_; }
+  /// The tunable parameter `key`, or nullptr.
+  const TunableParameter* tunable(const std::string& key) const;
 
  protected:
+  /// Declares a parameter that may change while the component runs (see TunableParameter).
+  void add_tunable(std::string key, std::string description, std::function<double()> get,
+                   std::function<void(double)> set);
   /// Declares an input port that reads `fields` (by name) of the signal the port binds to,
   /// which arrives from another process as the IDL type `message` (empty: it must be
   /// produced in the same process).
@@ -260,6 +280,7 @@ class Component {
   std::map<std::string, std::string> remap_;
   std::vector<std::unique_ptr<InputPort>> inputs_;
   std::vector<std::unique_ptr<OutputPort>> outputs_;
+  std::vector<TunableParameter> tunables_;
 };
 
 }  // namespace plexus::scenario

@@ -17,6 +17,7 @@
 #include "plexus/scenario/expectation.hpp"
 #include "plexus/scenario/metric.hpp"
 #include "plexus/scenario/overrides.hpp"
+#include "plexus/scenario/parameter_change.hpp"
 
 namespace plexus::scenario {
 
@@ -167,6 +168,8 @@ struct Scenario {
   bool until_stopped = false;
   std::vector<ScenarioMetric> metrics;
   std::vector<Expectation> expectations;
+  /// `parameter_changes:`, by step (parameter_change.hpp); a part keeps its own components' only.
+  std::vector<ParameterChange> parameter_changes;
   /// Robot -> its source; robots without a `source` key are simulated (absent here).
   std::map<std::string, RobotSource> sources;
   /// What the components found questionable in their parameters (log_warnings).

@@ -74,6 +74,8 @@ class StepExecutor {
   /// The due step of component i's n-th input binding at step k (-1: not produced yet, or
   /// produced in this process), and its signal.
   int64_t remote_input_due(std::size_t component, std::size_t n, int64_t k, std::size_t& signal) const;
+  /// Applies component ci's scheduled parameter changes due at or before step k (Scenario::parameter_changes).
+  void apply_parameter_changes(std::size_t ci, int64_t k);
   void run_component(std::size_t ci, int64_t k, const RemoteInput& remote, const OutputSink& sink, const Gate& gate);
 
   struct Impl;

@@ -72,6 +72,10 @@ class HeadingObserver {
 
   const HeadingObserverState& state() const { return state_; }
   const HeadingObserverParams& params() const { return params_; }
+  /// A new gain while it runs (plexus param): validated as the constructor validates it
+  /// (throws std::invalid_argument, keeping the old one). The estimate z_hat is the state
+  /// kept, so it stays continuous; zeta = z_hat - L position follows the new L.
+  void set_params(const HeadingObserverParams& params);
 
  private:
   HeadingObserverParams params_;

@@ -80,6 +80,10 @@ class TrajectoryTrackingController {
                                  const Eigen::Vector2d& z_hat) const;
 
   const TrackingControllerParams& params() const { return params_; }
+  /// New gains while it runs (plexus param): validated as the constructor validates them;
+  /// throws std::invalid_argument and keeps the old ones when they are invalid. The
+  /// controller is static, so the next evaluation simply uses them.
+  void set_params(const TrackingControllerParams& params);
 
  private:
   TrackingOutput compute(const ReferenceSample& ref, const Eigen::Vector2d& position, const Eigen::Vector2d& cs,
