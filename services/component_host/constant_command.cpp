@@ -2,7 +2,8 @@
 // are documented in docs/scenarios.md; the output binds to `<robot>/cmd` unless remapped
 // and names its IDL type (docs/topics.md).
 //
-//   out cmd {v, omega} (UnicycleCommand) = the parameters v, omega (m/s, rad/s; required).
+//   out cmd {v, omega} (UnicycleCommand) = the parameters v, omega (m/s, rad/s; required;
+//     tunable while it runs: plexus param).
 #include <memory>
 
 #include "plexus/scenario/registry.hpp"
@@ -16,7 +17,12 @@ class ConstantCommand final : public Component {
       : Component(c),
         v_(c.params().required<double>("v")),
         omega_(c.params().required<double>("omega")),
-        out_(add_output("cmd", {"v", "omega"}, "UnicycleCommand")) {}
+        out_(add_output("cmd", {"v", "omega"}, "UnicycleCommand")) {
+    add_tunable(
+        "v", "m/s: the commanded speed", [this] { return v_; }, [this](double v) { v_ = v; });
+    add_tunable(
+        "omega", "rad/s: the commanded turn rate", [this] { return omega_; }, [this](double w) { omega_ = w; });
+  }
 
   void step(int64_t /*k*/, double /*t*/) override {
     out_[0] = v_;

@@ -195,7 +195,8 @@ Command add_param_command(CLI::App& root) {
   c.app->require_subcommand(1);
   const auto common = [&o](CLI::App* sub) {
     add_dds_options(sub, o->dds);
-    sub->add_option("service", o->service, "The service, as plexus service list names it (\"localisation_observer observer\")")
+    sub->add_option("service", o->service,
+                    "The service, as plexus service list names it (\"localisation_observer observer\")")
         ->required();
     sub->add_option("--timeout", o->timeout, "seconds to wait for the service's reply (discovery included)")
         ->capture_default_str()
@@ -217,7 +218,9 @@ Command add_param_command(CLI::App& root) {
       ->check(CLI::NonNegativeNumber);
   auto* changes = c.app->add_subcommand(
       "changes", "The changes a recording holds (its param/reply topic), as a scenario's parameter_changes:");
-  changes->add_option("recording", o->recording, "A plexus recording (MCAP or SQLite)")->required()->check(CLI::ExistingFile);
+  changes->add_option("recording", o->recording, "A plexus recording (MCAP or SQLite)")
+      ->required()
+      ->check(CLI::ExistingFile);
   c.run = [o, list, get, set, changes] {
     install_stop_handler();
     if (list->parsed()) return run_list(*o);

@@ -114,7 +114,7 @@ void ParamServer::handle(const msg::ParamRequest& req, int64_t k) {
     r.value(ref->parameter->get());
     r.previous_value(r.value());
     msg::set_text(r.reason(), "step " + std::to_string(req.at_step()) + " has run already (" + service_ +
-                              " is at step " + std::to_string(k) + ")");
+                                  " is at step " + std::to_string(k) + ")");
     reply(r);
     return;
   }

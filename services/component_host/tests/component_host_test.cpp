@@ -248,6 +248,20 @@ TEST(ConstantCommand, PublishesItsParameters) {
   }
 }
 
+TEST(ConstantCommand, ItsCommandChangesAtTheScheduledStep) {  // parameter_changes (docs/parameters.md)
+  ServiceUnderTest s(kConstant +
+                     "parameter_changes: [{step: 5, key: v, value: 0.8}, {step: 7, key: driver.omega, value: 0.1}]\n");
+  for (int64_t k = 0; k < 10; ++k) {
+    s.step(k);
+    const auto m = s.published<msg::UnicycleCommand>("r1/cmd");
+    EXPECT_EQ(m.v(), k < 5 ? 0.5 : 0.8) << k;
+    EXPECT_EQ(m.omega(), k < 7 ? -0.2 : 0.1) << k;
+  }
+  EXPECT_NE(config_error(kConstant + "parameter_changes: [{step: 5, key: v, value: .nan}]\n", {})
+                .find("parameter_changes.0.value: expected a finite number, got '.nan'"),
+            std::string::npos);
+}
+
 TEST(ConstantCommand, BadParametersAreConfigurationErrors) {
   expect_config_errors(kConstant, {
                                       {"services.driver.v=fast", {"services.driver.v"}},
