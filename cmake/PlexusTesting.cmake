@@ -27,3 +27,25 @@ function(plexus_discover_tests target)
     set_property(DIRECTORY APPEND PROPERTY TEST_INCLUDE_FILES ${file})
   endif()
 endfunction()
+
+# plexus_place_test_programs(): every test program in build/bin/tests/, apart from the
+# programs a user runs (build/bin/): an executable named *_tests (the GoogleTest binaries) or
+# defined under tests/ (peers, probes, helpers of the test scripts). Called once, after every
+# target is defined; nothing is listed by name, so a new test program lands there by itself.
+function(plexus_place_test_programs)
+  set(dirs ${PROJECT_SOURCE_DIR})
+  while(dirs)
+    list(POP_FRONT dirs dir)
+    get_property(subdirs DIRECTORY ${dir} PROPERTY SUBDIRECTORIES)
+    list(APPEND dirs ${subdirs})
+    get_property(targets DIRECTORY ${dir} PROPERTY BUILDSYSTEM_TARGETS)
+    foreach(t IN LISTS targets)
+      get_target_property(type ${t} TYPE)
+      get_target_property(source_dir ${t} SOURCE_DIR)
+      string(FIND "${source_dir}/" "${PROJECT_SOURCE_DIR}/tests/" under_tests)
+      if(type STREQUAL "EXECUTABLE" AND (t MATCHES "_tests$" OR under_tests EQUAL 0))
+        set_target_properties(${t} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/bin/tests)
+      endif()
+    endforeach()
+  endwhile()
+endfunction()

@@ -25,6 +25,7 @@
 #include "plexus/link/udp_socket.hpp"
 #include "plexus/scenario/overrides.hpp"
 #include "plexus/service/dds_options.hpp"
+#include "plexus/service/producer_monitor.hpp"
 #include "plexus/service/standalone.hpp"
 
 namespace {
@@ -156,6 +157,8 @@ int main(int argc, char** argv) {
     const rt::ParticipantOptions po = net.participant(name + " " + robot, name);
     const auto profiles = net.profiles();
     auto participant = rt::Participant::create(po);
+    // A plant simulator of the same robot left running would interleave with the device: warned.
+    const service::ProducerMonitor producers(*participant, sc, po.name);
     bridge::Bridge b(sc, *participant, profiles, std::move(link),
                      {.service = po.name, .link_timeout_s = src.link_timeout_s, .retry_s = src.retry_s});
     const auto r = b.run(g_stop);

@@ -30,7 +30,7 @@ case $source in
     pids+=($!) ;;
   *) echo "balancing_contract.sh: SOURCE: simulator or serial"; exit 2 ;;
 esac
-"$bin/contract_probe" --dds "$vendor" --domain "$domain" --robot r1 --contract "$here/balancing_contract.yaml" \
+"$bin/tests/contract_probe" --dds "$vendor" --domain "$domain" --robot r1 --contract "$here/balancing_contract.yaml" \
   --discover 3 --measure 6 --label "balancing $source/$vendor" --out "$out/result.json" > "$out/probe.out" 2>&1
 rc=$?
 cat "$out/probe.out"

@@ -18,7 +18,7 @@ foreach(source simulator serial udp replay)
     add_test(NAME bridges.contract_${source}_${vendor}
              COMMAND ${PROJECT_SOURCE_DIR}/tests/scripts/own_netns.sh
                      bash ${CMAKE_CURRENT_LIST_DIR}/contract.sh ${source} ${vendor} ${BRIDGES_DOMAIN}
-                     ${CMAKE_BINARY_DIR}/test-runs/bridges/contract_${source}_${vendor} $<TARGET_FILE_DIR:contract_probe>)
+                     ${CMAKE_BINARY_DIR}/test-runs/bridges/contract_${source}_${vendor} $<TARGET_FILE_DIR:plexus>)
     # Realtime, but neither RUN_SERIAL nor a RESOURCE_LOCK: each test has its own domain,
     # pty, UDP ports (40000 + 10 * domain + {0,1}, between the port ranges of DDS domains
     # 135 and 136) and output folder, and what it asserts does not depend on a quiet
@@ -63,7 +63,7 @@ foreach(variant "simulator;cyclone;138" "serial;fast;139")
   add_test(NAME bridges.balancing_contract_${source}_${vendor}
            COMMAND ${PROJECT_SOURCE_DIR}/tests/scripts/own_netns.sh
                    bash ${CMAKE_CURRENT_LIST_DIR}/balancing_contract.sh ${source} ${vendor} ${domain}
-                   ${CMAKE_BINARY_DIR}/test-runs/bridges/balancing_contract_${source}_${vendor} $<TARGET_FILE_DIR:contract_probe>)
+                   ${CMAKE_BINARY_DIR}/test-runs/bridges/balancing_contract_${source}_${vendor} $<TARGET_FILE_DIR:plexus>)
   # Its rates are judged over the whole window as the contract tests above, it runs in a
   # network namespace of its own as they do, and it takes their lock (issue 15: every
   # realtime test under a lock or RUN_SERIAL).

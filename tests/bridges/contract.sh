@@ -7,7 +7,7 @@
 #   serial     device_emulator on a pty + serial_bridge
 #   udp        device_emulator on UDP + udp_bridge (ports 40000 + 10*DOMAIN + {0,1})
 #   replay     a 12 s recording of the simulator (plexus record), played by plexus replay --restamp
-# Each program is started standalone (no launcher). contract_probe (BIN_DIR, default the
+# Each program is started standalone (no launcher). contract_probe (BIN_DIR/tests; BIN_DIR, default the
 # build tree's bin/) checks discovery, rates, headers and values, and (not for replay)
 # drives the robot with a step command and then lets the command go stale. For the bridges
 # the emulator injects link faults (bit flips, garbage, an oversize frame, dropped bytes,
@@ -29,7 +29,7 @@ params=$root/deploy/params/unicycle_robot.yaml
 contract=$here/unicycle_contract.yaml
 case $source in simulator|serial|udp|replay) ;; *) echo "contract.sh: SOURCE: simulator, serial, udp or replay"; exit 2 ;; esac
 case $vendor in fast|cyclone) ;; *) echo "contract.sh: VENDOR: fast or cyclone"; exit 2 ;; esac
-for p in contract_probe plant_simulator plexus; do
+for p in tests/contract_probe plant_simulator plexus; do
   [ -x "$bin/$p" ] || { echo "contract.sh: $bin/$p missing"; exit 2; }
 done
 case $source in serial) need="device_emulator serial_bridge" ;; udp) need="device_emulator udp_bridge" ;; *) need="" ;; esac
@@ -141,7 +141,7 @@ case $source in
     ;;
 esac
 
-"$bin/contract_probe" --dds "$vendor" --domain "$domain" --robot r1 --contract "$contract" --discover 3 --measure 8 \
+"$bin/tests/contract_probe" --dds "$vendor" --domain "$domain" --robot r1 --contract "$contract" --discover 3 --measure 8 \
   "${probe_args[@]}" --label "$source" --out "$out/result.json" 2> "$out/probe.err"
 probe_rc=$?
 cat "$out/probe.err"

@@ -22,12 +22,16 @@ rm -rf "$out" && mkdir -p "$out/echo"
   --out "$out/run" --quiet > "$out/launch.log" 2>&1 &
 launch=$!
 # The services start within the first seconds; the recorder adds topics as their writers appear.
-"$plexus" record --naming ros2 --dds "$vendor" --domain "$domain" -o "$out/run.mcap" --duration 7 \
+"$plexus" record --naming ros2 --dds "$vendor" --domain "$domain" -o "$out/run.mcap" --duration 8 \
   > "$out/record.log" 2>&1 &
 record=$!
 sleep 4
-"$plexus" topic list --dds "$vendor" --domain "$domain" --json --wait 2 > "$out/wire.json"
 rc=0
+# plexus param under ROS 2's names too; its reply on param/reply is one more recorded sample.
+"$plexus" param list "localisation_observer wmr_observer" --naming ros2 --dds "$vendor" --domain "$domain" \
+  > "$out/param.txt" 2>&1 || { echo "plexus param list under naming ros2:"; cat "$out/param.txt"; rc=1; }
+grep -q "^wmr_observer.L " "$out/param.txt" || { echo "plexus param list: no wmr_observer.L"; rc=1; }
+"$plexus" topic list --dds "$vendor" --domain "$domain" --json --wait 2 > "$out/wire.json"
 wait "$record" || { echo "plexus record failed:"; cat "$out/record.log"; rc=1; }
 wait "$launch" || {
   r=$?

@@ -14,7 +14,7 @@ bin=$1 params=$2 domain=$3 vendor=$4 pub_vendor=$5
 pid=$!
 fail=0
 publish() {  # topic type field value count [health topic]
-  "$bin/bad_sample_publisher" --dds "$pub_vendor" --domain "$domain" --topic "$1" --type "$2" --field "$3" \
+  "$bin/tests/bad_sample_publisher" --dds "$pub_vendor" --domain "$domain" --topic "$1" --type "$2" --field "$3" \
     --value "$4" --count "$5" ${6:+--health "$6"} || fail=1
 }
 # Each batch is confirmed on the observer's heartbeat, and what a late-discovering volatile

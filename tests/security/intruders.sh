@@ -35,7 +35,7 @@ for iv in fast cyclone; do
   check $? "plexus topic list on $iv with an identity of another CA: $(cat "$work/foreign.json")"
 done
 # Injection: the secure subscriber reads for 12 s at least while intruders publish.
-probe=$bin/security_probe
+probe=$bin/tests/security_probe
 "$probe" sub --dds "$vendor" --domain "$domain" --security "$pki" --identity probe_sub --label legit --expect 5 \
   --min-duration 12 --duration 40 > "$work/sub.log" 2>&1 &
 sub=$!

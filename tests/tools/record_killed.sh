@@ -13,7 +13,7 @@ cleanup() { [ ${#pids[@]} -gt 0 ] && kill -9 "${pids[@]}" 2> /dev/null; return 0
 trap cleanup EXIT
 fail() { echo "FAIL: $*"; exit 1; }
 
-"$bin/topic_peer" pub --dds "$vendor" --domain "$domain" --topic tools/killed --profile sensor_reliable --rate 200 \
+"$bin/tests/topic_peer" pub --dds "$vendor" --domain "$domain" --topic tools/killed --profile sensor_reliable --rate 200 \
   --duration 60 > /dev/null 2>&1 &
 pids+=($!)
 "$bin/plexus" record --dds "$vendor" --domain "$domain" --topics tools/killed -o "$rec" --wait 20 \

@@ -12,7 +12,7 @@ mkdir -p "$work"
 ext=${EXT:-mcap}
 a=$work/a.$ext b=$work/b.$ext
 rm -f "$a" "$b"
-"$bin/topic_peer" pub --dds "$vendor" --domain "$domain" --topic tools/replayed --profile sensor_reliable --rate 100 --count 50 --duration 30 --wait-reader &
+"$bin/tests/topic_peer" pub --dds "$vendor" --domain "$domain" --topic tools/replayed --profile sensor_reliable --rate 100 --count 50 --duration 30 --wait-reader &
 peer=$!
 "$bin/plexus" record --dds "$vendor" --domain "$domain" --topics tools/replayed -o "$a" --count 50 --duration 25 --wait 10
 wait $peer || true

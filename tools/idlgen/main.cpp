@@ -23,7 +23,8 @@ int usage() {
   std::fprintf(stderr,
                "usage: plexus_idlgen --package NAME --header-name INCLUDE [--dependency-header INCLUDE]...\n"
                "                     [--header FILE] [--source FILE] [--docs FILE] [--ros2 DIR] [--check] -I DIR... "
-               "FILE.idl...\n");
+               "FILE.idl...\n"
+               "       plexus_idlgen --version\n");
   return 2;
 }
 
@@ -78,7 +79,10 @@ int main(int argc, char** argv) {
         dirs.push_back(a.substr(2));
       else if (a == "--help" || a == "-h")
         return usage() - 2;
-      else if (a.rfind("-", 0) == 0) {
+      else if (a == "--version") {
+        std::printf("plexus_idlgen %s\n", PLEXUS_VERSION);
+        return 0;
+      } else if (a.rfind("-", 0) == 0) {
         std::fprintf(stderr, "plexus_idlgen: error: unknown option %s\n", a.c_str());
         return usage();
       } else

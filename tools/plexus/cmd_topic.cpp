@@ -11,6 +11,7 @@
 #include "plexus/base/clock.hpp"
 #include "plexus/base/input_error.hpp"
 #include "plexus/msg/messages.hpp"
+#include "plexus/runtime/producer_watch.hpp"
 #include "recording.hpp"
 #include "topic_discovery.hpp"
 
@@ -206,11 +207,11 @@ int run_echo(const TopicOpts& o) {
   const auto& ts = resolve_topic_type(*p, o.topic, o.type, o.wait < 0 ? 5.0 : o.wait, &writers);
   auto reader = p->make_reader(ts, o.topic, subscriber_qos(o.qos_file, o.profile, writers, 100));
   EchoPrinter printer(o);
-  ProducerWatch producers;  // a second process writing the topic: warned when discovery shows it
+  rt::ProducerWatch producers({o.topic});  // a second process writing the topic: warned when discovery shows it
   int64_t next_check = 0;
   read_samples(*reader, ts, o, [&](const void* s, const rt::SampleMeta& meta) {
     if (s) printer.print(ts, s, meta.receive_time_ns);
-    if (monotonic_ns() >= next_check) producers.check(*p, o.topic), next_check = monotonic_ns() + 1'000'000'000;
+    if (monotonic_ns() >= next_check) producers.check(*p), next_check = monotonic_ns() + 1'000'000'000;
   });
   return 0;
 }
@@ -238,7 +239,7 @@ int run_hz(const TopicOpts& o) {
   } win, all;
   int64_t last = 0, first = 0, window_start = monotonic_ns(), next_check = 0;
   uint64_t samples = 0;
-  ProducerWatch producers;  // a second process writing the topic: warned when discovery shows it
+  rt::ProducerWatch producers({o.topic});  // a second process writing the topic: warned when discovery shows it
   auto print = [&](const Acc& a, const char* what) {
     if (a.n == 0) {
       std::printf("%s: no new samples\n", what);
@@ -259,7 +260,7 @@ int run_hz(const TopicOpts& o) {
       }
       last = meta.receive_time_ns;
     }
-    if (monotonic_ns() >= next_check) producers.check(*p, o.topic), next_check = monotonic_ns() + 1'000'000'000;
+    if (monotonic_ns() >= next_check) producers.check(*p), next_check = monotonic_ns() + 1'000'000'000;
     if (!o.json && monotonic_ns() - window_start >= static_cast<int64_t>(o.window_s * 1e9)) {
       print(win, o.topic.c_str());
       std::fflush(stdout);
@@ -298,7 +299,7 @@ int run_info(const TopicOpts& o) {
                  o.topic.c_str(), o.dds.domain, wait);
     return 1;
   }
-  ProducerWatch().check(*p, o.topic);
+  rt::ProducerWatch({o.topic}).check(*p);
   std::set<std::string> types;
   for (const auto& e : eps) types.insert(e.type_name);
   nlohmann::ordered_json j;

@@ -110,19 +110,6 @@ const msg::TypeSupport& resolve_topic_type(const rt::Participant& p, const std::
   return *ts;
 }
 
-bool ProducerWatch::check(const rt::Participant& p, const std::string& topic) {
-  if (warned_) return true;
-  std::set<std::string> producers;
-  for (const auto& e : p.discovered_endpoints())
-    if (!e.local && e.is_writer && e.topic == topic) producers.insert(e.participant);
-  if (producers.size() < 2) return false;
-  std::string list;
-  for (const auto& w : producers) list += (list.empty() ? "" : ", ") + w;
-  spdlog::warn("{} has writers in {} processes ({}): their samples interleave", topic, producers.size(), list);
-  warned_ = true;
-  return true;
-}
-
 rt::QosProfile subscriber_qos(const std::string& qos_file, const std::string& profile,
                               const std::vector<rt::EndpointQos>& writers, int32_t depth) {
   if (!profile.empty()) return rt::QosProfiles::load(qos_file.empty() ? rt::default_qos_file() : qos_file).get(profile);

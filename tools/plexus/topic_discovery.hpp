@@ -45,17 +45,6 @@ const msg::TypeSupport& resolve_topic_type(const rt::Participant& p, const std::
                                            const std::string& type_option, double wait_s,
                                            std::vector<rt::EndpointQos>* writers);
 
-/// Two processes writing one topic (two plant simulators of one robot) interleave their
-/// samples: check() warns, once, naming them, when discovery shows writers of `topic` in more
-/// than one participant. Call it again as discovery goes on (topic hz: every window).
-class ProducerWatch {
- public:
-  bool check(const rt::Participant& p, const std::string& topic);
-
- private:
-  bool warned_ = false;
-};
-
 /// The QoS profile for a subscriber: `profile` from the QoS file if given, else one that
 /// matches the discovered writers (see rt::reader_qos_matching).
 rt::QosProfile subscriber_qos(const std::string& qos_file, const std::string& profile,

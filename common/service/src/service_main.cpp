@@ -39,6 +39,7 @@
 #include "plexus/scenario/plugins.hpp"
 #include "plexus/scenario/registry.hpp"
 #include "plexus/service/dds_options.hpp"
+#include "plexus/service/producer_monitor.hpp"
 #include "plexus/service/service_main.hpp"
 #include "plexus/service/standalone.hpp"
 #include "service_help.hpp"
@@ -183,6 +184,8 @@ int plexus::service::run_service(int argc, char** argv, const std::string& self)
     const rt::ParticipantOptions po = net.participant(self + " " + hosted_names, self);
     const auto profiles = net.profiles();
     auto participant = rt::Participant::create(po);
+    // Another process writing one of its topics: warned once, from a thread beside the loop.
+    const service::ProducerMonitor producers(*participant, sc, po.name);
     if (realtime) {
       distributed::RealtimeOptions ro;
       ro.service = po.name;
