@@ -55,7 +55,7 @@ uint64_t new_request_id() {
 std::vector<msg::ParamReply> exchange(const ParamOpts& o, msg::ParamOperation op) {
   rt::parse_vendor(o.dds.dds);
   msg::ParamRequest req;
-  copy_text(req.service(), o.service, "SERVICE");
+  msg::set_text(req.service(), o.service);  // a longer name is addressed by its first 63 characters
   copy_text(req.key(), o.key, "KEY");
   req.operation(op);
   req.value(o.value);

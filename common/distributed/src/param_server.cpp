@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <tuple>
+#include <type_traits>
 
 #include "plexus/msg/fixed_text.hpp"
 #include "plexus/scenario/format.hpp"
@@ -34,6 +36,8 @@ ParamServer::ParamServer(scenario::Scenario& sc, std::vector<bool> hosted, rt::P
     const int64_t period = sc_.components[c].period_steps;
     return (k + period - 1) / period * period;
   };
+  // A request names its target in 63 characters at most: a longer name is addressed by its start.
+  addressed_as_ = service_.substr(0, std::tuple_size_v<std::remove_reference_t<decltype(scratch_.service())>> - 1);
   requests_ = participant.subscriber<msg::ParamRequest>(kParamRequestTopic, param_qos());
   replies_ = participant.publisher<msg::ParamReply>(kParamReplyTopic, param_qos());
   waiting_.reserve(8);
@@ -41,7 +45,7 @@ ParamServer::ParamServer(scenario::Scenario& sc, std::vector<bool> hosted, rt::P
 
 void ParamServer::serve(int64_t k) {
   while (requests_.take(scratch_))
-    if (text_of(scratch_.service()) == service_) handle(scratch_, k);
+    if (text_of(scratch_.service()) == addressed_as_) handle(scratch_, k);
   if (waiting_.empty()) return;
   for (auto it = waiting_.begin(); it != waiting_.end();) {
     if (it->at_step() > k) {

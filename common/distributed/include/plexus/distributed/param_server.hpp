@@ -63,6 +63,7 @@ class ParamServer {
   scenario::Scenario& sc_;
   std::vector<bool> hosted_;
   std::string service_;
+  std::string addressed_as_;  ///< service_ as a request can name it (its first 63 characters)
   rt::Subscriber<msg::ParamRequest> requests_;
   rt::Publisher<msg::ParamReply> replies_;
   msg::ParamRequest scratch_;
