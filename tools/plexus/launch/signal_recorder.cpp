@@ -10,6 +10,20 @@
 #include "topic_discovery.hpp"
 
 namespace plexus::cli {
+namespace {
+
+/// A topic's QoS as the recording stores it (the writers' offer, read back by replay).
+std::string recorded_qos(const rt::QosProfile& qos) {
+  rt::EndpointQos q;
+  q.reliability = qos.reliability;
+  q.durability = qos.durability;
+  q.history_known = true;
+  q.history = qos.history;
+  q.depth = qos.depth;
+  return qos_to_json(q).dump();
+}
+
+}  // namespace
 
 SignalRecorder::SignalRecorder(const std::string& path, const rt::QosProfile& qos) : path_(path) {
   RecordingOptions o;
@@ -17,13 +31,7 @@ SignalRecorder::SignalRecorder(const std::string& path, const rt::QosProfile& qo
   o.library = std::string("plexus ") + PLEXUS_VERSION;
   o.metadata = {{"recorder", "plexus launch --record"}, {"version", PLEXUS_VERSION}};
   file_ = make_recording_writer(path, o);
-  rt::EndpointQos q;
-  q.reliability = qos.reliability;
-  q.durability = qos.durability;
-  q.history_known = true;
-  q.history = qos.history;
-  q.depth = qos.depth;
-  qos_json_ = qos_to_json(q).dump();
+  qos_json_ = recorded_qos(qos);
 }
 
 SignalRecorder::~SignalRecorder() {
@@ -74,23 +82,18 @@ distributed::LockstepClock::SampleTap SignalRecorder::tap(const std::vector<scen
   };
 }
 
-void SignalRecorder::record_param_replies(rt::Participant& participant) {
+rt::Subscriber<msg::ParamReply> SignalRecorder::record_param_replies(rt::Participant& participant) {
   const auto& ts = msg::type_support<msg::ParamReply>();
-  rt::EndpointQos q;
   const rt::QosProfile param = distributed::param_qos();
-  q.reliability = param.reliability;
-  q.durability = param.durability;
-  q.history_known = true;
-  q.history = param.history;
-  q.depth = param.depth;
-  const int64_t topic = file_->add_topic(distributed::kParamReplyTopic, ts, qos_to_json(q).dump());
+  const int64_t topic = file_->add_topic(distributed::kParamReplyTopic, ts, recorded_qos(param));
   param_cdr_.resize(ts.max_cdr_size);
-  param_replies_ = participant.subscriber<msg::ParamReply>(distributed::kParamReplyTopic, param);
-  param_replies_.on_sample([this, topic, &ts](msg::ParamReply& r, const rt::SampleMeta& meta) {
+  auto replies = participant.subscriber<msg::ParamReply>(distributed::kParamReplyTopic, param);
+  replies.on_sample([this, topic, &ts](msg::ParamReply& r, const rt::SampleMeta& meta) {
     if (failed_.load(std::memory_order_relaxed)) return;
     const std::size_t n = ts.serialize(&r, param_cdr_.data(), param_cdr_.size());
     if (n > 0) queue_.push(topic, meta.receive_time_ns, &r.header(), param_cdr_.data(), n);
   });
+  return replies;
 }
 
 std::size_t SignalRecorder::write() {

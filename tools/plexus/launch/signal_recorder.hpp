@@ -35,8 +35,9 @@ class SignalRecorder {
   distributed::LockstepClock::SampleTap tap(const std::vector<scenario::SignalSpec>& signals);
   /// Records the services' replies on param/reply as well (plexus param: a change made while
   /// the run goes on, with the step it took effect at), so `plexus param changes` can turn them
-  /// into the scenario's parameter_changes that replay them. Before tap().
-  void record_param_replies(rt::Participant& participant);
+  /// into the scenario's parameter_changes that replay them. Before tap(). The reader records
+  /// while the caller keeps it, and must go before `participant` (as the clock does).
+  [[nodiscard]] rt::Subscriber<msg::ParamReply> record_param_replies(rt::Participant& participant);
   /// Writes everything taken and completes the file (recording.hpp). Returns the number of
   /// samples; rethrows a write error of the writing thread.
   std::size_t write();
@@ -54,8 +55,7 @@ class SignalRecorder {
   std::atomic<bool> failed_{false};
   std::exception_ptr error_;
   std::thread thread_;
-  std::vector<unsigned char> param_cdr_;           // one reply's CDR, on the DDS receive thread
-  rt::Subscriber<msg::ParamReply> param_replies_;  // last: deleted first, before what its callback uses
+  std::vector<unsigned char> param_cdr_;  // one reply's CDR, on the DDS receive thread
 };
 
 }  // namespace plexus::cli

@@ -87,7 +87,8 @@ std::optional<int> run_realtime_launch(const LaunchOptions& o, LaunchPlan& plan,
 std::optional<int> run_lockstep_launch(const LaunchOptions& o, LaunchPlan& plan, LaunchRun& run, LockstepOutcome& out) {
   const auto ended = run_to_end(run, [&] {
     distributed::LockstepClock clock(plan.sc, *run.participant, plan.lockstep_qos, {.timeout_s = o.timeout});
-    if (run.recorder) run.recorder->record_param_replies(*run.participant);  // plexus param set during the run
+    rt::Subscriber<msg::ParamReply> param_replies;  // plexus param set during the run; deleted with the clock
+    if (run.recorder) param_replies = run.recorder->record_param_replies(*run.participant);
     clock.wait_ready(static_cast<int>(plan.everywhere.size()), 30.0, g_launch_stop);
     const int64_t start = monotonic_ns();
     run.startup_s = static_cast<double>(start - plan.command_ns) * 1e-9;
