@@ -11,30 +11,16 @@
 # The namespaces and the veth pair are removed on exit. Needs root (CI runs as root).
 set -u
 bin=$1 deploy=$2 domain=$3 out=$4
-if [ "$(id -u)" -ne 0 ]; then echo "needs root for network namespaces"; exit 77; fi
 rm -rf "$out" && mkdir -p "$out"
-tag=$$
-ns1=plx1_$tag ns2=plx2_$tag v1=plxa$tag v2=plxb$tag
+. "$(dirname "$0")/netns_pair.sh"
 pids=()
 cleanup() {
   kill "${pids[@]}" 2> /dev/null
   wait 2> /dev/null
-  ip netns del "$ns1" 2> /dev/null
-  ip netns del "$ns2" 2> /dev/null
+  netns_pair_down
 }
 trap cleanup EXIT
-set -e
-ip netns add "$ns1"
-ip netns add "$ns2"
-ip link add "$v1" type veth peer name "$v2"
-ip link set "$v1" netns "$ns1"
-ip link set "$v2" netns "$ns2"
-ip -n "$ns1" addr add 10.231.0.1/24 dev "$v1"
-ip -n "$ns2" addr add 10.231.0.2/24 dev "$v2"
-for ns in "$ns1" "$ns2"; do ip -n "$ns" link set lo up; done
-ip -n "$ns1" link set "$v1" up
-ip -n "$ns2" link set "$v2" up
-set +e
+netns_pair_up
 peers=10.231.0.1,10.231.0.2
 on() {  # on h1|h2 PROGRAM ARGS...: run on that host (its namespace, its host name, its address)
   local host=$1 ns address

@@ -10,27 +10,13 @@
 set -u
 plexus=$1 scenario=$2 out=$3 domain=$4
 shift 4
-if [ "$(id -u)" -ne 0 ]; then echo "needs root for network namespaces"; exit 77; fi
-tag=$$
-ns1=plx1_$tag ns2=plx2_$tag v1=plxa$tag v2=plxb$tag
+. "$(dirname "$0")/netns_pair.sh"
 cleanup() {
   [ -n "${h2_pid:-}" ] && kill "$h2_pid" 2>/dev/null
-  ip netns del "$ns1" 2>/dev/null
-  ip netns del "$ns2" 2>/dev/null
+  netns_pair_down
 }
 trap cleanup EXIT
-set -e
-ip netns add "$ns1"
-ip netns add "$ns2"
-ip link add "$v1" type veth peer name "$v2"
-ip link set "$v1" netns "$ns1"
-ip link set "$v2" netns "$ns2"
-ip -n "$ns1" addr add 10.231.0.1/24 dev "$v1"
-ip -n "$ns2" addr add 10.231.0.2/24 dev "$v2"
-for ns in "$ns1" "$ns2"; do ip -n "$ns" link set lo up; done
-ip -n "$ns1" link set "$v1" up
-ip -n "$ns2" link set "$v2" up
-set +e
+netns_pair_up
 read -r -a both <<< "${BOTH:-}"
 if [ "${REALTIME:-0}" = 1 ]; then
   set -- "$@" --set clock.mode=realtime
