@@ -9,6 +9,7 @@
 #include <cstring>
 #include <map>
 #include <random>
+#include <set>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
@@ -170,14 +171,14 @@ int run_changes(const ParamOpts& o) {
                  o.recording.c_str(), distributed::kParamReplyTopic);
     return 0;
   }
-  std::map<uint64_t, bool> seen;  // request ids: a repeated reply is one change
+  std::set<uint64_t> seen;  // request ids: a repeated reply is one change
   msg::ParamReply r;
   rec->for_each([&](const RecordedMessage& m) {
     if (m.topic_id != topic) return true;
     if (!ts.deserialize(m.cdr.data(), m.cdr.size(), &r))
       throw InputError(o.recording + ": a malformed " + ts.type_name + " sample on " + distributed::kParamReplyTopic);
-    if (r.operation() != msg::PARAM_SET || r.status() != msg::PARAM_OK || seen[r.request_id()]) return true;
-    seen[r.request_id()] = true;
+    if (r.operation() != msg::PARAM_SET || r.status() != msg::PARAM_OK || !seen.insert(r.request_id()).second)
+      return true;
     std::printf("  - {step: %lld, key: %s, value: %s}  # %s\n", static_cast<long long>(r.applied_step()),
                 text_of(r.key()).c_str(), scenario::format_number(r.value()).c_str(), text_of(r.service()).c_str());
     return true;

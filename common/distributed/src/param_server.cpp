@@ -32,15 +32,18 @@ rt::QosProfile param_qos() {
 ParamServer::ParamServer(scenario::Scenario& sc, std::vector<bool> hosted, rt::Participant& participant,
                          std::string service)
     : sc_(sc), hosted_(std::move(hosted)), service_(std::move(service)), step_ns_(std::llround(sc.step * 1e9)) {
-  next_step_ = [this](std::size_t c, int64_t k) {
-    const int64_t period = sc_.components[c].period_steps;
-    return (k + period - 1) / period * period;
-  };
   // A request names its target in 63 characters at most: a longer name is addressed by its start.
   addressed_as_ = service_.substr(0, std::tuple_size_v<std::remove_reference_t<decltype(scratch_.service())>> - 1);
   requests_ = participant.subscriber<msg::ParamRequest>(kParamRequestTopic, param_qos());
   replies_ = participant.publisher<msg::ParamReply>(kParamReplyTopic, param_qos());
   waiting_.reserve(8);
+}
+
+int64_t ParamServer::next_step(std::size_t c, int64_t k) const {
+  if (pending_step_)
+    if (const auto pending = pending_step_(c)) return *pending;
+  const int64_t period = sc_.components[c].period_steps;
+  return (k + period - 1) / period * period;
 }
 
 void ParamServer::serve(int64_t k) {
@@ -147,7 +150,7 @@ void ParamServer::apply(const msg::ParamRequest& req, int64_t k) {
   msg::set_text(r.description(), ref->parameter->description);
   const double previous = ref->parameter->get();
   r.previous_value(previous);
-  r.applied_step(next_step_(ref->component, k));
+  r.applied_step(next_step(ref->component, k));
   r.header().data_time_ns(epoch_ns_ + r.applied_step() * step_ns_);
   why = scenario::try_set(*ref->parameter, req.value());
   r.status(why.empty() ? msg::PARAM_OK : msg::PARAM_REFUSED);

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstring>
 #include <numeric>
+#include <optional>
 #include <thread>
 
 #include "input_guard.hpp"
@@ -401,10 +402,9 @@ RealtimeReport RealtimeHost::run(const std::atomic<bool>& stop) {
   for (auto& w : m.out)
     if (w) w->wire().set_epoch(t0);
   m.params->set_epoch(t0);  // a reply's data time is its step's, on the run's grid
-  m.params->set_next_step([&m](std::size_t c, int64_t k) {
+  m.params->set_pending_step([&m](std::size_t c) -> std::optional<int64_t> {
     if (m.deferred[c]) return m.next_step[c];  // a waiting estimator runs its older steps first
-    const int64_t period = m.sc.components[c].period_steps;
-    return (k + period - 1) / period * period;
+    return std::nullopt;
   });
   for (auto& r : m.remote)
     if (r) r->sub.wire().set_epoch(t0);

@@ -20,6 +20,7 @@
 #include <cstdint>
 #include <deque>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -42,16 +43,17 @@ class ParamServer {
   /// (the participant's name, as `plexus service list` shows it).
   ParamServer(scenario::Scenario& sc, std::vector<bool> hosted, rt::Participant& participant, std::string service);
 
-  /// The step component c runs next when the host is about to run step k: by default the
-  /// first multiple of its period >= k; a realtime host's waiting estimator may be behind.
-  using NextStep = std::function<int64_t(std::size_t component, int64_t k)>;
-  void set_next_step(NextStep next_step) { next_step_ = std::move(next_step); }
+  /// The oldest step component c has still to run when it is behind the host's steps (a
+  /// realtime estimator waiting for late samples); nullopt when it is not, and the step it runs
+  /// next is the first multiple of its period >= the host's step.
+  using PendingStep = std::function<std::optional<int64_t>(std::size_t component)>;
+  void set_pending_step(PendingStep pending_step) { pending_step_ = std::move(pending_step); }
   /// Data time of step 0 (a realtime run's start on the wall clock; lockstep: 0, sim time):
   /// a reply's header carries the data time of its step, as the outputs' headers do.
   void set_epoch(int64_t epoch_ns) { epoch_ns_ = epoch_ns; }
 
   /// Between two steps, before step k runs: answers what has arrived, applies the changes
-  /// due at k. A change is acknowledged with the step its component runs next (NextStep):
+  /// due at k. A change is acknowledged with the step its component runs next (PendingStep):
   /// every step before it used the old value, every step from it on uses the new one.
   void serve(int64_t k);
 
@@ -69,7 +71,10 @@ class ParamServer {
   msg::ParamRequest scratch_;
   std::vector<msg::ParamRequest> waiting_;  ///< sets for a later step (at_step > k)
   std::deque<msg::ParamReply> answered_;    ///< the last sets' replies, for a repeated request
-  NextStep next_step_;
+  /// The step component c runs next when the host is about to run step k.
+  int64_t next_step(std::size_t c, int64_t k) const;
+
+  PendingStep pending_step_;
   int64_t epoch_ns_ = 0;
   int64_t step_ns_ = 0;
 };
