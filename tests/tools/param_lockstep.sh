@@ -15,7 +15,11 @@
 set -u
 bin=$1 deploy=$2 domain=$3 out=$4 vendor=$5 cli=$6
 rm -rf "$out" && mkdir -p "$out"
-scenario=$deploy/scenarios/wmr_output_feedback_rfid.yaml
+# The paper's case without its expectations: how well the robot tracks after a change depends on
+# the step the change lands on (the machine's speed), and the changes (k1 = 0.05 breaks gain
+# condition (15)) may well miss the published bound; what is checked here is how they apply.
+scenario=$out/wmr_output_feedback_rfid.yaml
+sed '/^expectations:/,$d' "$deploy/scenarios/wmr_output_feedback_rfid.yaml" > "$scenario"
 observer="localisation_observer observer" controller="motion_controller controller"
 fail=0
 bad() { echo "FAIL: $*"; fail=1; }
