@@ -36,7 +36,7 @@ foreach(source simulator serial udp replay)
     # differ. Cause not established (docs/testing.md, Known flakiness). Since then each runs
     # in a network namespace of its own (tests/scripts/own_netns.sh), where no other test's
     # traffic can reach it.
-    set_tests_properties(bridges.contract_${source}_${vendor} PROPERTIES LABELS "bridges;realtime" TIMEOUT 120
+    set_tests_properties(bridges.contract_${source}_${vendor} PROPERTIES LABELS "bridges;realtime;light" TIMEOUT 120
                          RESOURCE_LOCK bridges_contract)
     # Except over a pty: there a stall of the bridge's reads fills the pty's buffer (about
     # half a second of frames), the emulator's write blocks and its loop drops the ticks it
@@ -67,7 +67,7 @@ foreach(variant "simulator;cyclone;138" "serial;fast;139")
   # Its rates are judged over the whole window as the contract tests above, it runs in a
   # network namespace of its own as they do, and it takes their lock (issue 15: every
   # realtime test under a lock or RUN_SERIAL).
-  set_tests_properties(bridges.balancing_contract_${source}_${vendor} PROPERTIES LABELS "bridges;realtime" TIMEOUT 60
+  set_tests_properties(bridges.balancing_contract_${source}_${vendor} PROPERTIES LABELS "bridges;realtime;light" TIMEOUT 60
                        RESOURCE_LOCK bridges_contract)
   if(source STREQUAL "serial")  # a pty: as bridges.contract_serial_*
     set_tests_properties(bridges.balancing_contract_${source}_${vendor} PROPERTIES RUN_SERIAL TRUE)

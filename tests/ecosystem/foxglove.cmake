@@ -7,7 +7,7 @@ foreach(variant "fast;171;18765;alone" "cyclone;175;18766;launch")
   add_test(NAME ecosystem.foxglove_rfid_${vendor}
            COMMAND ${CMAKE_CURRENT_LIST_DIR}/foxglove_rfid.sh $<TARGET_FILE:plexus> $<TARGET_FILE:foxglove_bridge> ${vendor}
                    ${domain} ${port} ${CMAKE_BINARY_DIR}/test-runs/ecosystem/foxglove_rfid_${vendor} ${mode})
-  set_tests_properties(ecosystem.foxglove_rfid_${vendor} PROPERTIES LABELS "ecosystem;realtime;multiprocess" TIMEOUT 120)
+  set_tests_properties(ecosystem.foxglove_rfid_${vendor} PROPERTIES LABELS "ecosystem;realtime;multiprocess;light" TIMEOUT 120)
 endforeach()
 add_test(NAME ecosystem.foxglove_port_in_use
          COMMAND ${CMAKE_CURRENT_LIST_DIR}/foxglove_port_busy.sh $<TARGET_FILE:foxglove_bridge> $<TARGET_FILE:plexus>

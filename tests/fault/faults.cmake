@@ -37,7 +37,7 @@ foreach(variant "fast;120;fast;mixed" "cyclone;121;cyclone")
   list(POP_FRONT variant vendor domain)
   add_test(NAME fault.loss_lockstep_${vendor}
            COMMAND bash ${FAULT_DIR}/loss_lockstep.sh $<TARGET_FILE:plexus> ${FAULT_RFID} ${FAULT_RUNS}/loss_lockstep_${vendor} ${domain} ${variant})
-  set_tests_properties(fault.loss_lockstep_${vendor} PROPERTIES LABELS "fault;netns;slow" TIMEOUT 300 RUN_SERIAL TRUE SKIP_RETURN_CODE 77)
+  set_tests_properties(fault.loss_lockstep_${vendor} PROPERTIES LABELS "fault;netns;slow;light" TIMEOUT 300 RUN_SERIAL TRUE SKIP_RETURN_CODE 77)
 endforeach()
 # Realtime at 0, 10 and 30 % loss, the three runs side by side (each in namespaces of its
 # own, so that they meet the same CPU stalls): at 10 % the loop still tracks (steady mean

@@ -9,5 +9,6 @@ add_test(NAME first_hour.run_folders
 add_test(NAME first_hour.waits_are_bounded
          COMMAND ${CMAKE_CURRENT_LIST_DIR}/waits.sh $<TARGET_FILE_DIR:plexus> ${CMAKE_BINARY_DIR}/test-runs/first_hour/waits 72)
 set_tests_properties(first_hour.run_folders first_hour.waits_are_bounded PROPERTIES LABELS "cli;multiprocess" TIMEOUT 180)
+set_tests_properties(first_hour.waits_are_bounded PROPERTIES LABELS "cli;multiprocess;light")
 set_tests_properties(first_hour.run_folders PROPERTIES RESOURCE_LOCK plexus_dds_domain_73)
 set_tests_properties(first_hour.waits_are_bounded PROPERTIES RESOURCE_LOCK plexus_dds_domain_72)

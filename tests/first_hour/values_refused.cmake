@@ -27,7 +27,7 @@ set_tests_properties(first_hour.service_step_zero first_hour.service_step_negati
 add_test(NAME first_hour.udp_bind_busy
          COMMAND ${CMAKE_CURRENT_LIST_DIR}/udp_bind_busy.sh $<TARGET_FILE:udp_bridge>
                  ${PROJECT_SOURCE_DIR}/deploy/params/unicycle_robot.yaml 47991)
-set_tests_properties(first_hour.udp_bind_busy PROPERTIES LABELS "cli;first_hour" TIMEOUT 60)
+set_tests_properties(first_hour.udp_bind_busy PROPERTIES LABELS "cli;first_hour;light" TIMEOUT 60)
 add_test(NAME first_hour.stop_summary_at_default_level
          COMMAND ${CMAKE_CURRENT_LIST_DIR}/stop_summary.sh $<TARGET_FILE:plant_simulator>
                  ${PROJECT_SOURCE_DIR}/deploy/params/unicycle_robot.yaml 150)

@@ -45,7 +45,7 @@ set_tests_properties(security.mixed_refused PROPERTIES LABELS "security;cli" TIM
 # What secure Fast DDS <-> Cyclone DDS does, both data directions, both handshake orders.
 add_test(NAME security.mixed_handshake
          COMMAND ${SEC_DIR}/mixed_handshake.sh $<TARGET_FILE:security_probe> ${SEC_RUNS}/mixed 104)
-set_tests_properties(security.mixed_handshake PROPERTIES LABELS "security;interop" TIMEOUT 200
+set_tests_properties(security.mixed_handshake PROPERTIES LABELS "security;interop;light" TIMEOUT 200
                      FIXTURES_REQUIRED security_pki RESOURCE_LOCK plexus_dds_domain_104)
 
 # No identity, or one of another CA: no topic discovered, no sample injected; a secure
@@ -59,7 +59,7 @@ foreach(v "fast;105" "cyclone;106")
            COMMAND ${PROJECT_SOURCE_DIR}/tests/scripts/own_netns.sh
                    ${SEC_DIR}/intruders.sh $<TARGET_FILE_DIR:plexus> ${PROJECT_SOURCE_DIR}/deploy/params/unicycle_robot.yaml
                    ${SEC_RUNS}/pki ${SEC_RUNS}/foreign ${vendor} ${domain})
-  set_tests_properties(security.intruders_${vendor} PROPERTIES LABELS "security;multiprocess;slow" TIMEOUT 200
+  set_tests_properties(security.intruders_${vendor} PROPERTIES LABELS "security;multiprocess;slow;light" TIMEOUT 200
                        FIXTURES_REQUIRED security_pki RESOURCE_LOCK plexus_dds_domain_${domain})
 endforeach()
 

@@ -183,7 +183,7 @@ include(${CMAKE_CURRENT_LIST_DIR}/recordings.cmake)
 add_test(NAME tools.service_list
          COMMAND ${CMAKE_CURRENT_LIST_DIR}/service_list.sh ${CMAKE_BINARY_DIR}/bin ${PROJECT_SOURCE_DIR}/deploy 184
                  ${CMAKE_BINARY_DIR}/test-runs/tools/service_list)
-set_tests_properties(tools.service_list PROPERTIES LABELS "cli;multiprocess" TIMEOUT 60)
+set_tests_properties(tools.service_list PROPERTIES LABELS "cli;multiprocess;light" TIMEOUT 60)
 # plexus param (issue 31, docs/parameters.md): the observer's L and the controller's k1 changed
 # while they run, refused values, the gain field and the command at the acknowledged step.
 # In lockstep under plexus launch (the services on one vendor, the tool on the other; the
