@@ -13,6 +13,7 @@
 #include <thread>
 
 #include "input_guard.hpp"
+#include "plexus/base/bounded_name.hpp"
 #include "plexus/base/clock.hpp"
 #include "plexus/base/input_error.hpp"
 #include "plexus/distributed/lockstep.hpp"
@@ -113,7 +114,9 @@ std::string health_topic(const std::string& service) {
   std::string name = service;
   for (char& c : name)
     if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '/') c = '_';
-  return "health/" + name;
+  // Within the discovery limit (rt::Participant::kMaxDiscoveryName): a process hosting many
+  // components has a long name; every process derives the same shortened one.
+  return "health/" + bounded_name(name, rt::Participant::kMaxDiscoveryName - 7);
 }
 
 namespace {

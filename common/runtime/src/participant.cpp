@@ -2,6 +2,7 @@
 
 #include "cyclone/cyclone_participant.hpp"
 #include "fastdds/fast_participant.hpp"
+#include "plexus/base/bounded_name.hpp"
 #include "plexus/base/input_error.hpp"
 
 namespace plexus::rt {
@@ -16,8 +17,20 @@ std::unique_ptr<Participant> Participant::create(const ParticipantOptions& optio
   if (!(options.network.reliable_heartbeat_s >= 0.001 && options.network.reliable_heartbeat_s <= 10.0))
     throw InputError("network: reliable_heartbeat_s must be in [0.001, 10] s, got " +
                      std::to_string(options.network.reliable_heartbeat_s));
-  if (options.vendor == Vendor::fast) return std::make_unique<FastParticipant>(options);
-  return std::make_unique<CycloneParticipant>(options);
+  ParticipantOptions o = options;
+  o.name = bounded_name(options.name, kMaxDiscoveryName);  // e.g. a process hosting 20 robots' components
+  if (o.vendor == Vendor::fast) return std::make_unique<FastParticipant>(o);
+  return std::make_unique<CycloneParticipant>(o);
+}
+
+DdsNames Participant::wire_names(const msg::TypeSupport& type, const std::string& topic) const {
+  DdsNames names = dds_names(options_.naming, type, topic);
+  for (const std::string* n : {&names.topic, &names.type})
+    if (n->size() > kMaxDiscoveryName)
+      throw InputError((n == &names.topic ? "topic name '" : "type name '") + *n + "' is " + std::to_string(n->size()) +
+                       " bytes; DDS discovery between the vendors carries at most " +
+                       std::to_string(kMaxDiscoveryName) + " (Fast DDS 2.9 drops longer ones)");
+  return names;
 }
 
 std::vector<DiscoveredEndpoint> Participant::discovered_endpoints() const {

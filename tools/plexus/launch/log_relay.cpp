@@ -1,5 +1,6 @@
 #include "log_relay.hpp"
 
+#include "plexus/base/bounded_name.hpp"
 #include "plexus/base/input_error.hpp"
 
 #include <fcntl.h>
@@ -8,8 +9,10 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
+#include <cstring>
 #include <mutex>
 #include <stdexcept>
 #include <thread>
@@ -18,11 +21,12 @@
 namespace plexus::cli {
 
 namespace {
-/// "localisation_observer observer" -> "localisation_observer_observer.log"
+/// "localisation_observer observer" -> "localisation_observer_observer.log"; a process named
+/// after many components is cut to Linux's 255-byte file names (bounded_name).
 std::string file_name(std::string name) {
   for (char& c : name)
     if (c == ' ' || c == '/' || c == ',') c = '_';
-  return name + ".log";
+  return bounded_name(name, 255 - 4) + ".log";
 }
 }  // namespace
 
@@ -123,7 +127,14 @@ int LogRelay::open(const std::string& name) {
   Impl::Source s;
   s.name = name;
   s.fd = p[0];
-  s.file = std::fopen((impl_->dir / file_name(name)).c_str(), "a");
+  const std::filesystem::path path = impl_->dir / file_name(name);
+  s.file = std::fopen(path.c_str(), "a");
+  if (!s.file) {
+    const int err = errno;
+    ::close(p[0]);
+    ::close(p[1]);
+    throw std::runtime_error("cannot open " + path.string() + " for " + name + "'s output: " + std::strerror(err));
+  }
   std::lock_guard lk(impl_->mu);
   impl_->width = std::max(impl_->width, name.size());
   impl_->sources.push_back(std::move(s));

@@ -95,12 +95,18 @@ class Participant {
   /// on the wire under the participant's naming (naming.hpp).
   std::unique_ptr<WriterBackend> make_writer(const msg::TypeSupport& type, const std::string& topic,
                                              const QosProfile& qos) {
-    return create_writer(type, dds_names(options_.naming, type, topic), qos);
+    return create_writer(type, wire_names(type, topic), qos);
   }
   std::unique_ptr<ReaderBackend> make_reader(const msg::TypeSupport& type, const std::string& topic,
                                              const QosProfile& qos) {
-    return create_reader(type, dds_names(options_.naming, type, topic), qos);
+    return create_reader(type, wire_names(type, topic), qos);
   }
+
+  /// The longest participant, topic or type name discovery carries between the vendors:
+  /// Fast DDS 2.9 drops a discovery announcement with a longer one (docs/runtime.md, Known
+  /// limits). A participant's name is cut to it (bounded_name); a topic or type name over it
+  /// is refused.
+  static constexpr std::size_t kMaxDiscoveryName = 251;
 
   /// Every endpoint discovered so far on this domain, local and remote, with its type name
   /// and QoS (see discovery.hpp), its topic and type named as plexus names them (naming.hpp).
@@ -109,6 +115,8 @@ class Participant {
 
  protected:
   explicit Participant(ParticipantOptions options) : options_(std::move(options)) {}
+  /// dds_names(), refused (InputError) when a name is longer than kMaxDiscoveryName.
+  DdsNames wire_names(const msg::TypeSupport& type, const std::string& topic) const;
   /// The vendor's endpoints, under the names they have on the wire.
   virtual std::unique_ptr<WriterBackend> create_writer(const msg::TypeSupport& type, const DdsNames& names,
                                                        const QosProfile& qos) = 0;
