@@ -19,8 +19,24 @@ netns_pair_up() {
   ip -n "$ns2" link set "$v2" up
   set +e
 }
+# Kills what still runs in the namespaces first (SIGTERM, then SIGKILL after 3 s): a process
+# started with `ip netns exec` from a backgrounded shell function is that function's child, not
+# the $! the caller kills, and deleting a namespace does not end its processes (a test leaked
+# its four services this way, left running into later tests).
 netns_pair_down() {
+  local ns pids i
+  for ns in "$ns1" "$ns2"; do
+    pids=$(ip netns pids "$ns" 2> /dev/null)
+    [ -n "$pids" ] && kill $pids 2> /dev/null
+  done
+  for i in $(seq 30); do
+    pids="$(ip netns pids "$ns1" 2> /dev/null) $(ip netns pids "$ns2" 2> /dev/null)"
+    [ -z "${pids// /}" ] && break
+    sleep 0.1
+  done
+  [ -n "${pids// /}" ] && kill -9 $pids 2> /dev/null
   ip netns del "$ns1" 2> /dev/null
   ip netns del "$ns2" 2> /dev/null
+  return 0
 }
 ns1=plx1_$$ ns2=plx2_$$

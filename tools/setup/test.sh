@@ -5,10 +5,10 @@
 #
 # Three phases, so that nothing runs beside a test that needs the machine to itself:
 #  1. the exclusive tests: RUN_SERIAL and labelled realtime (wall-clock loops whose figures
-#     are checked), and those labelled light (they mostly wait on the wall clock), with
-#     nothing CPU-bound on the machine: four at a time (each takes 1-25 % of the machine),
-#     apart from those labelled `alone`, which run by themselves (PLEXUS_REALTIME_LANES;
-#     cmake/PlexusTesting.cmake, plexus_realtime_lanes);
+#     are checked), with nothing CPU-bound on the machine: one on the host's network at a
+#     time beside one in network namespaces of its own (each takes 1-25 % of the machine),
+#     those labelled `alone` by themselves (PLEXUS_REALTIME_LANES; cmake/PlexusTesting.cmake,
+#     plexus_realtime_lanes);
 #  2. every other test (ctest -j2; the other RUN_SERIAL tests, netns and multi-host ones, one
 #     at a time among them), with the fuzz build beside under SCHED_IDLE (chrt --idle: only
 #     the CPU time the tests leave idle; one compile at a time);
@@ -31,9 +31,8 @@ ctest --test-dir build --show-only=json-v1 > build/tests.json
 phase_tests() {  # phase_tests exclusive|shared: comma-separated ctest test numbers
   jq -r --arg want "$1" '[.tests | to_entries[]
       | (.value.properties // []) as $p
-      | ((any($p[]; .name == "RUN_SERIAL" and .value == true)
-          and any($p[]; .name == "LABELS" and (.value | index("realtime"))))
-         or any($p[]; .name == "LABELS" and (.value | index("light")))) as $exclusive
+      | (any($p[]; .name == "RUN_SERIAL" and .value == true)
+         and any($p[]; .name == "LABELS" and (.value | index("realtime")))) as $exclusive
       | select(($want == "exclusive") == $exclusive) | .key + 1] | join(",")' build/tests.json
 }
 exclusive=$(phase_tests exclusive)
@@ -50,7 +49,7 @@ keep_failures() {  # keep_failures PHASE: copy ctest's list of the phase's faile
 suite_rc=0
 start=$(date +%s)
 rm -f "$failed_log"
-lanes=4
+lanes=2
 [ -z "$exclusive" ] || PLEXUS_REALTIME_LANES=$lanes ctest --test-dir build --output-on-failure -j$lanes --timeout 600 \
   -I "0,0,0,$exclusive" || suite_rc=$?
 keep_failures exclusive

@@ -114,9 +114,11 @@ std::string health_topic(const std::string& service) {
   std::string name = service;
   for (char& c : name)
     if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '/') c = '_';
-  // Within the discovery limit (rt::Participant::kMaxDiscoveryName): a process hosting many
-  // components has a long name; every process derives the same shortened one.
-  return "health/" + bounded_name(name, rt::Participant::kMaxDiscoveryName - 7);
+  // Within the discovery limit (rt::Participant::kMaxDiscoveryName) under either naming (ROS 2
+  // names put "rt/" in front): a process hosting many components has a long name; every
+  // process derives the same shortened one.
+  const std::size_t room = rt::Participant::kMaxDiscoveryName - std::string("rt/health/").size();
+  return "health/" + bounded_name(name, room);
 }
 
 namespace {

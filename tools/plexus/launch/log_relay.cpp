@@ -129,13 +129,21 @@ int LogRelay::open(const std::string& name) {
   s.fd = p[0];
   const std::filesystem::path path = impl_->dir / file_name(name);
   s.file = std::fopen(path.c_str(), "a");
-  if (!s.file) {
-    const int err = errno;
-    ::close(p[0]);
-    ::close(p[1]);
-    throw std::runtime_error("cannot open " + path.string() + " for " + name + "'s output: " + std::strerror(err));
-  }
+  const int open_error = errno;
   std::lock_guard lk(impl_->mu);
+  if (!s.file) {
+    // At a process's first start: an error (its log would be lost). At a restart (the file
+    // opened before; the disk may have filled since): the output still reaches the console.
+    const std::string why = "cannot open " + path.string() + " for " + name + "'s output: " + std::strerror(open_error);
+    const bool restart = std::any_of(impl_->sources.begin(), impl_->sources.end(),
+                                     [&](const Impl::Source& o) { return o.name == name; });
+    if (!restart) {
+      ::close(p[0]);
+      ::close(p[1]);
+      throw std::runtime_error(why);
+    }
+    impl_->console->line(name + " | " + why);
+  }
   impl_->width = std::max(impl_->width, name.size());
   impl_->sources.push_back(std::move(s));
   return p[1];
