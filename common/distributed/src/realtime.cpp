@@ -10,6 +10,7 @@
 #include <cstring>
 #include <numeric>
 #include <optional>
+#include <string_view>
 #include <thread>
 
 #include "input_guard.hpp"
@@ -19,6 +20,7 @@
 #include "plexus/distributed/lockstep.hpp"
 #include "plexus/distributed/param_server.hpp"
 #include "plexus/msg/fixed_text.hpp"
+#include "plexus/runtime/naming.hpp"
 #include "plexus/scenario/format.hpp"
 #include "plexus/scenario/step_executor.hpp"
 
@@ -117,8 +119,9 @@ std::string health_topic(const std::string& service) {
   // Within the discovery limit (rt::Participant::kMaxDiscoveryName) under either naming (ROS 2
   // names put "rt/" in front): a process hosting many components has a long name; every
   // process derives the same shortened one.
-  const std::size_t room = rt::Participant::kMaxDiscoveryName - std::string("rt/health/").size();
-  return "health/" + bounded_name(name, room);
+  constexpr std::string_view prefix = "health/";
+  const std::size_t room = rt::Participant::kMaxDiscoveryName - rt::kRos2TopicPrefix.size() - prefix.size();
+  return std::string(prefix) + bounded_name(name, room);
 }
 
 namespace {

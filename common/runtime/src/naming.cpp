@@ -8,8 +8,6 @@
 namespace plexus::rt {
 namespace {
 
-constexpr std::string_view kRos2TopicPrefix = "rt/";  // ROS 2 topics (rmw: ros_topic_prefix)
-
 std::string ros2_type(const msg::TypeSupport& type) {
   const std::string_view scoped = type.type_name;
   const auto p = scoped.rfind("::");

@@ -4,21 +4,6 @@
 
 namespace plexus::scenario {
 
-uint64_t fnv1a64(const void* data, std::size_t size, uint64_t hash) {
-  const auto* p = static_cast<const unsigned char*>(data);
-  for (std::size_t i = 0; i < size; ++i) {
-    hash ^= p[i];
-    hash *= 0x100000001b3ULL;
-  }
-  return hash;
-}
-
-std::string hex16(uint64_t value) {
-  char buf[17];
-  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(value));
-  return buf;
-}
-
 uint64_t run_digest(const RunLog& log) {
   uint64_t h = kFnv1aOffset;
   for (const auto& trace : log.signals) {

@@ -5,24 +5,18 @@
 // components, say) meets a limit of the platform: DDS discovery strings (Fast DDS 2.9 drops a
 // participant announcement whose name exceeds 251 bytes; docs/runtime.md, Known limits) and
 // file names (255 bytes on Linux). Deterministic, so every process derives the same name.
-#include <cstdint>
-#include <cstdio>
 #include <string>
 #include <string_view>
+
+#include "plexus/base/fnv1a.hpp"
 
 namespace plexus {
 
 inline std::string bounded_name(std::string_view name, std::size_t max_bytes) {
   if (name.size() <= max_bytes) return std::string(name);
-  uint64_t h = 14695981039346656037ull;  // FNV-1a, 64 bits
-  for (const char c : name) {
-    h ^= static_cast<unsigned char>(c);
-    h *= 1099511628211ull;
-  }
-  char tail[18];
-  std::snprintf(tail, sizeof tail, "~%016llx", static_cast<unsigned long long>(h));
-  const std::size_t keep = max_bytes > 17 ? max_bytes - 17 : 0;
-  return std::string(name.substr(0, keep)) + std::string(tail).substr(0, max_bytes - keep);
+  const std::string tail = "~" + hex16(fnv1a64(name.data(), name.size()));
+  const std::size_t keep = max_bytes > tail.size() ? max_bytes - tail.size() : 0;
+  return std::string(name.substr(0, keep)) + tail.substr(0, max_bytes - keep);
 }
 
 }  // namespace plexus

@@ -27,6 +27,9 @@ enum class Naming { plexus, ros2 };
 Naming parse_naming(std::string_view name, std::string_view origin = "--naming");
 const char* to_string(Naming n);
 
+/// What ROS 2 names put in front of a topic on the wire (rmw: ros_topic_prefix).
+inline constexpr std::string_view kRos2TopicPrefix = "rt/";
+
 /// A topic's and its type's names on the wire.
 struct DdsNames {
   std::string topic;

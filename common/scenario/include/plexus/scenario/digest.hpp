@@ -10,17 +10,14 @@
 #include <cstdint>
 #include <string>
 
+#include "plexus/base/fnv1a.hpp"
 #include "plexus/scenario/signal_log.hpp"
 
 namespace plexus::scenario {
 
-inline constexpr uint64_t kFnv1aOffset = 0xcbf29ce484222325ULL;
-
-/// FNV-1a 64 of `size` bytes, continuing from `hash`.
-uint64_t fnv1a64(const void* data, std::size_t size, uint64_t hash = kFnv1aOffset);
-
-/// 16 lower-case hex digits.
-std::string hex16(uint64_t value);
+using plexus::fnv1a64;  // plexus/base/fnv1a.hpp
+using plexus::hex16;
+using plexus::kFnv1aOffset;
 
 /// The digest of a run (see above).
 uint64_t run_digest(const RunLog& log);
