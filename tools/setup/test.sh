@@ -5,10 +5,10 @@
 #
 # Three phases, so that nothing runs beside a test that needs the machine to itself:
 #  1. the exclusive tests: RUN_SERIAL and labelled realtime (wall-clock loops whose figures
-#     are checked), with nothing CPU-bound on the machine: one on the host's network at a
-#     time beside one in network namespaces of its own (each takes 1-25 % of the machine),
-#     those labelled `alone` by themselves (PLEXUS_REALTIME_LANES; cmake/PlexusTesting.cmake,
-#     plexus_realtime_lanes);
+#     are checked), and those labelled light (they mostly wait on the wall clock), with
+#     nothing CPU-bound on the machine: four at a time (each takes 1-25 % of the machine),
+#     apart from those labelled `alone`, which run by themselves (PLEXUS_REALTIME_LANES;
+#     cmake/PlexusTesting.cmake, plexus_realtime_lanes);
 #  2. every other test (ctest -j2; the other RUN_SERIAL tests, netns and multi-host ones, one
 #     at a time among them), with the fuzz build beside under SCHED_IDLE (chrt --idle: only
 #     the CPU time the tests leave idle; one compile at a time);
@@ -31,8 +31,9 @@ ctest --test-dir build --show-only=json-v1 > build/tests.json
 phase_tests() {  # phase_tests exclusive|shared: comma-separated ctest test numbers
   jq -r --arg want "$1" '[.tests | to_entries[]
       | (.value.properties // []) as $p
-      | (any($p[]; .name == "RUN_SERIAL" and .value == true)
-         and any($p[]; .name == "LABELS" and (.value | index("realtime")))) as $exclusive
+      | ((any($p[]; .name == "RUN_SERIAL" and .value == true)
+          and any($p[]; .name == "LABELS" and (.value | index("realtime"))))
+         or any($p[]; .name == "LABELS" and (.value | index("light")))) as $exclusive
       | select(($want == "exclusive") == $exclusive) | .key + 1] | join(",")' build/tests.json
 }
 exclusive=$(phase_tests exclusive)
@@ -46,10 +47,24 @@ keep_failures() {  # keep_failures PHASE: copy ctest's list of the phase's faile
   if [ -s "$failed_log" ]; then cp "$failed_log" "build/failed_$1.log"; else : > "build/failed_$1.log"; fi
 }
 
+# The test domains' participant ports (0-31) out of the kernel's ephemeral port range while the
+# suite runs, so that no socket bound to "any port" can take one. plexus's own Cyclone DDS
+# participants move off such a port by themselves; third-party Cyclone DDS programs the tests
+# run (ddsperf, the native interop programs) cannot, and a Fast DDS participant of another
+# test's domain would be seen by them (docs/runtime.md, "Domains on one host"). As root only;
+# the previous setting comes back at the end.
+reserved_before=""
+if [ "$(id -u)" -eq 0 ] && reserved_before=$(sysctl -n net.ipv4.ip_local_reserved_ports 2> /dev/null); then
+  sysctl -qw net.ipv4.ip_local_reserved_ports="$(for d in $(seq 0 232); do
+    printf '%d-%d,' $((7410 + 250 * d)) $((7473 + 250 * d)); done | sed 's/,$//')" ||
+    echo "test.sh: could not reserve the DDS participant ports (sysctl); tests run without"
+  trap 'sysctl -qw net.ipv4.ip_local_reserved_ports="$reserved_before"' EXIT
+fi
+
 suite_rc=0
 start=$(date +%s)
 rm -f "$failed_log"
-lanes=2
+lanes=4
 [ -z "$exclusive" ] || PLEXUS_REALTIME_LANES=$lanes ctest --test-dir build --output-on-failure -j$lanes --timeout 600 \
   -I "0,0,0,$exclusive" || suite_rc=$?
 keep_failures exclusive

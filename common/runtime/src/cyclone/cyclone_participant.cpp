@@ -17,6 +17,7 @@
 #include "../policy_names.hpp"
 #include "cdr_sertype.hpp"
 #include "cyclone_security.hpp"
+#include "domain_ports.hpp"
 #include "plexus/base/clock.hpp"
 
 namespace plexus::rt {
@@ -267,7 +268,7 @@ void acquire_domain(dds_domainid_t domain, const std::string& config) {
   std::lock_guard lk(g_domains_mu);
   auto& use = domains()[domain];
   if (use.participants++ > 0) return;
-  const dds_entity_t d = dds_create_domain(domain, config.c_str());
+  const dds_entity_t d = detail::create_domain_off_foreign_ports(domain, config);
   if (d < 0 && d != DDS_RETCODE_PRECONDITION_NOT_MET) {
     domains().erase(domain);
     throw std::runtime_error(cyc_error("cannot create domain", d));
