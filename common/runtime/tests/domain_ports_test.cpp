@@ -21,12 +21,12 @@ TEST(DomainPorts, AnotherDomainsParticipantDiscoveryPortIsForeign) {
 }
 
 TEST(DomainPorts, OwnDomainDataAndMulticastPortsAreNot) {
-  EXPECT_FALSE(is_foreign_discovery_port(discovery_port(138, 2), 138));   // own domain
+  EXPECT_FALSE(is_foreign_discovery_port(discovery_port(138, 2), 138));      // own domain
   EXPECT_FALSE(is_foreign_discovery_port(discovery_port(105, 2) + 1, 138));  // user data port (d3 = 11)
-  EXPECT_FALSE(is_foreign_discovery_port(7400 + 250 * 105, 138));         // multicast discovery (d0)
-  EXPECT_FALSE(is_foreign_discovery_port(7400 + 250 * 105 + 1, 138));     // multicast data (d2)
-  EXPECT_FALSE(is_foreign_discovery_port(7409, 3));                       // below every domain's block
-  EXPECT_FALSE(is_foreign_discovery_port(7400 + 250 * 233 + 10, 3));      // no domain 233
+  EXPECT_FALSE(is_foreign_discovery_port(7400 + 250 * 105, 138));            // multicast discovery (d0)
+  EXPECT_FALSE(is_foreign_discovery_port(7400 + 250 * 105 + 1, 138));        // multicast data (d2)
+  EXPECT_FALSE(is_foreign_discovery_port(7409, 3));                          // below every domain's block
+  EXPECT_FALSE(is_foreign_discovery_port(7400 + 250 * 233 + 10, 3));         // no domain 233
   EXPECT_FALSE(is_foreign_discovery_port(0, 3));
 }
 

@@ -98,7 +98,8 @@ dds_entity_t create_domain_off_foreign_ports(dds_domainid_t domain, const std::s
     if (d < 0) break;
     std::vector<unsigned> foreign;
     for (const auto& [inode, port] : own_udp_ports())
-      if (!before.count(inode) && is_foreign_discovery_port(port, static_cast<unsigned>(domain))) foreign.push_back(port);
+      if (!before.count(inode) && is_foreign_discovery_port(port, static_cast<unsigned>(domain)))
+        foreign.push_back(port);
     if (foreign.empty()) break;
     if (attempt == kTries) {
       std::fprintf(stderr,
