@@ -7,11 +7,14 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <condition_variable>
 #include <cstdint>
 #include <cstdio>
 #include <ctime>
 #include <fstream>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -82,13 +85,49 @@ inline void print_result(const char* implementation, const PingPongOptions& o, s
   std::printf("%s\n", j.dump().c_str());
 }
 
-/// The ping loop of both programs, so they measure the same way: ping k is sent by
-/// send(k) at --rate on absolute deadlines (back to back at rate 0), then take(index) is
-/// called whenever wait(timeout_ns) says data may be there, until the pong of ping k
-/// arrives (1 s at most). Round trips go into a buffer reserved before the loop. Prints
-/// the result line; returns 0 if every measured ping came back.
-template <class Send, class Wait, class Take>
-int run_ping(const char* implementation, const PingPongOptions& o, Send&& send, Wait&& wait, Take&& take) {
+/// Where a ping side's pongs land: the thread that delivers a pong (the DDS receive thread,
+/// in the reader's data callback) stamps its arrival here, as ddsperf's ping does in its
+/// data-available listener. A round trip then ends when the pong is in the process, not when
+/// a waiting thread has been scheduled to look at it (that wake-up is the application's,
+/// on either vendor; issue 33, item 9: it was most of plexus's gap to ddsperf). The waiting
+/// thread only learns that it came. No allocation.
+class PongArrivals {
+ public:
+  /// On the delivering thread: the pong of ping `index` is here.
+  void arrived(int64_t index) {
+    const int64_t t = mono_ns();
+    {
+      std::lock_guard<std::mutex> lk(mu_);
+      index_ = index;
+      t_ns_ = t;
+    }
+    cv_.notify_one();
+  }
+  /// The arrival time of the pong of ping `index`, waiting for it until `deadline_ns`
+  /// (monotonic); -1 if it did not come by then. Pongs of older pings are passed over.
+  int64_t wait_for(int64_t index, int64_t deadline_ns) {
+    std::unique_lock<std::mutex> lk(mu_);
+    while (index_ != index) {
+      const int64_t left = deadline_ns - mono_ns();
+      if (left <= 0) return -1;
+      cv_.wait_for(lk, std::chrono::nanoseconds(left));
+    }
+    return t_ns_;
+  }
+
+ private:
+  std::mutex mu_;
+  std::condition_variable cv_;
+  int64_t index_ = -1, t_ns_ = 0;
+};
+
+/// The ping loop of both programs, so they measure the same way: ping k is sent by send(k)
+/// at --rate on absolute deadlines (back to back at rate 0); its round trip is from just
+/// before send(k) to the pong's arrival stamped by `pongs` (1 s at most). Round trips go into
+/// a buffer reserved before the loop. Prints the result line; returns 0 if every measured
+/// ping came back.
+template <class Send>
+int run_ping(const char* implementation, const PingPongOptions& o, Send&& send, PongArrivals& pongs) {
   std::vector<int64_t> rtt;
   rtt.reserve(static_cast<std::size_t>(o.count));
   const int total = o.warmup + o.count;
@@ -106,18 +145,8 @@ int run_ping(const char* implementation, const PingPongOptions& o, Send&& send, 
     const int64_t t0 = mono_ns();
     if (!send(k)) break;
     if (k >= o.warmup) ++sent;
-    const int64_t give_up = t0 + 1'000'000'000;
-    bool got = false;
-    for (int64_t now = mono_ns(); !got && now < give_up; now = mono_ns()) {
-      if (!wait(give_up - now)) continue;
-      int64_t index = -1;
-      while (take(index)) {  // older pongs (of timed-out pings) are dropped
-        if (index == k) {
-          got = true;
-          if (k >= o.warmup) rtt.push_back(mono_ns() - t0);
-        }
-      }
-    }
+    const int64_t arrival = pongs.wait_for(k, t0 + 1'000'000'000);
+    if (arrival >= 0 && k >= o.warmup) rtt.push_back(arrival - t0);
   }
   const double elapsed = static_cast<double>(mono_ns() - t_start) * 1e-9;
   print_result(implementation, o, rtt, sent, elapsed);

@@ -4,9 +4,10 @@
 //   pingpong_node pong --dds cyclone --domain 180
 //   pingpong_node ping --dds fast --domain 180 --size 4096 --rate 1000 --count 5000
 //
-// ping publishes at --rate on an absolute-deadline schedule (or back to back with --rate 0),
-// waits for each pong and records the round trip (monotonic clock, taken in ping) into a
-// buffer allocated before the loop. Prints one JSON line (pingpong_common.hpp).
+// ping publishes at --rate on an absolute-deadline schedule (or back to back with --rate 0);
+// each pong is stamped on arrival by the receive thread's data callback (as ddsperf's ping
+// does), and the round trip (monotonic clock, taken in ping) goes into a buffer allocated
+// before the loop. Prints one JSON line (pingpong_common.hpp).
 #include <atomic>
 #include <csignal>
 #include <thread>
@@ -41,6 +42,7 @@ int run_pong(rt::Participant& p, const rt::QosProfile& qos, const latency::PingP
 }
 
 int run_ping(rt::Participant& p, const rt::QosProfile& qos, const latency::PingPongOptions& o) {
+  latency::PongArrivals pongs;  // before sub: its callback writes here until sub goes
   auto pub = p.publisher<msg::LatencyProbe>("latency/ping", qos);
   auto sub = p.subscriber<msg::LatencyProbe>("latency/pong", qos);
   const int64_t match_end = mono_ns() + static_cast<int64_t>(o.timeout * 1e9);
@@ -55,6 +57,9 @@ int run_ping(rt::Participant& p, const rt::QosProfile& qos, const latency::PingP
   msg::LatencyProbe out, in;
   out.payload().assign(static_cast<std::size_t>(o.size), 0x5a);
   in.payload().reserve(65536);
+  // Each pong is stamped on the receive thread (Subscriber::on_sample), as ddsperf's ping does.
+  sub.on_sample([&pongs](msg::LatencyProbe& m, const rt::SampleMeta&) { pongs.arrived(m.header().data_time_ns()); },
+                std::move(in));
   return latency::run_ping(
       "plexus", o,
       [&](int k) {
@@ -64,12 +69,7 @@ int run_ping(rt::Participant& p, const rt::QosProfile& qos, const latency::PingP
         pub.publish(out);
         return true;
       },
-      [&](int64_t timeout_ns) { return sub.wait(timeout_ns); },
-      [&](int64_t& index) {
-        if (!sub.take(in)) return false;
-        index = in.header().data_time_ns();
-        return true;
-      });
+      pongs);
 }
 
 }  // namespace

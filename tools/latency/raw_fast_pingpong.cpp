@@ -65,6 +65,16 @@ struct Echo final : DataReaderListener {
   }
 };
 
+// ping's pongs, stamped on Fast DDS's receive thread from the reader listener, as plexus's
+// ping does (Subscriber::on_sample) and ddsperf's.
+struct PongStamp final : DataReaderListener {
+  plexus::latency::PongArrivals* pongs = nullptr;
+  plexus::msg::LatencyProbe in;
+  void on_data_available(DataReader* r) override {
+    while (take_one(r, in)) pongs->arrived(in.header().data_time_ns());
+  }
+};
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -126,15 +136,18 @@ int main(int argc, char** argv) {
   Echo echo;
   echo.writer = w;
   echo.in.payload().reserve(65536);
-  DataReader* r =
-      ping ? sub->create_datareader(tpong, rq) : sub->create_datareader(tping, rq, &echo, StatusMask::data_available());
+  plexus::latency::PongArrivals pongs;
+  PongStamp stamp;
+  stamp.pongs = &pongs;
+  stamp.in.payload().reserve(65536);
+  DataReader* r = ping ? sub->create_datareader(tpong, rq, &stamp, StatusMask::data_available())
+                       : sub->create_datareader(tping, rq, &echo, StatusMask::data_available());
   if (!w || !r) {
     std::fprintf(stderr, "raw_fast_pingpong: cannot create endpoints\n");
     return 1;
   }
   int rc = 0;
-  plexus::msg::LatencyProbe out, in;
-  in.payload().reserve(65536);
+  plexus::msg::LatencyProbe out;
   if (!ping) {
     const int64_t end = o.duration > 0 ? mono_ns() + static_cast<int64_t>(o.duration * 1e9) : INT64_MAX;
     while (!g_stop && mono_ns() < end) std::this_thread::sleep_for(std::chrono::milliseconds(50));
@@ -162,15 +175,8 @@ int main(int argc, char** argv) {
           out.header().data_time_ns(k);
           return w->write(&out);
         },
-        [&](int64_t timeout_ns) {
-          return r->get_unread_count() > 0 || r->wait_for_unread_message(eprosima::fastrtps::Duration_t(
-                                                  static_cast<long double>(timeout_ns) * 1e-9L));
-        },
-        [&](int64_t& index) {
-          if (!take_one(r, in)) return false;
-          index = in.header().data_time_ns();
-          return true;
-        });
+        pongs);
+    r->set_listener(nullptr);  // before stamp goes
   }
   dp->delete_contained_entities();
   DomainParticipantFactory::get_instance()->delete_participant(dp);

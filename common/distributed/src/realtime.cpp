@@ -499,8 +499,8 @@ RealtimeReport RealtimeHost::run(const std::atomic<bool>& stop) {
   const auto arrived = [&m](std::size_t sig, int64_t due) { return m.arrived(sig, due); };
   const int64_t startup_ticks = std::max<int64_t>(
       kStartupMinTicks, static_cast<int64_t>(std::ceil(kStartupSeconds / (m.sc.step * static_cast<double>(stride)))));
-  const int64_t catch_up_ticks = std::max<int64_t>(
-      kMinCatchUpTicks, std::llround(kMaxCatchUpSeconds / (m.sc.step * static_cast<double>(stride))));
+  const int64_t catch_up_ticks =
+      std::max<int64_t>(kMinCatchUpTicks, std::llround(kMaxCatchUpSeconds / (m.sc.step * static_cast<double>(stride))));
   // catching_up: step j is one the loop missed. A controller runs it (its own state keeps
   // the grid's time) but its outputs hold: a command for a step already past reaches no
   // actuator in time (the plant held the last one through it), and the estimators beside it
