@@ -129,6 +129,8 @@ add_test(NAME tools.bad_loop_rounds COMMAND ${EXPECT} 2 "--rounds: must be in 1.
          ${PLEXUS_CLI} latency loop --rate 100 --duration 0.1 --rounds 20)
 add_test(NAME tools.bad_pingpong_size COMMAND ${EXPECT} 2 "--size: must be in 0..65536 bytes"
          ${PLEXUS_CLI} latency pingpong --size 70000)
+add_test(NAME tools.bad_pingpong_pin COMMAND ${EXPECT} 2 "--pin: must be auto, split, same or none, got 'fast'"
+         ${PLEXUS_CLI} latency pingpong --pin fast)
 add_test(NAME tools.unknown_profile COMMAND ${EXPECT} 2 "unknown QoS profile 'fastest'"
          ${PLEXUS_CLI} latency pingpong --profile fastest)
 add_test(NAME tools.bad_peer_vendor COMMAND ${EXPECT} 2 "--peer-dds: unknown DDS vendor 'rti'"
@@ -144,7 +146,7 @@ set_tests_properties(tools.launch_unknown_vendor_process PROPERTIES LABELS "cli"
 add_test(NAME tools.launch_record_bad_file COMMAND ${EXPECT} 2 "/nonexistent/dir/x.mcap: cannot create recording"
          ${PLEXUS_CLI} launch ${CIRCLE} --record /nonexistent/dir/x.mcap --domain 225)
 set_tests_properties(tools.bad_topic_type tools.bad_vendor tools.missing_run_file tools.replay_missing_file
-                     tools.record_bad_file tools.bad_loop_rate tools.bad_loop_rounds tools.bad_pingpong_size tools.unknown_profile
+                     tools.record_bad_file tools.bad_loop_rate tools.bad_loop_rounds tools.bad_pingpong_size tools.bad_pingpong_pin tools.unknown_profile
                      tools.bad_peer_vendor tools.launch_unknown_external tools.launch_record_bad_file
                      PROPERTIES LABELS "cli;tools")
 

@@ -48,7 +48,7 @@ std::vector<double> read_numbers(const std::string& path) {
 // pingpong
 
 struct PingOpts {
-  std::string dds = "fast", peer_dds, profile = "latency", qos_file, out, transport = "auto";
+  std::string dds = "fast", peer_dds, profile = "latency", qos_file, out, transport = "auto", pin = "auto";
   int size = 0, count = 2000, domain = 180;
   double rate = 1000;
   bool json = false, no_baseline = false;
@@ -102,6 +102,53 @@ Json parse_ddsperf(const std::string& out) {
           {"note", "ddsperf reports half round trips per second; shown x2, count-weighted over its 1 s intervals"}};
 }
 
+/// Where the ping and the pong run (--pin), the same for plexus and the vendor's baseline.
+/// On this 2-vCPU virtual machine the round trip is decided by where the kernel puts the two
+/// processes' receiving threads: a wake-up across CPUs costs about 30 us more per hop than
+/// one on the same CPU. Unpinned, plexus's processes (more threads) and ddsperf's were placed
+/// differently, and the p50 ratio read 1.4-1.8 although the paths cost the same: pinned alike,
+/// 0.69-0.72 on one CPU and 1.00-1.14 across two (docs/performance.md, "Ping-pong").
+struct Placement {
+  int ping = -1, pong = -1;  ///< CPU of each side; -1: not pinned
+};
+
+Placement placement(const std::string& pin) {
+  cpu_set_t allowed;
+  CPU_ZERO(&allowed);
+  std::vector<int> cpus;
+  if (sched_getaffinity(0, sizeof allowed, &allowed) == 0)
+    for (int c = 0; c < CPU_SETSIZE; ++c)
+      if (CPU_ISSET(c, &allowed)) cpus.push_back(c);
+  if (pin == "none") return {};
+  if (cpus.empty()) throw std::runtime_error("--pin: cannot read this process's CPUs");
+  if (pin == "same") return {cpus[0], cpus[0]};
+  if (pin == "split" && cpus.size() < 2) throw InputError("--pin split: needs 2 CPUs, this process may use 1");
+  if (pin == "split" || pin == "auto")
+    return cpus.size() < 2 ? Placement{cpus[0], cpus[0]} : Placement{cpus[0], cpus[1]};
+  throw InputError("--pin: must be auto, split, same or none, got '" + pin + "'");
+}
+
+/// While it lives, this process (and so every child it starts) runs on CPU `cpu` (-1: as is).
+class PinnedTo {
+ public:
+  explicit PinnedTo(int cpu) {
+    if (cpu < 0 || sched_getaffinity(0, sizeof saved_, &saved_) != 0) return;
+    cpu_set_t one;
+    CPU_ZERO(&one);
+    CPU_SET(cpu, &one);
+    pinned_ = sched_setaffinity(0, sizeof one, &one) == 0;
+  }
+  ~PinnedTo() {
+    if (pinned_) sched_setaffinity(0, sizeof saved_, &saved_);
+  }
+  PinnedTo(const PinnedTo&) = delete;
+  PinnedTo& operator=(const PinnedTo&) = delete;
+
+ private:
+  cpu_set_t saved_{};
+  bool pinned_ = false;
+};
+
 int run_pingpong(const PingOpts& o) {
   const rt::Vendor vendor = rt::parse_vendor(o.dds, "--dds");
   const std::string peer = o.peer_dds.empty() ? o.dds : o.peer_dds;
@@ -117,8 +164,14 @@ int run_pingpong(const PingOpts& o) {
   if (!(o.rate >= 0 && o.rate <= 100000)) throw InputError("--rate: must be in 0..100000 Hz (0: back to back)");
   if (o.count < 1 || o.count > 10'000'000) throw InputError("--count: must be in 1..10000000");
   if (o.domain < 0 || o.domain > 231) throw InputError("--domain: must be in 0..231 (the baseline uses domain + 1)");
+  const Placement cpus = placement(o.pin);
   make_out_dir(o.out);
   const std::string d = std::to_string(o.domain), d2 = std::to_string(o.domain + 1);
+  // Each side starts while this process runs on its CPU, and inherits it.
+  auto spawn_on = [](int cpu, auto&& start) {
+    PinnedTo pinned(cpu);
+    return start();
+  };
   const double expected_s = o.rate > 0 ? (o.count + 100) / o.rate : o.count * 0.002;
   const std::string pong_duration = std::to_string(static_cast<int>(expected_s + 40));
   std::vector<std::string> common = {"--size",  std::to_string(o.size), "--rate", std::to_string(o.rate),
@@ -134,11 +187,11 @@ int run_pingpong(const PingOpts& o) {
   };
   auto pong_args = args("pong", peer, d);
   pong_args.insert(pong_args.end(), {"--duration", pong_duration});
-  const pid_t pong = spawn("pingpong_node", pong_args);
+  const pid_t pong = spawn_on(cpus.pong, [&] { return spawn("pingpong_node", pong_args); });
   auto ping_args = args("ping", o.dds, d);
   ping_args.insert(ping_args.end(), {"--samples", samples});
   std::string out;
-  const int rc = run_capture("pingpong_node", ping_args, out);
+  const int rc = spawn_on(cpus.ping, [&] { return run_capture("pingpong_node", ping_args, out); });
   stop(pong);
   const Json plexus_r = parse_result(out, rc, "pingpong_node ping");
   std::vector<double> plexus_samples = read_numbers(samples);
@@ -157,11 +210,11 @@ int run_pingpong(const PingOpts& o) {
       if (shm) base.push_back("--shm");
       std::vector<std::string> pa = {"pong", "--duration", pong_duration};
       pa.insert(pa.end(), base.begin(), base.end());
-      const pid_t rpong = spawn("raw_fast_pingpong", pa);
+      const pid_t rpong = spawn_on(cpus.pong, [&] { return spawn("raw_fast_pingpong", pa); });
       std::vector<std::string> qa = {"ping", "--samples", samples};
       qa.insert(qa.end(), base.begin(), base.end());
       std::string rout;
-      const int rrc = run_capture("raw_fast_pingpong", qa, rout);
+      const int rrc = spawn_on(cpus.ping, [&] { return run_capture("raw_fast_pingpong", qa, rout); });
       stop(rpong);
       vendor_r = parse_result(rout, rrc, "raw_fast_pingpong ping");
       vendor_samples = read_numbers(samples);
@@ -185,13 +238,14 @@ int run_pingpong(const PingOpts& o) {
       std::vector<std::string> pa = base;
       pa.insert(pa.end(), {"-D", std::to_string(dur + 12), "pong"});
       const std::string pong_log = temp_path("ddsperf_pong");
-      const pid_t dpong = spawn_program(ddsperf, pa, {uri}, {.file = pong_log, .fd = -1});
+      const pid_t dpong =
+          spawn_on(cpus.pong, [&] { return spawn_program(ddsperf, pa, {uri}, {.file = pong_log, .fd = -1}); });
       std::vector<std::string> qa = base;
       qa.insert(qa.end(), {"-Qminmatch:1", "-Qinitwait:10", "-D", std::to_string(dur), "ping"});
       if (o.rate > 0) qa.push_back(std::to_string(static_cast<long>(o.rate)) + "Hz");
       qa.insert(qa.end(), {"size", std::to_string(o.size == 0 ? 0 : std::max(o.size, 12))});
       std::string dout;
-      run_program(ddsperf, qa, dout, {uri}, true);
+      spawn_on(cpus.ping, [&] { return run_program(ddsperf, qa, dout, {uri}, true); });
       kill(dpong, SIGTERM);
       wait_program(dpong);
       fs::remove(pong_log);
@@ -200,10 +254,16 @@ int run_pingpong(const PingOpts& o) {
   }
 
   Percentiles a = pct_of_result(plexus_r), b = vendor_r.is_null() ? Percentiles{} : pct_of_result(vendor_r);
-  Json result = {
-      {"dds", o.dds},      {"peer_dds", peer}, {"profile", o.profile},     {"size", o.size},
-      {"rate_hz", o.rate}, {"count", o.count}, {"transport", o.transport}, {"carried_by", shm ? "shm" : "udp"},
-      {"plexus", plexus_r}};
+  Json result = {{"dds", o.dds},
+                 {"peer_dds", peer},
+                 {"profile", o.profile},
+                 {"size", o.size},
+                 {"rate_hz", o.rate},
+                 {"count", o.count},
+                 {"transport", o.transport},
+                 {"carried_by", shm ? "shm" : "udp"},
+                 {"cpus", {{"ping", cpus.ping}, {"pong", cpus.pong}}},
+                 {"plexus", plexus_r}};
   if (!vendor_r.is_null()) {
     result["vendor"] = vendor_r;
     result["ratio"] = {{"mean", a.mean / b.mean},
@@ -227,6 +287,8 @@ int run_pingpong(const PingOpts& o) {
     std::printf("plexus latency pingpong: %s -> %s, profile '%s', payload %d B, %g Hz, %d round trips, %s\n",
                 o.dds.c_str(), peer.c_str(), o.profile.c_str(), o.size, o.rate, o.count,
                 shm ? "shared memory" : "UDP on loopback");
+    if (cpus.ping >= 0)
+      std::printf("ping on CPU %d, pong on CPU %d (--pin), for plexus and the baseline alike\n", cpus.ping, cpus.pong);
     std::printf("plexus: received %d/%d, %.0f round trips/s\n", plexus_r.value("received", 0), o.count,
                 plexus_r.value("round_trips_per_s", 0.0));
     if (!vendor_r.is_null()) {
@@ -440,6 +502,10 @@ Command add_latency_command(CLI::App& root) {
                    "auto, udp or shm: shm carries Fast DDS round trips over shared memory (docs/runtime.md)")
       ->capture_default_str();
   ping->add_option("-o,--out", po->out, "directory for the PNG histogram and JSON");
+  ping->add_option("--pin", po->pin,
+                   "where ping and pong run, alike for plexus and the baseline: split (ping on the first CPU, pong on "
+                   "the second), same (both on the first), none, auto (split, or same with one CPU)")
+      ->capture_default_str();
   ping->add_flag("--no-baseline", po->no_baseline, "skip the vendor baseline");
   ping->add_flag("--json", po->json, "one JSON object");
 
