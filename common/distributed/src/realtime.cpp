@@ -406,7 +406,13 @@ RealtimeReport RealtimeHost::run(const std::atomic<bool>& stop) {
   const int64_t stride = m.stride;
   const auto offset_ns = static_cast<int64_t>(m.phase * static_cast<double>(step_ns));
   const int64_t wall_now = wall_time_ns(), mono_now = monotonic_ns();
-  const int64_t t0 = go.sim_time_ns() > 0 ? go.sim_time_ns() : wall_now;
+  // Without a launcher (a service started by hand) the run starts at the wall clock's next
+  // whole second: every such service of the host (of every host whose clock is synchronised)
+  // then steps on one grid, with the phases above, as under plexus launch. Each starting at
+  // its own moment, their grids were offset at random, and so was the delay from a sample to
+  // the loop that reads it: the balancing robot's loop, run by hand from deploy/params, went
+  // into a 10 Hz oscillation and fell in 1 of 6 runs (services.standalone_life_cycle; issue 33).
+  const int64_t t0 = go.sim_time_ns() > 0 ? go.sim_time_ns() : (wall_now / 1'000'000'000 + 1) * 1'000'000'000;
   const int64_t late_ns = wall_now - t0 - offset_ns;  // past this host's step 0 by
   const int64_t k0 = late_ns < 0 ? 0 : (late_ns / step_ns / stride + 1) * stride;
   const int64_t first_deadline = mono_now + (t0 + k0 * step_ns + offset_ns - wall_now);
