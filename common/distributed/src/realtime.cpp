@@ -507,10 +507,7 @@ RealtimeReport RealtimeHost::run(const std::atomic<bool>& stop) {
       kStartupMinTicks, static_cast<int64_t>(std::ceil(kStartupSeconds / (m.sc.step * static_cast<double>(stride)))));
   const int64_t catch_up_ticks =
       std::max<int64_t>(kMinCatchUpTicks, std::llround(kMaxCatchUpSeconds / (m.sc.step * static_cast<double>(stride))));
-  // catching_up: step j is one the loop missed. After this host's own first 0.05 s (from its
-  // start at step k0, the run's or a restart's: holding there made the 1 kHz arm diverge at
-  // the run's start, and its restarted controller give NaN torques in a CI run of
-  // fault.kill_each_service_fast), a controller runs it (its own state keeps
+  // catching_up: step j is one the loop missed. A controller runs it (its own state keeps
   // the grid's time) but its outputs hold: a command for a step already past reaches no
   // actuator in time (the plant held the last one through it), and the estimators beside it
   // then read the held command, the one the plant applied. Published, an estimator in its
@@ -523,8 +520,7 @@ RealtimeReport RealtimeHost::run(const std::atomic<bool>& stop) {
     const int64_t wait_until = starting ? monotonic_ns() + kStartupWaitPeriods * loop.period_ns() : 0;
     for (std::size_t c = 0; c < m.sc.components.size(); ++c) {
       if (!m.exec.hosted(c)) continue;
-      const auto outputs = catching_up && j >= k0 + startup_ticks * stride &&
-                                   m.sc.components[c].kind == scenario::ComponentKind::controller
+      const auto outputs = catching_up && !starting && m.sc.components[c].kind == scenario::ComponentKind::controller
                                ? scenario::StepExecutor::Outputs::hold
                                : scenario::StepExecutor::Outputs::commit;
       if (starting) {  // the run's start: wait for this step's samples, two periods at most for the step
