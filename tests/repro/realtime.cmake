@@ -29,19 +29,6 @@ foreach(variant "fast;203" "cyclone;204")
                        LABELS "repro;realtime;multiprocess;alone" TIMEOUT 120 RUN_SERIAL TRUE)
 endforeach()
 
-# A stall of the whole machine (both processes stopped 30 ms) in the 1 kHz arm's run: the
-# plant keeps physical time and the controller's missed steps hold their command
-# (tests/scripts/stall_catch_up.sh; docs/distributed.md, "Overruns"). `alone`, as above.
-foreach(variant "fast;157" "cyclone;158")
-  list(POP_FRONT variant vendor domain)
-  add_test(NAME realtime.stall_catch_up_${vendor}
-           COMMAND ${PROJECT_SOURCE_DIR}/tests/scripts/stall_catch_up.sh $<TARGET_FILE:plexus>
-                   ${PROJECT_SOURCE_DIR}/deploy/scenarios/arm_vdc_ekf.yaml ${vendor} ${domain}
-                   ${CMAKE_BINARY_DIR}/test-runs/realtime/stall_catch_up_${vendor})
-  set_tests_properties(realtime.stall_catch_up_${vendor} PROPERTIES LABELS "realtime;multiprocess;alone" TIMEOUT 60
-                       RUN_SERIAL TRUE)
-endforeach()
-
 # Issue 12, the contract on the wire: a native plant built from idl/ alone (Cyclone C with
 # idlc's output; Fast DDS C++ with fastddsgen's type) closes the RFID loop with the plexus
 # observer, controller and reference in realtime, and paper 000's bounds hold.

@@ -29,13 +29,9 @@ namespace {
 
 using scenario::SignalSample;
 
-/// How far back a host catches up after an overrun (a stall of its process or of the
-/// machine): the steps it missed, up to 0.1 s and at least 10 ticks, run back to back before
-/// the current one (more are skipped: a host that far behind would only fall further behind
-/// by catching up). Catching up keeps physical time: a plant integrates every step it missed
-/// with the command it holds, as a real arm keeps moving under a stalled controller.
-constexpr double kMaxCatchUpSeconds = 0.1;
-constexpr int64_t kMinCatchUpTicks = 10;
+/// Most ticks a host runs back to back after an overrun (more are skipped: a host that far
+/// behind would only fall further behind by catching up).
+constexpr int64_t kMaxCatchUpTicks = 10;
 
 /// Most steps a deferred estimator runs behind the grid: one of its own periods. A sample
 /// later than that is read late (the newest older one) and the algorithm's own rule for a
@@ -505,36 +501,24 @@ RealtimeReport RealtimeHost::run(const std::atomic<bool>& stop) {
   const auto arrived = [&m](std::size_t sig, int64_t due) { return m.arrived(sig, due); };
   const int64_t startup_ticks = std::max<int64_t>(
       kStartupMinTicks, static_cast<int64_t>(std::ceil(kStartupSeconds / (m.sc.step * static_cast<double>(stride)))));
-  const int64_t catch_up_ticks =
-      std::max<int64_t>(kMinCatchUpTicks, std::llround(kMaxCatchUpSeconds / (m.sc.step * static_cast<double>(stride))));
-  // catching_up: step j is one the loop missed. A controller runs it (its own state keeps
-  // the grid's time) but its outputs hold: a command for a step already past reaches no
-  // actuator in time (the plant held the last one through it), and the estimators beside it
-  // then read the held command, the one the plant applied. Published, an estimator in its
-  // process would predict the missed steps with commands the plant never applied: with an
-  // 18 ms stall of both processes of the 1 kHz arm, its EKF drifted 4.8 mrad and the VDC took
-  // 0.5 s to recover (issue 33; docs/distributed.md, "Overruns").
-  const auto run_step = [&](int64_t j, bool catching_up) {
+  const auto run_step = [&](int64_t j) {
     m.params->serve(j);  // between two ticks: a change takes effect at step j, acknowledged with it
     const bool starting = k0 == 0 && j < startup_ticks * stride;
     const int64_t wait_until = starting ? monotonic_ns() + kStartupWaitPeriods * loop.period_ns() : 0;
     for (std::size_t c = 0; c < m.sc.components.size(); ++c) {
       if (!m.exec.hosted(c)) continue;
-      const auto outputs = catching_up && !starting && m.sc.components[c].kind == scenario::ComponentKind::controller
-                               ? scenario::StepExecutor::Outputs::hold
-                               : scenario::StepExecutor::Outputs::commit;
       if (starting) {  // the run's start: wait for this step's samples, two periods at most for the step
         while (!m.exec.remote_inputs_ready(c, j, arrived) && monotonic_ns() < wait_until && !stop.load())
           std::this_thread::sleep_for(std::chrono::microseconds(20));
       }
       if (!m.deferred[c]) {
-        m.exec.step_component(c, j, read, publish, gate, outputs);
+        m.exec.step_component(c, j, read, publish, gate);
         continue;
       }
       const int64_t period = m.sc.components[c].period_steps;
       int64_t& next = m.next_step[c];
       // Steps lost to an overrun beyond the catch-up are skipped, as for every component.
-      const int64_t oldest = j - catch_up_ticks * stride - kEstimatorWaitPeriods * period;
+      const int64_t oldest = j - kMaxCatchUpTicks * stride - kEstimatorWaitPeriods * period;
       if (next < oldest) next = (oldest + period - 1) / period * period;
       while (next <= j) {
         const bool ready = m.exec.remote_inputs_ready(c, next, arrived);
@@ -558,15 +542,13 @@ RealtimeReport RealtimeHost::run(const std::atomic<bool>& stop) {
       [&](const rt::PeriodicLoop::Tick& t) {
         // The step is the grid's, from the deadline: after an overrun the loop skips the periods
         // it missed, and so does the step, so every host keeps the same step at the same time.
-        // The steps skipped (up to catch_up_ticks ticks) still run first, back to back: a plant
-        // integrates them with the command it holds and an estimator steps through them, so
-        // neither falls behind the grid's time by the periods it lost; a controller runs only
-        // the current step (run_step).
+        // The steps skipped (up to kMaxCatchUpTicks ticks) still run first, back to back: a plant
+        // integrates them with the command it holds and an estimator predicts over them, so
+        // neither falls behind the grid's time by the periods it lost.
         const int64_t k = std::min(ticks - 1, k0 + (t.deadline_ns - first_deadline) / loop.period_ns() * stride);
-        for (int64_t j = std::max(last_k + stride, k - catch_up_ticks * stride); j < k; j += stride)
-          run_step(j, /*catching_up=*/true);
+        for (int64_t j = std::max(last_k + stride, k - kMaxCatchUpTicks * stride); j < k; j += stride) run_step(j);
         last_k = k;
-        run_step(k, /*catching_up=*/false);
+        run_step(k);
         if (k >= next_beat) {
           m.publish_heartbeat(m.report.holds > holds_at_beat ? msg::SERVICE_DEGRADED : msg::SERVICE_RUNNING,
                               loop.stats());

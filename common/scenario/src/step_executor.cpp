@@ -88,8 +88,8 @@ void StepExecutor::step(int64_t k, const RemoteInput& remote, const OutputSink& 
 }
 
 void StepExecutor::step_component(std::size_t component, int64_t k, const RemoteInput& remote, const OutputSink& sink,
-                                  const Gate& gate, Outputs outputs) {
-  if (hosted_.at(component)) run_component(component, k, remote, sink, gate, outputs);
+                                  const Gate& gate) {
+  if (hosted_.at(component)) run_component(component, k, remote, sink, gate);
 }
 
 std::size_t StepExecutor::remote_input_count(std::size_t component) const {
@@ -119,7 +119,7 @@ void StepExecutor::apply_parameter_changes(std::size_t ci, int64_t k) {
 }
 
 void StepExecutor::run_component(std::size_t ci, int64_t k, const RemoteInput& remote, const OutputSink& sink,
-                                 const Gate& gate, Outputs outputs) {
+                                 const Gate& gate) {
   auto& w = impl_->wiring;
   const double t = static_cast<double>(k) * scenario_.step;
   auto& c = scenario_.components[ci];
@@ -150,7 +150,6 @@ void StepExecutor::run_component(std::size_t ci, int64_t k, const RemoteInput& r
     c.component->step(k, t);
   else
     c.component->hold(k, t);
-  if (outputs == Outputs::hold) return;
   for (const auto& out : w.outputs[ci]) {
     out.port->commit();
     Slot& slot = impl_->bus[out.signal];

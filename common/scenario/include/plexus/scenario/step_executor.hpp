@@ -50,16 +50,11 @@ class StepExecutor {
   /// Runs base step k of the hosted components. Does not allocate (the callbacks must not either).
   void step(int64_t k, const RemoteInput& remote, const OutputSink& sink, const Gate& gate = {});
 
-  /// What becomes of a step's outputs: committed (the signals take them, `sink` gets them) or
-  /// held (the component runs, its signals keep their previous samples, nothing goes to `sink`).
-  enum class Outputs { commit, hold };
-
   /// Runs step k of hosted component i alone, as step(k, ...) runs it in its turn (nothing
   /// when k is not one of its steps). A realtime host uses it to run an estimator's step
-  /// once the samples that step reads have arrived, and a controller's missed step with its
-  /// outputs held (realtime.hpp). Does not allocate.
+  /// once the samples that step reads have arrived (realtime.hpp). Does not allocate.
   void step_component(std::size_t component, int64_t k, const RemoteInput& remote, const OutputSink& sink,
-                      const Gate& gate = {}, Outputs outputs = Outputs::commit);
+                      const Gate& gate = {});
 
   /// Asks `have(signal, due)` for every input of component i produced in another process,
   /// with the step whose sample the component's step k reads; true if every answer is true
@@ -81,8 +76,7 @@ class StepExecutor {
   int64_t remote_input_due(std::size_t component, std::size_t n, int64_t k, std::size_t& signal) const;
   /// Applies component ci's scheduled parameter changes due at or before step k (Scenario::parameter_changes).
   void apply_parameter_changes(std::size_t ci, int64_t k);
-  void run_component(std::size_t ci, int64_t k, const RemoteInput& remote, const OutputSink& sink, const Gate& gate,
-                     Outputs outputs = Outputs::commit);
+  void run_component(std::size_t ci, int64_t k, const RemoteInput& remote, const OutputSink& sink, const Gate& gate);
 
   struct Impl;
   Scenario& scenario_;
