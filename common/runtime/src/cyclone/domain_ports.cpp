@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <vector>
@@ -51,7 +52,10 @@ void read_udp_table(const char* path, std::map<unsigned long, unsigned>& ports) 
     if (!(f >> slot >> local >> remote >> state >> queues >> timer >> retransmits >> uid >> timeout >> inode)) continue;
     const auto colon = local.rfind(':');
     if (colon == std::string::npos) continue;
-    ports[inode] = static_cast<unsigned>(std::stoul(local.substr(colon + 1), nullptr, 16));
+    char* end = nullptr;
+    const unsigned long port = std::strtoul(local.c_str() + colon + 1, &end, 16);
+    if (end == local.c_str() + colon + 1 || *end != '\0' || port > 65535) continue;  // not a port: skipped
+    ports[inode] = static_cast<unsigned>(port);
   }
 }
 
