@@ -17,6 +17,7 @@
 
 #include "child_process.hpp"
 #include "command.hpp"
+#include "cpu_affinity.hpp"
 #include "external_program.hpp"
 #include "latency_loop.hpp"
 #include "latency_stats.hpp"
@@ -113,12 +114,7 @@ struct Placement {
 };
 
 Placement placement(const std::string& pin) {
-  cpu_set_t allowed;
-  CPU_ZERO(&allowed);
-  std::vector<int> cpus;
-  if (sched_getaffinity(0, sizeof allowed, &allowed) == 0)
-    for (int c = 0; c < CPU_SETSIZE; ++c)
-      if (CPU_ISSET(c, &allowed)) cpus.push_back(c);
+  const std::vector<int> cpus = allowed_cpus();
   if (pin == "none") return {};
   if (cpus.empty()) throw std::runtime_error("--pin: cannot read this process's CPUs");
   if (pin == "same") return {cpus[0], cpus[0]};
@@ -127,27 +123,6 @@ Placement placement(const std::string& pin) {
     return cpus.size() < 2 ? Placement{cpus[0], cpus[0]} : Placement{cpus[0], cpus[1]};
   throw InputError("--pin: must be auto, split, same or none, got '" + pin + "'");
 }
-
-/// While it lives, this process (and so every child it starts) runs on CPU `cpu` (-1: as is).
-class PinnedTo {
- public:
-  explicit PinnedTo(int cpu) {
-    if (cpu < 0 || sched_getaffinity(0, sizeof saved_, &saved_) != 0) return;
-    cpu_set_t one;
-    CPU_ZERO(&one);
-    CPU_SET(cpu, &one);
-    pinned_ = sched_setaffinity(0, sizeof one, &one) == 0;
-  }
-  ~PinnedTo() {
-    if (pinned_) sched_setaffinity(0, sizeof saved_, &saved_);
-  }
-  PinnedTo(const PinnedTo&) = delete;
-  PinnedTo& operator=(const PinnedTo&) = delete;
-
- private:
-  cpu_set_t saved_{};
-  bool pinned_ = false;
-};
 
 int run_pingpong(const PingOpts& o) {
   const rt::Vendor vendor = rt::parse_vendor(o.dds, "--dds");

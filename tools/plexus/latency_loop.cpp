@@ -1,7 +1,5 @@
 #include "latency_loop.hpp"
 
-#include <sched.h>
-
 #include <algorithm>
 #include <cmath>
 #include <condition_variable>
@@ -13,6 +11,7 @@
 #include <thread>
 #include <vector>
 
+#include "cpu_affinity.hpp"
 #include "external_program.hpp"
 #include "latency_stats.hpp"
 #include "plexus/base/input_error.hpp"
@@ -27,23 +26,17 @@ using Json = nlohmann::ordered_json;
 constexpr std::size_t kHistUs = 2000;
 
 // The CPUs this process may run on, as a cpuset list ("0,1"), and the first of them.
+// The CPUs cyclictest's main thread may use (--mainaffinity) and the first of them.
 struct Allowed {
   std::string list;
   int first = 0;
 };
 
-Allowed allowed_cpus() {
-  cpu_set_t set;
-  CPU_ZERO(&set);
-  Allowed a;
-  a.first = -1;
-  if (sched_getaffinity(0, sizeof set, &set) != 0) return {"0", 0};
-  for (int c = 0; c < CPU_SETSIZE; ++c) {
-    if (!CPU_ISSET(c, &set)) continue;
-    if (a.first < 0) a.first = c;
-    a.list += (a.list.empty() ? "" : ",") + std::to_string(c);
-  }
-  if (a.first < 0) return {"0", 0};
+Allowed allowed_cpu_list() {
+  const std::vector<int> cpus = allowed_cpus();
+  if (cpus.empty()) return {"0", 0};
+  Allowed a{"", cpus.front()};
+  for (int c : cpus) a.list += (a.list.empty() ? "" : ",") + std::to_string(c);
   return a;
 }
 
@@ -160,7 +153,7 @@ int run_loop(const LoopOpts& o) {
   if (o.rounds < 1 || o.rounds > 100 || static_cast<std::size_t>(o.rounds) > n)
     throw InputError("--rounds: must be in 1..100 and at most rate x duration (" + std::to_string(n) + ")");
   make_out_dir(o.out);
-  const Allowed allowed = allowed_cpus();
+  const Allowed allowed = allowed_cpu_list();
   // cyclictest pins its thread even without -a (to the first allowed CPU): the plexus loop
   // runs on the same CPU, and a CPU the machine lacks is refused by the loop (exit 2).
   const int cpu = o.cpu >= 0 ? o.cpu : allowed.first;
