@@ -6,6 +6,9 @@
 //   topic_peer sub ... --expect 100     (exit 1 unless 100 samples arrived; ends once they have)
 //
 // pub publishes x = k, y = 2k, theta = 0.5 (k = 1, 2, ...) until --count or --duration.
+// --type probe uses LatencyProbe (a bounded sequence, not a plain type) instead of Pose2D:
+// under Fast DDS's shared memory its samples go through the SHM transport's ports, where a
+// Pose2D goes through data sharing (docs/runtime.md, Transports).
 #include <CLI/CLI.hpp>
 
 #include <atomic>
@@ -22,12 +25,54 @@
 namespace {
 std::atomic<bool> g_stop{false};
 void on_signal(int) { g_stop = true; }
+
+void fill(plexus::msg::Pose2D& m, int k) { m.x(k), m.y(2.0 * k), m.theta(0.5); }
+void fill(plexus::msg::LatencyProbe& m, int k) { m.payload().assign(static_cast<std::size_t>(k % 64), 0x5a); }
+
+template <class M>
+int run(plexus::rt::Participant& p, const std::string& role, const std::string& topic,
+        const plexus::rt::QosProfile& qos, double rate, int64_t end, int count, int expect, bool wait_reader) {
+  using namespace plexus;
+  if (role == "sub") {
+    auto sub = p.subscriber<M>(topic, qos);
+    M m;
+    int received = 0;
+    while (!g_stop && monotonic_ns() < end && (expect == 0 || received < expect)) {
+      if (sub.wait(50'000'000))
+        while (sub.take(m)) ++received;
+    }
+    if (received < expect) {
+      std::fprintf(stderr, "topic_peer sub: %d samples on %s, expected at least %d\n", received, topic.c_str(), expect);
+      return 1;
+    }
+    return 0;
+  }
+  auto pub = p.publisher<M>(topic, qos);
+  if (wait_reader) {
+    while (pub.matched_count() == 0 && !g_stop && monotonic_ns() < end)
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  }
+  rt::PeriodicLoop loop({.rate_hz = rate});
+  int k = 0;
+  M m;
+  loop.run([&](const rt::PeriodicLoop::Tick& t) {
+    ++k;
+    m.header().origin_time_ns(0);
+    m.header().data_time_ns(t.deadline_ns);
+    fill(m, k);
+    pub.publish(m);
+    return !g_stop && monotonic_ns() < end && (count == 0 || k < count);
+  });
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  return 0;
+}
 }  // namespace
 
 int main(int argc, char** argv) {
   using namespace plexus;
   CLI::App app{"topic_peer: one Pose2D writer or reader"};
-  std::string role, dds = "fast", topic = "tools/pose", profile = "sensor", transport = "auto";
+  std::string role, dds = "fast", topic = "tools/pose", profile = "sensor", transport = "auto", type = "pose";
   int domain = 180, count = 0, expect = 0;
   double rate = 50, duration = 20;
   bool wait_reader = false;
@@ -42,6 +87,8 @@ int main(int argc, char** argv) {
   app.add_option("--expect", expect, "sub: exit 1 unless at least this many samples arrived (it ends once they have)");
   app.add_flag("--wait-reader", wait_reader, "pub: start publishing once a reader matched");
   app.add_option("--transport", transport, "auto, udp or shm");
+  app.add_option("--type", type, "pose (Pose2D, a plain type) or probe (LatencyProbe, not plain)")
+      ->check(CLI::IsMember({"pose", "probe"}));
   CLI11_PARSE(app, argc, argv);
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
@@ -55,42 +102,8 @@ int main(int argc, char** argv) {
     po.network.transport = rt::parse_transport(transport);
     auto p = rt::Participant::create(po);
     const int64_t end = monotonic_ns() + static_cast<int64_t>(duration * 1e9);
-    if (role == "sub") {
-      auto sub = p->subscriber<msg::Pose2D>(topic, qos);
-      msg::Pose2D m;
-      int received = 0;
-      while (!g_stop && monotonic_ns() < end && (expect == 0 || received < expect)) {
-        if (sub.wait(50'000'000))
-          while (sub.take(m)) ++received;
-      }
-      if (received < expect) {
-        std::fprintf(stderr, "topic_peer sub: %d samples on %s, expected at least %d\n", received, topic.c_str(),
-                     expect);
-        return 1;
-      }
-      return 0;
-    }
-    auto pub = p->publisher<msg::Pose2D>(topic, qos);
-    if (wait_reader) {
-      while (pub.matched_count() == 0 && !g_stop && monotonic_ns() < end)
-        std::this_thread::sleep_for(std::chrono::milliseconds(10));
-      std::this_thread::sleep_for(std::chrono::milliseconds(300));
-    }
-    rt::PeriodicLoop loop({.rate_hz = rate});
-    int k = 0;
-    msg::Pose2D m;
-    loop.run([&](const rt::PeriodicLoop::Tick& t) {
-      ++k;
-      m.header().origin_time_ns(0);
-      m.header().data_time_ns(t.deadline_ns);
-      m.x(k);
-      m.y(2.0 * k);
-      m.theta(0.5);
-      pub.publish(m);
-      return !g_stop && monotonic_ns() < end && (count == 0 || k < count);
-    });
-    std::this_thread::sleep_for(std::chrono::milliseconds(500));
-    return 0;
+    if (type == "probe") return run<msg::LatencyProbe>(*p, role, topic, qos, rate, end, count, expect, wait_reader);
+    return run<msg::Pose2D>(*p, role, topic, qos, rate, end, count, expect, wait_reader);
   } catch (const InputError& e) {
     std::fprintf(stderr, "topic_peer: error: %s\n", e.what());
     return 2;

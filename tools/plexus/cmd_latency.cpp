@@ -131,7 +131,7 @@ int run_pingpong(const PingOpts& o) {
   const rt::Transport transport = rt::parse_transport(o.transport, "--transport");
   // What carries the samples: shared memory only between two Fast DDS participants of this
   // host (Cyclone DDS stays on UDP, docs/runtime.md, Transports); the baseline uses the same.
-  const bool shm = transport == rt::Transport::shm && vendor == rt::Vendor::fast && peer_vendor == rt::Vendor::fast;
+  const bool shm = rt::fast_shared_memory(transport) && vendor == rt::Vendor::fast && peer_vendor == rt::Vendor::fast;
   const std::string qos_file = o.qos_file.empty() ? rt::default_qos_file() : o.qos_file;
   const auto qos = rt::QosProfiles::load(qos_file).get(o.profile);
   if (o.size < 0 || o.size > 65536)

@@ -110,7 +110,14 @@ void ArmChainDynamics::mass_matrix(const Eigen::VectorXd& q, Eigen::MatrixXd& m)
       f = spatial::force_to_parent(links_[static_cast<std::size_t>(j)].from_parent, f);
       m(i, j - 1) = m(j - 1, i) = f(kAngular);
     }
-    if (i > 0) {
+    if (i == 1) {
+      // The base link's composite inertia enters M only through its (Z, Z) entry (m(0, 0) in
+      // the next iteration): that entry of U M_c U^T alone, computed as the full product below
+      // computes it (the same operations on the same numbers).
+      spatial::Vector6 row;  // row Z of U M_c
+      for (int c = 0; c < 6; ++c) row(c) = spatial::force_to_parent(k.from_parent, k.composite.col(c))(kAngular);
+      links_[0].composite(kAngular, kAngular) += spatial::force_to_parent(k.from_parent, row)(kAngular);
+    } else if (i > 1) {
       // M_c,parent += U M_c U^T: U applied to the columns, then to the rows.
       spatial::Matrix6 half;
       for (int c = 0; c < 6; ++c) half.col(c) = spatial::force_to_parent(k.from_parent, k.composite.col(c));

@@ -109,6 +109,12 @@ VdcController::VdcController(const VdcParams& p) : params_(p), n_(p.model.dof())
     k.v.setZero(), k.vr.setZero(), k.dvr.setZero(), k.fr.setZero(), k.y.setZero();
     k.inertia = spatial::spatial_inertia(k.nominal);
     k.base_rotation.setIdentity();
+    // The constant part of {B_{i-1}} -> {B_i}: RotX(twist) and the origin (eq. (2)-(3)).
+    const double twist = i == 0 ? 0.0 : p.model.links[static_cast<std::size_t>(i - 1)].twist;
+    const double ct = std::cos(twist), st = std::sin(twist);
+    k.twist_rotation << 1.0, 0.0, 0.0, 0.0, ct, -st, 0.0, st, ct;
+    k.from_parent.origin =
+        Eigen::Vector3d(i == 0 ? 0.0 : p.model.links[static_cast<std::size_t>(i - 1)].length, 0.0, 0.0);
   }
   const Eigen::VectorXd z = Eigen::VectorXd::Zero(n_);
   qr_d_ = qr_dd_ = qr_ddd_ = qr_dddd_ = tau_od_ = ts_ = ts_rate_ = u_ = z;
@@ -142,14 +148,8 @@ void VdcController::link_torques(const Eigen::VectorXd& q, const Eigen::VectorXd
     rz << c, -s, 0.0, s, c, 0.0, 0.0, 0.0, 1.0;
     if (i == 0) {
       k.from_parent.rotation = rz;
-      k.from_parent.origin.setZero();
     } else {
-      const ArmLink& prev = m.links[static_cast<std::size_t>(i - 1)];
-      const double ct = std::cos(prev.twist), st = std::sin(prev.twist);
-      Eigen::Matrix3d rx;
-      rx << 1.0, 0.0, 0.0, 0.0, ct, -st, 0.0, st, ct;
-      k.from_parent.rotation = rx * rz;
-      k.from_parent.origin = Eigen::Vector3d(prev.length, 0.0, 0.0);
+      k.from_parent.rotation = k.twist_rotation * rz;
     }
     k.base_rotation = r_parent * k.from_parent.rotation;
     const spatial::Vector6 vr_in = spatial::velocity_to_child(k.from_parent, vr_parent);

@@ -1,6 +1,8 @@
 // Fast DDS 2.9 back end.
 #include "fast_participant.hpp"
 
+#include <optional>
+
 #include <fastdds/rtps/transport/UDPv4TransportDescriptor.h>
 #include <fastdds/rtps/transport/shared_mem/SharedMemTransportDescriptor.h>
 #include <fastrtps/utils/IPLocator.h>
@@ -30,6 +32,7 @@
 #include "../policy_names.hpp"
 #include "fast_endpoint_qos.hpp"
 #include "fast_security.hpp"
+#include "shm_ports.hpp"
 #include "plexus/base/clock.hpp"
 #include "plexus/msg/checked_fast_type.hpp"
 
@@ -388,12 +391,20 @@ FastParticipant::FastParticipant(const ParticipantOptions& o)
   // host id in the SHM locator) and UDP with any other: a Cyclone DDS peer ignores the SHM
   // locators, another host cannot reach them. RTPS messages are encrypted before either
   // transport carries them, so DDS Security works over both (docs/runtime.md, Transports).
-  // Only with transport shm, not by default (auto is UDP): a reader killed with
-  // SIGKILL and started again beside a running writer got nothing for 4 s in 2 of 5 rounds
-  // over the SHM transport (tests/fault/restarted_reader.sh; 0 of 5 over UDP).
+  // By default (auto) and with shm; not with udp. With shared memory, plexus keeps the
+  // participant off an SHM port that a writer still holds from a killed process
+  // (shm_ports.hpp: Fast DDS 2.9 would otherwise let a restarted reader take that port and
+  // never hear from such a writer again), under a host-wide lock until the participant exists.
   pq.transport().use_builtin_transports = false;
-  if (o.network.transport == Transport::shm)
+  std::optional<detail::ShmParticipantLock> shm_lock;
+  if (fast_shared_memory(o.network.transport)) {
     pq.transport().user_transports.push_back(std::make_shared<eprosima::fastdds::rtps::SharedMemTransportDescriptor>());
+    shm_lock.emplace();
+    const auto& pp = pq.wire_protocol().port;
+    pq.wire_protocol().participant_id =
+        detail::pick_shm_participant_id(static_cast<uint32_t>(o.domain_id), o.network.max_participants_per_host,
+                                        {pp.portBase, pp.domainIDGain, pp.participantIDGain, pp.offsetd3});
+  }
   auto udp = std::make_shared<eprosima::fastdds::rtps::UDPv4TransportDescriptor>();
   udp->interfaceWhiteList.push_back(o.network.interface_address);
   pq.transport().user_transports.push_back(udp);
@@ -424,6 +435,7 @@ FastParticipant::FastParticipant(const ParticipantOptions& o)
   auto* factory = fdds::DomainParticipantFactory::get_instance();
   participant_ = factory->create_participant(static_cast<fdds::DomainId_t>(o.domain_id), pq, discovery_.get(),
                                              fdds::StatusMask::none() << fdds::StatusMask::data_on_readers());
+  shm_lock.reset();  // its ports are open
   if (!participant_)
     throw std::runtime_error("Fast DDS: cannot create participant on domain " + std::to_string(o.domain_id) +
                              (o.security.enabled ? " with DDS Security (identity '" + o.security.identity + "')" : ""));
@@ -462,14 +474,18 @@ fdds::Topic* FastParticipant::topic(const msg::TypeSupport& type, const DdsNames
   return t;
 }
 
-bool FastParticipant::data_sharing(const DdsNames& names) const {
-  // Only when asked for (transport shm), not by default: a data-sharing reader reads the
+bool FastParticipant::data_sharing(const DdsNames& names, const QosProfile& qos) const {
+  // With shared memory (auto and shm): a data-sharing reader reads the
   // sample in the writer's pool, so what it has received but not yet taken is gone when
   // the writer is deleted. Measured: a reader taking 6 s after start got the writer's last
   // sample over UDP and over the SHM transport, and nothing with data sharing once the
   // writer's process had ended (docs/runtime.md, Transports). Plain types only (fixed size):
   // the pool holds samples of one known size; LatencyProbe (a bounded sequence) uses SHM.
-  if (options().network.transport != Transport::shm) return false;
+  // Volatile endpoints only: with data sharing, a transient-local reader that joined after the
+  // first write (the lockstep's step 0) missed that sample in 3 of about 35 main jobs, and in
+  // none of 30 without (docs/runtime.md, Transports); those go through the SHM transport.
+  if (!fast_shared_memory(options().network.transport)) return false;
+  if (qos.durability != QosProfile::Durability::volatile_) return false;
   const fdds::TypeSupport ts = participant_->find_type(names.type);
   return !ts.empty() && ts.is_plain();
 }
@@ -479,7 +495,7 @@ std::unique_ptr<WriterBackend> FastParticipant::create_writer(const msg::TypeSup
   const std::string& topic_name = names.topic;
   fdds::Topic* t = topic(type, names);
   fdds::DataWriterQos wq = publisher_->get_default_datawriter_qos();
-  apply_common(wq, qos, data_sharing(names));
+  apply_common(wq, qos, data_sharing(names, qos));
   // A lost sample is asked for when the next heartbeat arrives, and repaired 1 ms after the
   // request (NetworkOptions::reliable_heartbeat_s; Fast DDS's defaults: 3 s and 5 ms).
   wq.reliable_writer_qos().times.heartbeatPeriod = to_fast_duration(options().network.reliable_heartbeat_s);
@@ -496,7 +512,7 @@ std::unique_ptr<ReaderBackend> FastParticipant::create_reader(const msg::TypeSup
   const std::string& topic_name = names.topic;
   fdds::Topic* t = topic(type, names);
   fdds::DataReaderQos rq = subscriber_->get_default_datareader_qos();
-  apply_common(rq, qos, data_sharing(names));
+  apply_common(rq, qos, data_sharing(names, qos));
   // Asks for what a heartbeat says it missed 1 ms after it (default 5 ms): NetworkOptions.
   rq.reliable_reader_qos().times.heartbeatResponseDelay = eprosima::fastrtps::Duration_t(0, 1'000'000);
   auto r = std::make_unique<FastReader>(*this, topic_name, detail::local_endpoint(options().name, false, qos));

@@ -1,14 +1,12 @@
 // How DDS samples travel between processes of one host (docs/runtime.md, Transports).
 //
-//   auto  plexus's choice, the default: today UDPv4 on both vendors. Fast DDS's SHM
-//         transport is not the default because a reader killed with SIGKILL and started
-//         again beside a running writer got nothing for 4 s in 2 of 5 rounds over it
-//         (tests/fault/restarted_reader.sh), never over UDP.
+//   auto  plexus's choice, the default: shared memory between Fast DDS participants of one
+//         host (as shm below), UDPv4 everywhere else; Cyclone DDS stays on UDPv4 quietly.
 //   udp   UDPv4 only, on both vendors: every sample crosses the loopback interface.
 //   shm   Fast DDS: its shared-memory transport between Fast DDS participants of one host
 //         (UDPv4 to everything else: other hosts, Cyclone DDS peers), and data sharing for
-//         plain (fixed-size) types: a reader of the same host reads the sample in the
-//         writer's pool. Cyclone DDS cannot carry plexus's samples over iceoryx
+//         volatile endpoints of plain (fixed-size) types: a reader of the same host reads the
+//         sample in the writer's pool. Cyclone DDS cannot carry plexus's samples over iceoryx
 //         (docs/runtime.md says why), so a Cyclone participant says so on stderr once and
 //         stays on UDP.
 #pragma once
@@ -23,5 +21,9 @@ enum class Transport { automatic, udp, shm };
 /// file:line it came from).
 Transport parse_transport(std::string_view name, std::string_view origin = "--transport");
 const char* to_string(Transport t);
+
+/// True when a Fast DDS participant uses shared memory with its peers of this host
+/// (`auto` and `shm`).
+inline bool fast_shared_memory(Transport t) { return t != Transport::udp; }
 
 }  // namespace plexus::rt

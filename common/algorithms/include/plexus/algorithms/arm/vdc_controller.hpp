@@ -116,6 +116,7 @@ class VdcController {
  private:
   struct Link {
     spatial::Transform from_parent;  ///< {B_{i-1}} -> {B_i} (base frame for i = 0)
+    Eigen::Matrix3d twist_rotation;  ///< RotX(twist of link i-1), constant (i > 0)
     Eigen::Matrix3d base_rotation;   ///< 0_R_{B_i}
     spatial::Vector6 v, vr, dvr, fr;
     spatial::Regressor y;
