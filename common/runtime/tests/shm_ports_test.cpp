@@ -33,9 +33,7 @@ class ShmPorts : public ::testing::Test {
   std::string file(uint32_t port, const char* suffix = "") const {
     return dir_ + "/fastrtps_port" + std::to_string(port) + suffix;
   }
-  void touch(const std::string& path, std::size_t size = 0) const {
-    std::ofstream(path) << std::string(size, 'x');
-  }
+  void touch(const std::string& path, std::size_t size = 0) const { std::ofstream(path) << std::string(size, 'x'); }
   std::string dir_;
 };
 

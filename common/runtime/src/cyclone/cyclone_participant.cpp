@@ -308,11 +308,11 @@ std::string CycloneParticipant::config_xml(const NetworkOptions& net) {
          hb + "\" minsched=\"" + hb + "\">" + hb +
          "</HeartbeatInterval>"
          "<NackDelay>1 ms</NackDelay></Internal>"
-         // Receive buffers of 128 KiB, not 1 MiB (docs/runtime.md, "Memory: Cyclone DDS's receive buffers"): each receive
-         // thread fills a buffer front to back and allocates the next when it is full, so the
-         // process's resident memory climbs by the pages of its buffers until two of them have
-         // been written once, 1.5-2.5 MB over 10-20 minutes at the main job's rates. 64 KiB
-         // chunks still hold any UDP datagram (Cyclone reads at most 64 KiB into one).
+         // Receive buffers of 128 KiB, not 1 MiB (docs/runtime.md, "Memory: Cyclone DDS's receive buffers"): each
+         // receive thread fills a buffer front to back and allocates the next when it is full, so the process's
+         // resident memory climbs by the pages of its buffers until two of them have been written once, 1.5-2.5 MB over
+         // 10-20 minutes at the main job's rates. 64 KiB chunks still hold any UDP datagram (Cyclone reads at most 64
+         // KiB into one).
          "<Sizing><ReceiveBufferChunkSize>64 KiB</ReceiveBufferChunkSize>"
          "<ReceiveBufferSize>128 KiB</ReceiveBufferSize></Sizing>"
          "</Domain></CycloneDDS>";

@@ -32,9 +32,9 @@
 #include "../policy_names.hpp"
 #include "fast_endpoint_qos.hpp"
 #include "fast_security.hpp"
-#include "shm_ports.hpp"
 #include "plexus/base/clock.hpp"
 #include "plexus/msg/checked_fast_type.hpp"
+#include "shm_ports.hpp"
 
 namespace plexus::rt {
 namespace {
