@@ -391,7 +391,8 @@ FastParticipant::FastParticipant(const ParticipantOptions& o)
   // host id in the SHM locator) and UDP with any other: a Cyclone DDS peer ignores the SHM
   // locators, another host cannot reach them. RTPS messages are encrypted before either
   // transport carries them, so DDS Security works over both (docs/runtime.md, Transports).
-  // By default (auto) and with shm; not with udp. With shared memory, plexus keeps the
+  // Only with transport shm, not by default (docs/runtime.md, Transports: a SIGKILLed peer
+  // can abort a process through Fast DDS's interprocess mutexes). With it, plexus keeps the
   // participant off an SHM port that a writer still holds from a killed process
   // (shm_ports.hpp: Fast DDS 2.9 would otherwise let a restarted reader take that port and
   // never hear from such a writer again), under a host-wide lock until the participant exists.
@@ -475,7 +476,7 @@ fdds::Topic* FastParticipant::topic(const msg::TypeSupport& type, const DdsNames
 }
 
 bool FastParticipant::data_sharing(const DdsNames& names, const QosProfile& qos) const {
-  // With shared memory (auto and shm): a data-sharing reader reads the
+  // Only with transport shm: a data-sharing reader reads the
   // sample in the writer's pool, so what it has received but not yet taken is gone when
   // the writer is deleted. Measured: a reader taking 6 s after start got the writer's last
   // sample over UDP and over the SHM transport, and nothing with data sharing once the

@@ -1,7 +1,9 @@
 // How DDS samples travel between processes of one host (docs/runtime.md, Transports).
 //
-//   auto  plexus's choice, the default: shared memory between Fast DDS participants of one
-//         host (as shm below), UDPv4 everywhere else; Cyclone DDS stays on UDPv4 quietly.
+//   auto  plexus's choice, the default: UDPv4 on both vendors. Fast DDS's shared memory is
+//         not the default because a process SIGKILLed while it held one of its interprocess
+//         mutexes aborted a peer ("Interprocess mutex timeout when locking. Possible deadlock:
+//         owner died without unlocking?", fault.kill_each_service_fast; docs/runtime.md).
 //   udp   UDPv4 only, on both vendors: every sample crosses the loopback interface.
 //   shm   Fast DDS: its shared-memory transport between Fast DDS participants of one host
 //         (UDPv4 to everything else: other hosts, Cyclone DDS peers), and data sharing for
@@ -22,8 +24,7 @@ enum class Transport { automatic, udp, shm };
 Transport parse_transport(std::string_view name, std::string_view origin = "--transport");
 const char* to_string(Transport t);
 
-/// True when a Fast DDS participant uses shared memory with its peers of this host
-/// (`auto` and `shm`).
-inline bool fast_shared_memory(Transport t) { return t != Transport::udp; }
+/// True when a Fast DDS participant uses shared memory with its peers of this host (`shm`).
+inline bool fast_shared_memory(Transport t) { return t == Transport::shm; }
 
 }  // namespace plexus::rt
