@@ -1,4 +1,4 @@
-// topic_peer: a plexus process with one Pose2D writer or reader on a topic, with a QoS
+// topic_peer: a plexus process with one Pose2D (or LatencyProbe) writer or reader on a topic, with a QoS
 // profile, for the `plexus topic/record/replay` tests.
 //
 //   topic_peer pub --dds fast --domain 180 --topic tools/pose --profile sensor --rate 50 --duration 20
@@ -71,7 +71,7 @@ int run(plexus::rt::Participant& p, const std::string& role, const std::string& 
 
 int main(int argc, char** argv) {
   using namespace plexus;
-  CLI::App app{"topic_peer: one Pose2D writer or reader"};
+  CLI::App app{"topic_peer: one Pose2D (or LatencyProbe) writer or reader"};
   std::string role, dds = "fast", topic = "tools/pose", profile = "sensor", transport = "auto", type = "pose";
   int domain = 180, count = 0, expect = 0;
   double rate = 50, duration = 20;

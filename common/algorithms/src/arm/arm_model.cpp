@@ -56,6 +56,16 @@ ArmModel ArmModel::paper_2dof() {
   return m;
 }
 
+spatial::Transform ArmModel::fixed_link_frame(int i) const {
+  const ArmLink* prev = i == 0 ? nullptr : &links[static_cast<std::size_t>(i - 1)];
+  const double twist = prev ? prev->twist : 0.0;
+  const double ct = std::cos(twist), st = std::sin(twist);
+  spatial::Transform t;
+  t.rotation << 1.0, 0.0, 0.0, 0.0, ct, -st, 0.0, st, ct;
+  t.origin = Eigen::Vector3d(prev ? prev->length : 0.0, 0.0, 0.0);
+  return t;
+}
+
 ArmModel ArmModel::uniform_chain(int n) {
   ArmModel m;
   m.links.assign(static_cast<std::size_t>(n), ArmLink{0.5, 0.25, 4.0, 0.4});

@@ -30,12 +30,8 @@ ArmChainDynamics::ArmChainDynamics(const ArmModel& model) : n_(model.dof()) {
           spatial::link_parameters(model.payload_mass, Eigen::Vector3d(l.length, 0.0, 0.0), Eigen::Vector3d::Zero());
     }
     k.inertia = spatial::spatial_inertia(theta);
-    const double twist = i == 0 ? 0.0 : model.links[static_cast<std::size_t>(i - 1)].twist;
-    const double ct = std::cos(twist), st = std::sin(twist);
-    k.fixed_rotation << 1.0, 0.0, 0.0, 0.0, ct, -st, 0.0, st, ct;
-    k.from_parent.origin =
-        Eigen::Vector3d(i == 0 ? 0.0 : model.links[static_cast<std::size_t>(i - 1)].length, 0.0, 0.0);
-    k.from_parent.rotation = k.fixed_rotation;
+    k.from_parent = model.fixed_link_frame(i);
+    k.fixed_rotation = k.from_parent.rotation;
     k.composite.setZero();
     k.v.setZero(), k.a.setZero(), k.f.setZero(), k.xv.setZero(), k.xa.setZero(), k.iv.setZero();
     k.dv.setZero(), k.da.setZero(), k.df.setZero();

@@ -109,12 +109,10 @@ VdcController::VdcController(const VdcParams& p) : params_(p), n_(p.model.dof())
     k.v.setZero(), k.vr.setZero(), k.dvr.setZero(), k.fr.setZero(), k.y.setZero();
     k.inertia = spatial::spatial_inertia(k.nominal);
     k.base_rotation.setIdentity();
-    // The constant part of {B_{i-1}} -> {B_i}: RotX(twist) and the origin (eq. (2)-(3)).
-    const double twist = i == 0 ? 0.0 : p.model.links[static_cast<std::size_t>(i - 1)].twist;
-    const double ct = std::cos(twist), st = std::sin(twist);
-    k.twist_rotation << 1.0, 0.0, 0.0, 0.0, ct, -st, 0.0, st, ct;
-    k.from_parent.origin =
-        Eigen::Vector3d(i == 0 ? 0.0 : p.model.links[static_cast<std::size_t>(i - 1)].length, 0.0, 0.0);
+    // The constant part of {B_{i-1}} -> {B_i} (eq. (2)-(3)); link_torques() adds RotZ(q_i).
+    const spatial::Transform fixed = p.model.fixed_link_frame(i);
+    k.twist_rotation = fixed.rotation;
+    k.from_parent.origin = fixed.origin;
   }
   const Eigen::VectorXd z = Eigen::VectorXd::Zero(n_);
   qr_d_ = qr_dd_ = qr_ddd_ = qr_dddd_ = tau_od_ = ts_ = ts_rate_ = u_ = z;

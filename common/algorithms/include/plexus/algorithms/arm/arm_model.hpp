@@ -22,6 +22,8 @@
 
 #include <Eigen/Core>
 
+#include "plexus/algorithms/arm/spatial.hpp"
+
 namespace plexus::algorithms {
 
 /// One rigid link (paper 004, Table 1).
@@ -54,6 +56,10 @@ struct ArmModel {
   double payload_mass = 0.0;                ///< kg, point mass at the tip of the last link (>= 0)
 
   int dof() const { return static_cast<int>(links.size()); }
+
+  /// The constant part of {B_{i-1}} -> {B_i} (the joint angle q_i turns about z after it):
+  /// RotX(twist_{i-1}) and the origin (length_{i-1}, 0, 0); for i = 0, RotX(0) at the base.
+  spatial::Transform fixed_link_frame(int i) const;
 
   /// Throws std::invalid_argument ("arm_model: links[1].mass must be finite and > 0 (got -1)")
   /// unless: at least one link, as many joints as links, finite positive masses, lengths >= 0,
