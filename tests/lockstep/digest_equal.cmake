@@ -4,7 +4,8 @@
 # met in lockstep; a launch run whose expectations fail exits 1 and fails this test).
 # Arguments: PLEXUS, SCENARIO, OUT, DOMAIN, LAUNCH_ARGS (launch only), ARGS (both runs, e.g.
 # `--set|duration=1.2`), both "|"-separated; EXPECT_RC (optional); PROCESS (optional): a
-# process launch.json must list, as "NAME=PROGRAM" (a `process` group, for one).
+# process launch.json must list, as "NAME=PROGRAM" (a `process` group, for one); PARTICIPANTS
+# (optional): launch.json's participants_per_host.
 if(NOT DEFINED EXPECT_RC)
   set(EXPECT_RC 0)
 endif()
@@ -73,4 +74,12 @@ if(DEFINED PROCESS)
     message(FATAL_ERROR "launch.json: process '${process_name}' should run ${process_program}, found '${program}'")
   endif()
   message(STATUS "process ${process_name} ran ${program}")
+endif()
+if(DEFINED PARTICIPANTS)  # the participants per host plexus launch gave its processes
+  file(READ ${OUT}/launch/launch.json launch_json)
+  string(JSON participants ERROR_VARIABLE missing GET "${launch_json}" participants_per_host)
+  if(missing OR NOT participants EQUAL PARTICIPANTS)
+    message(FATAL_ERROR "launch.json: participants_per_host '${participants}', expected ${PARTICIPANTS}")
+  endif()
+  message(STATUS "participants per host: ${participants}")
 endif()

@@ -2,8 +2,8 @@
 # scenarios `plexus sim` accepts, whose every robot meets the paper's bounds (exit 0), in each
 # grouping (the `process` keys change processes, not results: one digest for the three);
 # deploy/scenarios/fleet_unicycles.yaml is its N = 50 output, unedited; bad arguments exit 2.
-# Leaves OUT/fleet_3_<grouping>.yaml and OUT/fleet_20_type.yaml for the lockstep tests (fixture
-# fleet_scenarios).
+# Leaves OUT/fleet_3_<grouping>.yaml, OUT/fleet_20_type.yaml and OUT/fleet_35_robot.yaml for
+# the lockstep tests (fixture fleet_scenarios).
 # Arguments: PLEXUS, GEN, COMMITTED, OUT.
 file(MAKE_DIRECTORY ${OUT})
 execute_process(COMMAND sh ${GEN} 50 type OUTPUT_VARIABLE generated RESULT_VARIABLE rc)
@@ -41,6 +41,11 @@ endforeach()
 execute_process(COMMAND sh ${GEN} 20 type 5 OUTPUT_FILE ${OUT}/fleet_20_type.yaml RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "fleet_unicycles.sh 20 type 5: exit ${rc}")
+endif()
+# And OUT/fleet_35_robot.yaml (2 s) for lockstep.fleet35_robot_*: 36 processes on one host.
+execute_process(COMMAND sh ${GEN} 35 robot 2 OUTPUT_FILE ${OUT}/fleet_35_robot.yaml RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "fleet_unicycles.sh 35 robot 2: exit ${rc}")
 endif()
 foreach(bad "0;type" "x;type" "3;bogus" "1000;type")
   execute_process(COMMAND sh ${GEN} ${bad} OUTPUT_QUIET ERROR_VARIABLE err RESULT_VARIABLE rc)

@@ -67,6 +67,7 @@ UnitSet make_units(const scenario::Scenario& sc, const UnitOptions& o) {
   for (const auto& p : plan(sc, "")) unknown.erase(p.name);
   if (!unknown.empty()) throw InputError("--vendor " + unknown.begin()->first + ": no such process");
   const int domain = o.domain >= 0 ? o.domain : sc.dds_domain;
+  const int participants = participants_per_host(sc);
   std::string interface_address, peers;
   if (!o.host.empty() && !sc.host_address.at(o.host).empty()) {
     interface_address = sc.host_address.at(o.host);
@@ -115,6 +116,8 @@ UnitSet make_units(const scenario::Scenario& sc, const UnitOptions& o) {
     // The scenario's transport (plexus launch passes it the same way); auto is every program's default.
     if (sc.dds_transport != "auto") args.insert(args.end(), {"--transport", sc.dds_transport});
     if (sc.dds_naming != "plexus") args.insert(args.end(), {"--naming", sc.dds_naming});
+    if (participants != kDefaultParticipantsPerHost)  // as plexus launch gives its processes
+      args.insert(args.end(), {"--max-participants", std::to_string(participants)});
     std::string exec;
     for (const auto& a : args) exec += (exec.empty() ? "" : " ") + exec_argument(a);
     std::ostringstream u;

@@ -35,6 +35,10 @@ void add_dds_options(CLI::App* app, DdsOptions& o) {
   app->add_option("--transport", o.transport, "auto, udp or shm (docs/runtime.md, Transports)")->capture_default_str();
   app->add_option("--naming", o.naming, "topic and type names on the wire: plexus or ros2 (docs/ros2.md)")
       ->capture_default_str();
+  app->add_option("--max-participants", o.max_participants,
+                  "DDS participants of the domain one host may hold, as the deployment's (docs/runtime.md)")
+      ->capture_default_str()
+      ->check(CLI::Range(1, kMaxParticipantsPerHost));
   rt::add_security_options(*app, o.security, o.identity, o.governance);
 }
 
@@ -46,6 +50,7 @@ std::unique_ptr<rt::Participant> make_participant(const DdsOptions& o, const std
   po.name = name;
   po.network.interface_address = o.interface_address;
   po.network.transport = rt::parse_transport(o.transport);
+  po.network.max_participants_per_host = o.max_participants;
   po.naming = rt::parse_naming(o.naming);
   po.network.peers.clear();
   std::stringstream ss(o.peers);

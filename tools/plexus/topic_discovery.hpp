@@ -18,11 +18,12 @@ namespace plexus::cli {
 struct DdsOptions {
   std::string dds = "fast";
   int domain = 0;
-  std::string interface_address = "127.0.0.1";  ///< the one interface DDS uses
-  std::string peers = "127.0.0.1";              ///< comma-separated unicast discovery peers
-  std::string transport = "auto";               ///< auto | udp | shm (plexus/runtime/transport.hpp)
-  std::string naming = "plexus";                ///< plexus | ros2 (plexus/runtime/naming.hpp)
-  std::string security, identity, governance;   ///< DDS Security (plexus/runtime/security_cli.hpp)
+  std::string interface_address = "127.0.0.1";         ///< the one interface DDS uses
+  std::string peers = "127.0.0.1";                     ///< comma-separated unicast discovery peers
+  std::string transport = "auto";                      ///< auto | udp | shm (plexus/runtime/transport.hpp)
+  std::string naming = "plexus";                       ///< plexus | ros2 (plexus/runtime/naming.hpp)
+  int max_participants = kDefaultParticipantsPerHost;  ///< rt::NetworkOptions::max_participants_per_host
+  std::string security, identity, governance;          ///< DDS Security (plexus/runtime/security_cli.hpp)
 };
 void add_dds_options(CLI::App* app, DdsOptions& o);
 /// A participant named `name`; under --security its identity is --identity, else `identity`

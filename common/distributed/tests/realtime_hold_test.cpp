@@ -341,6 +341,19 @@ TEST_P(RealtimeHold, EstimatorUsesALateSampleAtItsOwnStep) {
   EXPECT_GT(run.report().deferred_steps, 0u);
 }
 
+// A process grouped by type hosts many components and is named after all of them: its
+// heartbeat topic is cut to the discovery limit, and the cut name must still be a topic
+// Cyclone DDS creates (a '~' in it stopped a 50-robot fleet by type at start: "cannot create
+// topic 'health/component_host_r1_reference...~8c18...': Bad Parameter"). Domain 154.
+TEST_P(RealtimeHold, HeartbeatTopicOfAProcessWithManyComponentsIsCreated) {
+  std::string service = "component_host ";
+  for (int r = 1; r <= 50; ++r) service += "r" + std::to_string(r) + "_reference,";
+  const std::string topic = health_topic(service);
+  EXPECT_LE(topic.size() + rt::kRos2TopicPrefix.size(), rt::Participant::kMaxDiscoveryName);
+  auto p = participant(GetParam(), 154, service);
+  EXPECT_NO_THROW(p->publisher<msg::Heartbeat>(topic, profiles().get("health"))) << topic;
+}
+
 INSTANTIATE_TEST_SUITE_P(Dds, RealtimeHold, ::testing::Values(rt::Vendor::fast, rt::Vendor::cyclone), vendor_name);
 
 }  // namespace

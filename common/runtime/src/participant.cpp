@@ -1,5 +1,8 @@
 #include "plexus/runtime/participant.hpp"
 
+#include <algorithm>
+#include <cctype>
+
 #include "cyclone/cyclone_participant.hpp"
 #include "fastdds/fast_participant.hpp"
 #include "plexus/base/bounded_name.hpp"
@@ -10,8 +13,11 @@ namespace plexus::rt {
 std::unique_ptr<Participant> Participant::create(const ParticipantOptions& options) {
   if (options.domain_id < 0 || options.domain_id > 232)
     throw InputError("--domain: DDS domain id must be in 0..232, got " + std::to_string(options.domain_id));
-  if (options.network.max_participants_per_host < 1 || options.network.max_participants_per_host > 120)
-    throw InputError("network: max_participants_per_host must be in 1..120");
+  if (options.network.max_participants_per_host < 1 ||
+      options.network.max_participants_per_host > kMaxParticipantsPerHost)
+    throw InputError("--max-participants: participants per host must be in 1.." +
+                     std::to_string(kMaxParticipantsPerHost) + ", got " +
+                     std::to_string(options.network.max_participants_per_host));
   if (options.security.enabled)
     check_security_files(options.security, "DDS Security of participant '" + options.name + "'");
   if (!(options.network.reliable_heartbeat_s >= 0.001 && options.network.reliable_heartbeat_s <= 10.0))
@@ -30,6 +36,18 @@ DdsNames Participant::wire_names(const msg::TypeSupport& type, const std::string
       throw InputError((n == &names.topic ? "topic name '" : "type name '") + *n + "' is " + std::to_string(n->size()) +
                        " bytes; DDS discovery between the vendors carries at most " +
                        std::to_string(kMaxDiscoveryName) + " (Fast DDS 2.9 drops longer ones)");
+  // Cyclone DDS 0.10 takes only letters, digits, '_' and '/' in a topic name, not starting
+  // with a digit (dds_topic.c, is_valid_name); Fast DDS takes more. Refused on both, so a name
+  // that works with one vendor works in a mixed deployment too.
+  const std::string& t = names.topic;
+  const bool valid =
+      !t.empty() && !std::isdigit(static_cast<unsigned char>(t[0])) && std::all_of(t.begin(), t.end(), [](char c) {
+        return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '/';
+      });
+  if (!valid)
+    throw InputError("topic name '" + t +
+                     "': DDS topic names between the vendors hold letters, digits, '_' and '/' only, and do not "
+                     "start with a digit (Cyclone DDS refuses others)");
   return names;
 }
 

@@ -130,6 +130,30 @@ TEST(DiscoveryNames, LongTopicRefusedAndLongParticipantNameCut) {
   }
 }
 
+// A topic name one vendor refuses (Cyclone DDS takes letters, digits, '_' and '/') is refused
+// on both with one line, so a name never works with one vendor and fails in a mixed deployment.
+TEST(DiscoveryNames, TopicNameWithACharacterOneVendorRefusesIsRefusedOnBoth) {
+  for (const auto& [vendor, domain] : {std::pair{Vendor::fast, 152}, std::pair{Vendor::cyclone, 153}}) {
+    ParticipantOptions o;
+    o.vendor = vendor;
+    o.domain_id = domain;
+    auto p = Participant::create(o);
+    QosProfile q;
+    q.name = "t";
+    EXPECT_NO_THROW(p->publisher<msg::Pose2D>("r_1/pose_2D", q));
+    for (const std::string bad : {"r1/pose~x", "r1/pose-x", "r1.pose", "1r/pose", "r1 pose"}) {
+      try {
+        p->publisher<msg::Pose2D>(bad, q);
+        ADD_FAILURE() << "topic name '" << bad << "' was accepted";
+      } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("topic name '" + bad + "': DDS topic names between the vendors"),
+                  std::string::npos)
+            << e.what();
+      }
+    }
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(
     Vendors, NamingOnTheWire,
     ::testing::Values(NamingPair{Vendor::fast, Vendor::fast, 167}, NamingPair{Vendor::cyclone, Vendor::cyclone, 168},

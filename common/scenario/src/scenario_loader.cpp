@@ -268,6 +268,9 @@ struct Loader {
       sc.dds_naming = dds.optional<std::string>("naming", "plexus");
       if (sc.dds_naming != "plexus" && sc.dds_naming != "ros2")
         dds.fail("naming", "expected plexus or ros2, got '" + sc.dds_naming + "'");
+      sc.dds_participants_per_host = dds.optional<int>("participants_per_host", sc.dds_participants_per_host);
+      if (sc.dds_participants_per_host < 1 || sc.dds_participants_per_host > kMaxParticipantsPerHost)
+        dds.fail("participants_per_host", "must be in 1.." + std::to_string(kMaxParticipantsPerHost));
       dds.reject_unknown();
     }
     if (top.has("security")) sc.security = load_security_section(top, sc.base_dir);

@@ -19,6 +19,10 @@ void ServiceDdsOptions::add_to(CLI::App& app) {
   app.add_option(
       "--transport", transport,
       "auto (today UDP), udp, or shm (Fast DDS: shared memory with same-host Fast DDS peers, else UDP) (default auto)");
+  app.add_option("--max-participants", max_participants,
+                 "DDS participants of the domain one host may hold, which discovery probes on each peer; the same "
+                 "for every process of a deployment (default 32; docs/runtime.md)")
+      ->check(CLI::Range(1, kMaxParticipantsPerHost));
   app.add_option("--naming", naming,
                  "Topic and type names on the wire: plexus or ros2 (docs/ros2.md) (default plexus)");
   rt::add_security_options(app, security, identity, governance);
@@ -32,6 +36,7 @@ rt::ParticipantOptions ServiceDdsOptions::participant(const std::string& default
   po.name = service.empty() ? default_name : service;
   po.network.interface_address = interface_address;
   po.network.transport = rt::parse_transport(transport);
+  po.network.max_participants_per_host = max_participants;
   po.naming = rt::parse_naming(naming);
   std::set<std::string> unique;
   std::stringstream ss(peers);

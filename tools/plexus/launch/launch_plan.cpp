@@ -188,6 +188,20 @@ std::vector<Process> plan(const scenario::Scenario& sc, const std::string& host)
   return procs;
 }
 
+int participants_per_host(const scenario::Scenario& sc) {
+  std::size_t busiest = 0;
+  if (sc.hosts.empty()) busiest = plan(sc, "").size();
+  for (const auto& h : sc.hosts) busiest = std::max(busiest, plan(sc, h).size());
+  const int need = static_cast<int>(busiest) + kParticipantsBesideProcesses;
+  if (need > kMaxParticipantsPerHost)
+    throw InputError("dds.participants_per_host: a host of this scenario runs " + std::to_string(busiest) +
+                     " processes, and a DDS domain holds at most " + std::to_string(kMaxParticipantsPerHost) +
+                     " participants per host (with " + std::to_string(kParticipantsBesideProcesses) +
+                     " for the launcher and tools): group services into fewer processes (`process`, "
+                     "docs/scenarios.md) or spread them over hosts");
+  return std::max(sc.dds_participants_per_host, need);
+}
+
 YAML::Node part_document(const scenario::Scenario& sc, const Process& p) {
   const YAML::Node& r = sc.resolved;
   YAML::Node part(YAML::NodeType::Map);

@@ -48,6 +48,16 @@ struct Process {
 /// or a group takes another service's name.
 std::vector<Process> plan(const scenario::Scenario& sc, const std::string& host);
 
+/// Participants a host needs beside its processes: the launcher's, foxglove_bridge's, and room
+/// for the tools a user attaches to a run (plexus topic, record, a second monitor).
+inline constexpr int kParticipantsBesideProcesses = 6;
+
+/// dds.participants_per_host, raised to what the busiest host needs: its processes and
+/// kParticipantsBesideProcesses (docs/runtime.md, "Participants per host"). From the scenario
+/// alone, so that every host of a run (over ssh too) derives the same value. Throws
+/// InputError when that passes kMaxParticipantsPerHost.
+int participants_per_host(const scenario::Scenario& sc);
+
 /// A process's part of the scenario, as a document its executable loads (--part): the
 /// top-level settings, its own robots or services (their resolved sections, derived seeds
 /// written in, `host` left out) and `inputs:`, the schedule (period, stage, QoS profile) of

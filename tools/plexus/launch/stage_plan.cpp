@@ -54,6 +54,7 @@ void load_launch_scenario(LaunchOptions& o, LaunchPlan& plan) {
 /// Loopback, or this host's address with every host of the scenario as a peer.
 rt::NetworkOptions network_of(const LaunchOptions& o, const scenario::Scenario& sc) {
   rt::NetworkOptions net;
+  net.max_participants_per_host = cli::participants_per_host(sc);
   net.transport = rt::parse_transport(sc.dds_transport, o.scenario + ": dds.transport");
   if (!o.host.empty() && !sc.host_address.at(o.host).empty()) {
     net.interface_address = sc.host_address.at(o.host);

@@ -79,24 +79,29 @@ std::string write_part(const std::filesystem::path& dir, const scenario::Scenari
   return part_file;
 }
 
+/// The DDS options every child takes alike (ServiceDdsOptions; plexus replay's the same).
+std::vector<std::string> dds_args(const LaunchPlan& plan, const std::string& vendor) {
+  const scenario::Scenario& sc = plan.sc;
+  return {"--dds",      vendor,        "--domain",           std::to_string(plan.domain),
+          "--qos-file", plan.qos_file, "--interface",        plan.net.interface_address,
+          "--peers",    plan.peers,    "--transport",        sc.dds_transport,
+          "--naming",   sc.dds_naming, "--max-participants", std::to_string(plan.net.max_participants_per_host)};
+}
+
 /// The command line of `p`: a service with its part, or `plexus replay` of a robot's topics.
 std::vector<std::string> process_args(const LaunchOptions& o, const LaunchPlan& plan, const Process& p,
                                       const std::string& part_file) {
   const scenario::Scenario& sc = plan.sc;
-  const std::string& address = plan.net.interface_address;
-  std::vector<std::string> args{"--part", part_file, "--service", p.service()};
-  args.insert(args.end(), {"--domain", std::to_string(plan.domain), "--qos-file", plan.qos_file, "--timeout",
-                           std::to_string(o.timeout), "--interface", address, "--peers", plan.peers, "--transport",
-                           sc.dds_transport, "--naming", sc.dds_naming});
-  args.insert(args.end(), {"--dds", p.vendor, "--mode", plan.realtime ? "realtime" : "lockstep"});
+  std::vector<std::string> args{"--part", part_file, "--service", p.service(), "--timeout", std::to_string(o.timeout)};
+  const std::vector<std::string> dds = dds_args(plan, p.vendor);
+  args.insert(args.end(), dds.begin(), dds.end());
+  args.insert(args.end(), {"--mode", plan.realtime ? "realtime" : "lockstep"});
   if (plan.realtime) args.push_back("--start-signal");
   if (plan.realtime && p.priority > 0) args.insert(args.end(), {"--priority", std::to_string(p.priority)});
   if (plan.realtime && p.cpu >= 0) args.insert(args.end(), {"--cpu", std::to_string(p.cpu)});
   if (p.program == "replay") {  // plexus replay of the robot's topics, not a service
     args = replay_args(sc, p);
-    args.insert(args.end(),
-                {"--dds", p.vendor, "--domain", std::to_string(plan.domain), "--qos-file", plan.qos_file, "--interface",
-                 address, "--peers", plan.peers, "--transport", sc.dds_transport, "--naming", sc.dds_naming});
+    args.insert(args.end(), dds.begin(), dds.end());
   }
   const auto security_args = plan.security.args(p.name);
   args.insert(args.end(), security_args.begin(), security_args.end());
@@ -111,13 +116,8 @@ void start_foxglove_bridge(const LaunchOptions& o, const LaunchPlan& plan, Launc
   const std::string log = (std::filesystem::path(run.run_dir) / "logs" / "foxglove_bridge.log").string();
   const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd < 0) throw InputError(log + ": cannot create the bridge's log");
-  std::vector<std::string> args{"--dds",       plan.vendor,
-                                "--domain",    std::to_string(plan.domain),
-                                "--interface", plan.net.interface_address,
-                                "--peers",     plan.peers,
-                                "--transport", plan.sc.dds_transport,
-                                "--naming",    plan.sc.dds_naming,
-                                "--port",      std::to_string(o.foxglove)};
+  std::vector<std::string> args = dds_args(plan, plan.vendor);
+  args.insert(args.end(), {"--port", std::to_string(o.foxglove)});
   try {
     run.foxglove_bridge = spawn("foxglove_bridge", args, fd);
   } catch (const std::exception& e) {

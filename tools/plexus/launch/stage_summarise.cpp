@@ -9,9 +9,11 @@
 namespace plexus::cli {
 namespace {
 
-/// launch.json's processes (what this launcher started), and the security of their participants.
+/// launch.json's processes (what this launcher started), the participants per host they were
+/// given (dds.participants_per_host, raised to what the run needs), and their security.
 void add_processes(const LaunchPlan& plan, RunSummary& summary) {
   summary.extra["processes"] = process_table(plan.procs);
+  summary.extra["participants_per_host"] = plan.net.max_participants_per_host;
   if (plan.security.enabled) summary.extra["security"] = plan.security.to_json();
 }
 

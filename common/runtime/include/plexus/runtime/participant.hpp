@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "plexus/base/clock.hpp"
+#include "plexus/base/participants_per_host.hpp"
 #include "plexus/msg/messages.hpp"
 #include "plexus/runtime/discovery.hpp"
 #include "plexus/runtime/endpoint_backend.hpp"
@@ -33,8 +34,10 @@ struct NetworkOptions {
   std::string interface_address = "127.0.0.1";
   /// Unicast discovery peers (addresses). Default: the interface itself.
   std::vector<std::string> peers = {"127.0.0.1"};
-  /// Participants per host that discovery probes on each peer (RTPS participant ids 0..n-1).
-  int max_participants_per_host = 32;
+  /// Participants of the domain one host may hold: this participant takes a free RTPS
+  /// participant id (index) in 0..n-1, and discovery probes those n on each peer. Every
+  /// process of a deployment should have the same value (--max-participants).
+  int max_participants_per_host = kDefaultParticipantsPerHost;
   /// Period of a reliable writer's heartbeat while a reader has not acknowledged a sample.
   /// A reader asks for a lost sample only when a heartbeat tells it what it missed, and it
   /// delivers in order, so a loss holds a reliable stream up for about this long: a lockstep
@@ -115,7 +118,8 @@ class Participant {
 
  protected:
   explicit Participant(ParticipantOptions options) : options_(std::move(options)) {}
-  /// dds_names(), refused (InputError) when a name is longer than kMaxDiscoveryName.
+  /// dds_names(), refused (InputError) when a name is longer than kMaxDiscoveryName or a topic
+  /// name holds a character one vendor refuses (letters, digits, '_' and '/' pass).
   DdsNames wire_names(const msg::TypeSupport& type, const std::string& topic) const;
   /// The vendor's endpoints, under the names they have on the wire.
   virtual std::unique_ptr<WriterBackend> create_writer(const msg::TypeSupport& type, const DdsNames& names,

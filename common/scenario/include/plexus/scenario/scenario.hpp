@@ -13,6 +13,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "plexus/base/participants_per_host.hpp"
 #include "plexus/scenario/component.hpp"
 #include "plexus/scenario/expectation.hpp"
 #include "plexus/scenario/metric.hpp"
@@ -145,6 +146,10 @@ struct Scenario {
   /// dds.naming: "plexus" | "ros2", topic and type names on the wire (plexus/runtime/naming.hpp,
   /// docs/ros2.md); every process of the scenario the same.
   std::string dds_naming = "plexus";
+  /// dds.participants_per_host: DDS participants of the domain one host may hold, which
+  /// discovery probes on each peer (rt::NetworkOptions::max_participants_per_host). `plexus
+  /// launch` raises it when a host runs more processes than it allows (docs/runtime.md).
+  int dds_participants_per_host = kDefaultParticipantsPerHost;
   std::vector<std::string> hosts;                   ///< in document order; the first runs the clock
   std::map<std::string, std::string> host_address;  ///< host -> address ("" if not given)
   /// How `plexus launch` reaches a host over ssh (hosts.<h>.ssh, workdir, plexus): empty

@@ -18,13 +18,15 @@ struct ServiceDdsOptions {
   std::string service;   ///< participant and heartbeat name; empty: the caller's default
   std::string interface_address = "127.0.0.1";
   std::string peers = "127.0.0.1";
-  std::string transport = "auto";  ///< auto | udp | shm (plexus/runtime/transport.hpp)
-  std::string naming = "plexus";   ///< plexus | ros2 (plexus/runtime/naming.hpp)
-  std::string security;            ///< PKI folder: DDS Security on (docs/security.md); empty: off
-  std::string identity;            ///< identity in <security>/identities, or a folder; empty: the default
-  std::string governance;          ///< governance document; empty: <security>/governance.p7s
+  std::string transport = "auto";                      ///< auto | udp | shm (plexus/runtime/transport.hpp)
+  std::string naming = "plexus";                       ///< plexus | ros2 (plexus/runtime/naming.hpp)
+  int max_participants = kDefaultParticipantsPerHost;  ///< rt::NetworkOptions::max_participants_per_host
+  std::string security;                                ///< PKI folder: DDS Security on (docs/security.md); empty: off
+  std::string identity;    ///< identity in <security>/identities, or a folder; empty: the default
+  std::string governance;  ///< governance document; empty: <security>/governance.p7s
 
-  /// --dds, --domain, --qos-file, --service, --interface, --peers, --transport, --naming, --security,
+  /// --dds, --domain, --qos-file, --service, --interface, --peers, --transport, --max-participants, --naming,
+  /// --security,
   /// --identity, --governance.
   void add_to(CLI::App& app);
   /// The participant: vendor, domain, network, security; named `service`, else
