@@ -7,10 +7,10 @@
 # after such a restart (each reported lost); a restarted observer then never saw its inputs
 # again.
 # Usage: restarted_reader.sh BIN VENDOR DOMAIN [TRANSPORT] [TYPE]  (TRANSPORT: auto, udp or
-# shm; TYPE: pose, a plain type that Fast DDS's shared memory hands over by data sharing, or
-# probe, a bounded sequence that goes through the SHM transport's ports. Over those ports,
-# Fast DDS 2.9 failed 4 of 10 rounds until plexus chose the restarted participant's id
-# itself: common/runtime/src/fastdds/shm_ports.hpp, docs/runtime.md, Transports)
+# shm; TYPE: pose (Pose2D) or probe (LatencyProbe, a bounded sequence). Over the SHM
+# transport's ports (auto and shm on Fast DDS), Fast DDS 2.9 failed 4 of 10 rounds until
+# plexus chose the restarted participant's id itself: common/runtime/src/fastdds/shm_ports.hpp,
+# docs/runtime.md, Transports)
 set -u
 bin=$1 vendor=$2 domain=$3 transport=${4:-auto} type=${5:-pose}
 peer=("$bin/topic_peer" --dds "$vendor" --domain "$domain" --topic fault/restarted --profile state --transport "$transport" --type "$type")

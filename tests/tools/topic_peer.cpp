@@ -6,9 +6,7 @@
 //   topic_peer sub ... --expect 100     (exit 1 unless 100 samples arrived; ends once they have)
 //
 // pub publishes x = k, y = 2k, theta = 0.5 (k = 1, 2, ...) until --count or --duration.
-// --type probe uses LatencyProbe (a bounded sequence, not a plain type) instead of Pose2D:
-// under Fast DDS's shared memory its samples go through the SHM transport's ports, where a
-// Pose2D goes through data sharing (docs/runtime.md, Transports).
+// --type probe uses LatencyProbe (a bounded sequence, not a plain type) instead of Pose2D.
 #include <CLI/CLI.hpp>
 
 #include <atomic>

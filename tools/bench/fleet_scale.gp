@@ -52,7 +52,7 @@ unset label 1
 unset logscale y
 
 set title "realtime, 100 Hz, 20 s runs: deadline misses + stale input reads"
-set xrange [0:55]
+set xrange [0:105]
 set key bottom right
 set ylabel "overruns + stale reads (all processes)"
 set logscale y

@@ -19,6 +19,8 @@
 #   DURATION=10              s of simulated time per run (realtime: of wall time), given to the
 #                            generator (a short run has its own expectations: fleet_unicycles.sh)
 #   DOMAIN=195               DDS domain of the runs (issue 15: 195-199 for this part)
+#   TRANSPORT=               auto | udp | shm, given to plexus launch --transport (empty: the
+#                            scenario's, auto)
 #   BIN=build/bin            where plexus is
 #   KEEP=                    non-empty: keep the run folders (under OUT.csv's folder, runs-*)
 #
@@ -60,6 +62,7 @@ for vendor in $VENDORS; do
       utc=$(date -u +%Y-%m-%dT%H:%M:%SZ)
       args=(launch "$scen" --json --quiet --dds "$vendor" --domain "$DOMAIN" --out "$run")
       [ "$mode" = realtime ] && args+=(--set clock.mode=realtime)
+      [ -n "${TRANSPORT:-}" ] && args+=(--transport "$TRANSPORT")
       "$bin/plexus" "${args[@]}" > "$work/out.json" 2> "$work/err.txt"
       rc=$?
       lj=$run/launch.json

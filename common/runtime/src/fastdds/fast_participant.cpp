@@ -54,10 +54,9 @@ std::string policy_name(fdds::QosPolicyId_t id) {
   return detail::standard_policy_name(static_cast<int>(id));
 }
 
-// The QoS of a profile, applied to a writer or a reader the same way. `data_sharing`: the
-// endpoint may hand samples over through shared memory to peers of this host that do too.
+// The QoS of a profile, applied to a writer or a reader the same way.
 template <class Q>
-void apply_common(Q& q, const QosProfile& p, bool data_sharing) {
+void apply_common(Q& q, const QosProfile& p) {
   q.reliability().kind = p.reliability == QosProfile::Reliability::reliable ? fdds::RELIABLE_RELIABILITY_QOS
                                                                             : fdds::BEST_EFFORT_RELIABILITY_QOS;
   q.reliability().max_blocking_time = to_fast_duration(p.max_blocking_time_s);
@@ -80,15 +79,13 @@ void apply_common(Q& q, const QosProfile& p, bool data_sharing) {
   // Latency budget 0 means "no budget" (zero), not infinite as for the other durations.
   q.latency_budget().duration =
       p.latency_budget_s > 0 ? to_fast_duration(p.latency_budget_s) : eprosima::fastrtps::Duration_t(0, 0);
-  // Data sharing (the writer's history in shared memory, read in place by a reader of the
-  // same host) only with transport shm and for plain types (data_sharing()): Fast DDS
-  // then chooses per peer (AUTO): a Cyclone DDS reader, one on another host, or any endpoint
-  // with DDS Security (Fast DDS turns AUTO off for a protected topic) gets RTPS messages.
-  // XCDR1 on the wire either way.
-  if (data_sharing)
-    q.data_sharing().automatic();
-  else
-    q.data_sharing().off();
+  // Data sharing off: same-host Fast DDS peers use the SHM transport (transport.hpp), RTPS
+  // messages as over UDP. Fast DDS 2.9's data sharing gives every reader a listening thread
+  // of its own: a 50-robot fleet's controllers' process (100 readers) took p50 240 ms of its
+  // 10 ms tick with it, 1.9 ms without; a data-sharing reader misses a transient-local
+  // writer's first sample when it matches after the write, and its listening thread locks an
+  // interprocess mutex with no recovery from a dead owner (docs/runtime.md, Transports).
+  q.data_sharing().off();
   auto& repr = [&q]() -> fdds::DataRepresentationQosPolicy& {
     if constexpr (requires { q.representation(); })
       return q.representation();  // DataWriterQos
@@ -386,13 +383,12 @@ FastParticipant::FastParticipant(const ParticipantOptions& o)
   fdds::DomainParticipantQos pq;
   pq.name(o.name);
   // Transport: UDPv4 on the configured interface only (loopback by default), and with
-  // NetworkOptions::transport shm, Fast DDS's shared-memory transport beside it. A peer
+  // NetworkOptions::transport auto or shm, Fast DDS's shared-memory transport beside it. A peer
   // announces both; Fast DDS uses shared memory with a Fast DDS peer of the same host (same
   // host id in the SHM locator) and UDP with any other: a Cyclone DDS peer ignores the SHM
   // locators, another host cannot reach them. RTPS messages are encrypted before either
   // transport carries them, so DDS Security works over both (docs/runtime.md, Transports).
-  // Only with transport shm, not by default (docs/runtime.md, Transports: a SIGKILLed peer
-  // can abort a process through Fast DDS's interprocess mutexes). With it, plexus keeps the
+  // With it (`auto` and `shm`; docs/runtime.md, Transports), plexus keeps the
   // participant off an SHM port that a writer still holds from a killed process
   // (shm_ports.hpp: Fast DDS 2.9 would otherwise let a restarted reader take that port and
   // never hear from such a writer again), under a host-wide lock until the participant exists.
@@ -475,28 +471,12 @@ fdds::Topic* FastParticipant::topic(const msg::TypeSupport& type, const DdsNames
   return t;
 }
 
-bool FastParticipant::data_sharing(const DdsNames& names, const QosProfile& qos) const {
-  // Only with transport shm: a data-sharing reader reads the
-  // sample in the writer's pool, so what it has received but not yet taken is gone when
-  // the writer is deleted. Measured: a reader taking 6 s after start got the writer's last
-  // sample over UDP and over the SHM transport, and nothing with data sharing once the
-  // writer's process had ended (docs/runtime.md, Transports). Plain types only (fixed size):
-  // the pool holds samples of one known size; LatencyProbe (a bounded sequence) uses SHM.
-  // Volatile endpoints only: with data sharing, a transient-local reader that joined after the
-  // first write (the lockstep's step 0) missed that sample in 3 of about 35 main jobs, and in
-  // none of 30 without (docs/runtime.md, Transports); those go through the SHM transport.
-  if (!fast_shared_memory(options().network.transport)) return false;
-  if (qos.durability != QosProfile::Durability::volatile_) return false;
-  const fdds::TypeSupport ts = participant_->find_type(names.type);
-  return !ts.empty() && ts.is_plain();
-}
-
 std::unique_ptr<WriterBackend> FastParticipant::create_writer(const msg::TypeSupport& type, const DdsNames& names,
                                                               const QosProfile& qos) {
   const std::string& topic_name = names.topic;
   fdds::Topic* t = topic(type, names);
   fdds::DataWriterQos wq = publisher_->get_default_datawriter_qos();
-  apply_common(wq, qos, data_sharing(names, qos));
+  apply_common(wq, qos);
   // A lost sample is asked for when the next heartbeat arrives, and repaired 1 ms after the
   // request (NetworkOptions::reliable_heartbeat_s; Fast DDS's defaults: 3 s and 5 ms).
   wq.reliable_writer_qos().times.heartbeatPeriod = to_fast_duration(options().network.reliable_heartbeat_s);
@@ -513,7 +493,7 @@ std::unique_ptr<ReaderBackend> FastParticipant::create_reader(const msg::TypeSup
   const std::string& topic_name = names.topic;
   fdds::Topic* t = topic(type, names);
   fdds::DataReaderQos rq = subscriber_->get_default_datareader_qos();
-  apply_common(rq, qos, data_sharing(names, qos));
+  apply_common(rq, qos);
   // Asks for what a heartbeat says it missed 1 ms after it (default 5 ms): NetworkOptions.
   rq.reliable_reader_qos().times.heartbeatResponseDelay = eprosima::fastrtps::Duration_t(0, 1'000'000);
   auto r = std::make_unique<FastReader>(*this, topic_name, detail::local_endpoint(options().name, false, qos));

@@ -46,8 +46,6 @@ class FastParticipant final : public Participant, public detail::EventOwner {
  private:
   class Discovery;
   eprosima::fastdds::dds::Topic* topic(const msg::TypeSupport& type, const DdsNames& names);
-  /// Whether endpoints of this (registered) type may use data sharing (NetworkOptions::transport).
-  bool data_sharing(const DdsNames& names, const QosProfile& qos) const;
 
   std::unique_ptr<Discovery> discovery_;
   eprosima::fastdds::dds::DomainParticipant* participant_ = nullptr;
