@@ -18,8 +18,8 @@ void ServiceDdsOptions::add_to(CLI::App& app) {
   app.add_option("--peers", peers, "Comma-separated unicast discovery peers (default 127.0.0.1)");
   app.add_option(
       "--transport", transport,
-      "auto, udp or shm: auto and shm give Fast DDS shared memory with same-host Fast DDS peers, UDP to others; udp "
-      "only UDP (default auto; docs/runtime.md, Transports)");
+      "auto (UDP), udp, or shm (Fast DDS: shared memory with same-host Fast DDS peers, else UDP) (default auto; "
+      "docs/runtime.md, Transports)");
   app.add_option("--max-participants", max_participants,
                  "DDS participants of the domain one host may hold, which discovery probes on each peer; the same "
                  "for every process of a deployment (default 32; docs/runtime.md)")

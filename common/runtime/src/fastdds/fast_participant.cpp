@@ -383,15 +383,16 @@ FastParticipant::FastParticipant(const ParticipantOptions& o)
   fdds::DomainParticipantQos pq;
   pq.name(o.name);
   // Transport: UDPv4 on the configured interface only (loopback by default), and with
-  // NetworkOptions::transport auto or shm, Fast DDS's shared-memory transport beside it. A peer
+  // NetworkOptions::transport shm, Fast DDS's shared-memory transport beside it. A peer
   // announces both; Fast DDS uses shared memory with a Fast DDS peer of the same host (same
   // host id in the SHM locator) and UDP with any other: a Cyclone DDS peer ignores the SHM
   // locators, another host cannot reach them. RTPS messages are encrypted before either
   // transport carries them, so DDS Security works over both (docs/runtime.md, Transports).
-  // With it (`auto` and `shm`; docs/runtime.md, Transports), plexus keeps the
-  // participant off an SHM port that a writer still holds from a killed process
-  // (shm_ports.hpp: Fast DDS 2.9 would otherwise let a restarted reader take that port and
-  // never hear from such a writer again), under a host-wide lock until the participant exists.
+  // Only with transport shm (docs/runtime.md, Transports, says why not by default). With it,
+  // plexus keeps the participant off an SHM port that a writer still holds from a killed
+  // process (shm_ports.hpp: Fast DDS 2.9 would otherwise let a restarted reader take that
+  // port and never hear from such a writer again), under a host-wide lock until the
+  // participant exists.
   pq.transport().use_builtin_transports = false;
   std::optional<detail::ShmParticipantLock> shm_lock;
   if (fast_shared_memory(o.network.transport)) {

@@ -1,6 +1,9 @@
 // How DDS samples travel between processes of one host (docs/runtime.md, Transports).
 //
-//   auto  plexus's choice, the default: as `shm` for Fast DDS, UDPv4 for Cyclone DDS (silently).
+//   auto  plexus's choice, the default: UDPv4 on both vendors. Fast DDS's shared memory is
+//         not the default: with it, a 500 Hz serial bridge's samples stalled for about 330 ms
+//         when a reader matched (bridges.balancing_contract_serial_fast failed 10 of 17 runs,
+//         over UDP 0 of 6; docs/runtime.md, Transports).
 //   udp   UDPv4 only, on both vendors: every sample crosses the loopback interface.
 //   shm   Fast DDS: its shared-memory transport between Fast DDS participants of one host
 //         (UDPv4 to everything else: other hosts, Cyclone DDS peers). RTPS messages as over
@@ -21,7 +24,7 @@ enum class Transport { automatic, udp, shm };
 Transport parse_transport(std::string_view name, std::string_view origin = "--transport");
 const char* to_string(Transport t);
 
-/// True when a Fast DDS participant uses shared memory with its peers of this host (`shm`, `auto`).
-inline bool fast_shared_memory(Transport t) { return t != Transport::udp; }
+/// True when a Fast DDS participant uses shared memory with its peers of this host (`shm`).
+inline bool fast_shared_memory(Transport t) { return t == Transport::shm; }
 
 }  // namespace plexus::rt
