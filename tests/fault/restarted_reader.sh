@@ -8,7 +8,7 @@
 # again.
 # Usage: restarted_reader.sh BIN VENDOR DOMAIN [TRANSPORT] [TYPE]  (TRANSPORT: auto, udp or
 # shm; TYPE: pose (Pose2D) or probe (LatencyProbe, a bounded sequence). Over the SHM
-# transport's ports (auto and shm on Fast DDS), Fast DDS 2.9 failed 4 of 10 rounds until
+# transport's ports (shm on Fast DDS), Fast DDS 2.9 failed 4 of 10 rounds until
 # plexus chose the restarted participant's id itself: common/runtime/src/fastdds/shm_ports.hpp,
 # docs/runtime.md, Transports)
 set -u

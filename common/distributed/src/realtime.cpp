@@ -4,7 +4,6 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstring>
@@ -115,7 +114,7 @@ bool physical_producer(const scenario::Scenario& sc, const scenario::SignalSpec&
 std::string health_topic(const std::string& service) {
   std::string name = service;
   for (char& c : name)
-    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '/') c = '_';
+    if (!rt::topic_name_char(c)) c = '_';
   // Within the discovery limit (rt::Participant::kMaxDiscoveryName) under either naming (ROS 2
   // names put "rt/" in front): a process hosting many components has a long name; every
   // process derives the same shortened one.

@@ -36,14 +36,11 @@ DdsNames Participant::wire_names(const msg::TypeSupport& type, const std::string
       throw InputError((n == &names.topic ? "topic name '" : "type name '") + *n + "' is " + std::to_string(n->size()) +
                        " bytes; DDS discovery between the vendors carries at most " +
                        std::to_string(kMaxDiscoveryName) + " (Fast DDS 2.9 drops longer ones)");
-  // Cyclone DDS 0.10 takes only letters, digits, '_' and '/' in a topic name, not starting
-  // with a digit (dds_topic.c, is_valid_name); Fast DDS takes more. Refused on both, so a name
-  // that works with one vendor works in a mixed deployment too.
+  // A character one vendor refuses (topic_name_char) is refused on both, so a name that
+  // works with one vendor works in a mixed deployment too.
   const std::string& t = names.topic;
   const bool valid =
-      !t.empty() && !std::isdigit(static_cast<unsigned char>(t[0])) && std::all_of(t.begin(), t.end(), [](char c) {
-        return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '/';
-      });
+      !t.empty() && !std::isdigit(static_cast<unsigned char>(t[0])) && std::all_of(t.begin(), t.end(), topic_name_char);
   if (!valid)
     throw InputError("topic name '" + t +
                      "': DDS topic names between the vendors hold letters, digits, '_' and '/' only, and do not "

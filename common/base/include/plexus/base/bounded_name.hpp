@@ -1,7 +1,7 @@
 #pragma once
 // A name cut to a length limit without losing its uniqueness: the first bytes, then "_" and
-// the 16 hex digits of a 64-bit FNV-1a hash of the whole name. "_" keeps a cut topic name
-// valid on Cyclone DDS, which takes only letters, digits, "_" and "/" (its dds_topic.c). Names within the limit are
+// the 16 hex digits of a 64-bit FNV-1a hash of the whole name ("_" keeps a cut topic name
+// valid on Cyclone DDS, which takes only letters, digits, "_" and "/"). Names within the limit are
 // returned unchanged. Used where a name derived from a list (a process hosting 20 robots'
 // components, say) meets a limit of the platform: DDS discovery strings (Fast DDS 2.9 drops a
 // participant announcement whose name exceeds 251 bytes; docs/runtime.md, Known limits) and

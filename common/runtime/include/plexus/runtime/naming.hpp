@@ -13,6 +13,8 @@
 // everything above the participant (services, tools, the launcher) keeps plexus's names.
 #pragma once
 
+#include <cctype>
+
 #include <string>
 #include <string_view>
 
@@ -26,6 +28,11 @@ enum class Naming { plexus, ros2 };
 /// file:line it came from).
 Naming parse_naming(std::string_view name, std::string_view origin = "--naming");
 const char* to_string(Naming n);
+
+/// A character every vendor takes in a topic name: a letter, a digit, '_' or '/' (Cyclone DDS
+/// 0.10 refuses any other, dds_topic.c is_valid_name; Fast DDS takes more). A name must also
+/// not start with a digit. Participant::wire_names refuses others; health_topic replaces them.
+inline bool topic_name_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '/'; }
 
 /// What ROS 2 names put in front of a topic on the wire (rmw: ros_topic_prefix).
 inline constexpr std::string_view kRos2TopicPrefix = "rt/";

@@ -25,9 +25,8 @@ struct ServiceDdsOptions {
   std::string identity;    ///< identity in <security>/identities, or a folder; empty: the default
   std::string governance;  ///< governance document; empty: <security>/governance.p7s
 
-  /// --dds, --domain, --qos-file, --service, --interface, --peers, --transport, --max-participants, --naming,
-  /// --security,
-  /// --identity, --governance.
+  /// --dds, --domain, --qos-file, --service, --interface, --peers, --transport,
+  /// --max-participants, --naming, --security, --identity, --governance.
   void add_to(CLI::App& app);
   /// The participant: vendor, domain, network, security; named `service`, else
   /// `default_name`; identity `identity`, else `default_identity`. Throws InputError for a bad
