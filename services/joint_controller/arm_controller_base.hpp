@@ -4,15 +4,22 @@
 //   in reference {q1.., dq1.., ddq1.., dddq1..} (JointReference), estimate {q1.., dq1..,
 //     ddq1.., dddq1.., tau1.., dtau1.., phi1.., dphi1..} (LinkJointState);
 //   out cmd {u1..un} (JointCommand)
+// A command outside JointCommand's range (non-finite, or a torque the message cannot carry) is
+// never published: the controller writes zero torque, says so (at most once a second), and
+// write() returns false so that a controller with state restarts it.
 #pragma once
 
+#include <memory>
 #include <string>
 
 #include <Eigen/Core>
 
 #include "plexus/algorithms/arm/arm_feedback.hpp"
 #include "plexus/algorithms/arm/sine_reference.hpp"
+#include "plexus/base/clock.hpp"
+#include "plexus/base/logging.hpp"
 #include "plexus/scenario/component.hpp"
+#include "plexus/scenario/output_range.hpp"
 #include "services/common/arm_fields.hpp"
 
 namespace plexus::scenario {
@@ -26,7 +33,9 @@ class ArmControllerBase : public Component {
         ref_(add_input("reference", concat({names("q", n), names("dq", n), names("ddq", n), names("dddq", n)}),
                        "JointReference")),
         est_(add_input("estimate", estimate_fields(n), "LinkJointState")),
-        cmd_(add_output("cmd", names("u", n), "JointCommand")) {
+        cmd_(add_output("cmd", names("u", n), "JointCommand")),
+        range_(cmd_),
+        log_(named_logger("arm_controller")) {
     if (n > kMaxScenarioDof)
       c.params().fail("model", "has " + std::to_string(n) + " joints; at most " + std::to_string(kMaxScenarioDof));
     const Eigen::VectorXd z = Eigen::VectorXd::Zero(n);
@@ -48,8 +57,19 @@ class ArmControllerBase : public Component {
     }
     return true;
   }
-  void write(const Eigen::VectorXd& u) {
+  /// Writes `u`, or zero torque (false) if `u` leaves the command's range.
+  bool write(const Eigen::VectorXd& u) {
     for (int i = 0; i < n_; ++i) cmd_[static_cast<std::size_t>(i)] = u(i);
+    const int bad = range_.first_violation(cmd_);
+    if (bad < 0) return true;
+    ++refused_;
+    uint64_t held = 0;
+    if (limiter_.allow(monotonic_ns(), held))
+      log_->warn("{}: command u{} = {} out of range; zero torque instead, controller restarted ({} times{})", name(),
+                 bad + 1, cmd_[static_cast<std::size_t>(bad)], refused_,
+                 held ? ", " + std::to_string(held) + " not logged" : std::string());
+    cmd_.clear();
+    return false;
   }
 
   int n_;
@@ -58,6 +78,12 @@ class ArmControllerBase : public Component {
   InputPort& ref_;
   InputPort& est_;
   OutputPort& cmd_;
+
+ private:
+  OutputRange range_;
+  std::shared_ptr<spdlog::logger> log_;
+  RateLimiter limiter_;
+  uint64_t refused_ = 0;
 };
 
 }  // namespace plexus::scenario

@@ -7,6 +7,10 @@
 //   in joint_states {phi1.., dphi1..} (JointState), cmd {u1..} (JointCommand);
 //   out estimate {q1.., dq1.., ddq1.., dddq1.., tau1.., dtau1.., phi1.., dphi1..} (LinkJointState).
 //   At its first step it assumes steady motion: x^ = [C(phi, phi') phi' + G(phi), 0, phi, phi'].
+//   An estimate that leaves LinkJointState's ranges (non-finite, or beyond what the message
+//   carries: the filter diverged, e.g. under a restarted controller's torques of tens of kN m
+//   at 1 kHz) or a non-finite covariance is never published: the filter restarts from the
+//   latest sample as at its first step, and says so (at most once a second).
 //   A tick whose joint_states sample is not new (in realtime, a sample that has not arrived)
 //   predicts over the period with the model alone (FlexibleJointEkf::predict): the last
 //   sample applied again as this period's measurement would pull the estimate back by a
@@ -17,6 +21,9 @@
 #include <string>
 
 #include "plexus/algorithms/arm/flexible_joint_ekf.hpp"
+#include "plexus/base/clock.hpp"
+#include "plexus/base/logging.hpp"
+#include "plexus/scenario/output_range.hpp"
 #include "plexus/scenario/registry.hpp"
 #include "services/common/arm_fields.hpp"
 #include "services/common/arm_model_params.hpp"
@@ -69,7 +76,9 @@ class ArmEkfComponent final : public Component {
         zero_(Eigen::VectorXd::Zero(n_)),
         enc_(add_input("joint_states", concat({names("phi", n_), names("dphi", n_)}), "JointState")),
         cmd_(add_input("cmd", names("u", n_), "JointCommand")),
-        estimate_(add_output("estimate", estimate_fields(n_), "LinkJointState")) {
+        estimate_(add_output("estimate", estimate_fields(n_), "LinkJointState")),
+        range_(estimate_),
+        log_(named_logger("arm_ekf")) {
     if (n_ > kMaxScenarioDof)
       c.params().fail("model", "has " + std::to_string(n_) + " joints; at most " + std::to_string(kMaxScenarioDof));
   }
@@ -82,18 +91,38 @@ class ArmEkfComponent final : public Component {
     if (new_sample)
       for (int i = 0; i < 2 * n_; ++i) y_(i) = enc_[static_cast<std::size_t>(i)];
     if (!started_) {
-      // Steady motion (at rest when phi' = 0): q ~ phi, q' ~ phi', q'' = 0, so
-      // tau = C(q, q') q' + G(q) and tau' = 0 (the springs hold the arm).
-      rest_.inverse_dynamics(y_.head(n_), y_.tail(n_), zero_, g_);  // C q' + G
-      x0_ << g_, zero_, y_;
-      ekf_.reset(x0_);
-      started_ = true;
+      start();
     } else if (new_sample) {
       ekf_.update(u_, y_, h_);
     } else {
       ekf_.predict(u_, h_);
     }
     last_step_ = sample_step;
+    publish();
+    const int bad = range_.first_violation(estimate_);
+    if (bad >= 0 || !ekf_.covariance().allFinite()) {
+      ++restarts_;
+      uint64_t held = 0;
+      if (limiter_.allow(monotonic_ns(), held))
+        log_->warn("{}: the estimate diverged ({} = {}); restarted from the latest joint sample ({} restarts{})",
+                   name(), bad >= 0 ? estimate_.fields()[static_cast<std::size_t>(bad)] : std::string("covariance"),
+                   bad >= 0 ? estimate_[static_cast<std::size_t>(bad)] : 0.0, restarts_,
+                   held ? ", " + std::to_string(held) + " not logged" : std::string());
+      start();
+      publish();
+    }
+  }
+
+ private:
+  // Steady motion (at rest when phi' = 0): q ~ phi, q' ~ phi', q'' = 0, so
+  // tau = C(q, q') q' + G(q) and tau' = 0 (the springs hold the arm).
+  void start() {
+    rest_.inverse_dynamics(y_.head(n_), y_.tail(n_), zero_, g_);  // C q' + G
+    x0_ << g_, zero_, y_;
+    ekf_.reset(x0_);
+    started_ = true;
+  }
+  void publish() {
     const alg::ArmFeedback& fb = ekf_.feedback();
     for (int i = 0; i < n_; ++i) {
       const auto a = static_cast<std::size_t>(i);
@@ -104,8 +133,6 @@ class ArmEkfComponent final : public Component {
                         estimate_[7 * n + a] = fb.phid(i);
     }
   }
-
- private:
   static alg::ArmModel ekf_params_model(const ComponentConfig& c) { return read_model(c.params()); }
 
   alg::FlexibleJointEkf ekf_;
@@ -118,6 +145,10 @@ class ArmEkfComponent final : public Component {
   InputPort& enc_;
   InputPort& cmd_;
   OutputPort& estimate_;
+  OutputRange range_;
+  std::shared_ptr<spdlog::logger> log_;
+  RateLimiter limiter_;
+  uint64_t restarts_ = 0;
 };
 
 const ComponentRegistration kArmEkf{"arm_ekf", ComponentKind::estimator,

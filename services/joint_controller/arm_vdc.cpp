@@ -64,7 +64,7 @@ class ArmVdcComponent final : public ArmControllerBase {
  public:
   explicit ArmVdcComponent(const ComponentConfig& c) : ArmVdcComponent(c, read_vdc(c)) {}
   void step(int64_t /*k*/, double /*t*/) override {
-    if (read()) write(vdc_.step(sample_, fb_));
+    if (read() && !write(vdc_.step(sample_, fb_))) vdc_.reset();
   }
 
  private:

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
 
 #include "plexus/algorithms/arm/ct_pd_controller.hpp"
 #include "plexus/algorithms/arm/flexible_joint_ekf.hpp"
@@ -227,6 +228,37 @@ services:
   }
 }
 
+TEST(ArmVdc, CommandOutOfRangeIsZeroAndRestartsTheController) {
+  // An estimate inside LinkJointState's range but moving at 1e4 rad/s asks for torques far
+  // beyond JointCommand's 1e7 N m: the controller publishes zero torque instead, and
+  // restarts, so that its next command is the fresh algorithm's on the same inputs.
+  ServiceUnderTest s(kVdc);
+  feed_controller(s, 0);
+  s.step(0);
+  Estimate wild = estimate_at(1);
+  wild.dq = {1e4, -1e4};
+  wild.dphi = wild.dq;
+  wild.ddq = {1e7, 1e7};
+  ASSERT_EQ(s.deliver("r4/reference", joint_reference(s, 1, {0.12, -0.08}, {0.3, 0.9}, {0.1, -0.4}, {0.0, 0.2})),
+            Rejection::none);
+  ASSERT_EQ(s.deliver("r4/estimate", link_state(s, 1, wild)), Rejection::none);
+  s.step(1);
+  EXPECT_EQ(s.out("r4/cmd", "u1"), 0.0);
+  EXPECT_EQ(s.out("r4/cmd", "u2"), 0.0);
+  alg::VdcParams p = alg::VdcParams::paper_2dof();
+  p.step = 0.001;
+  alg::VdcController fresh(p), unreset(p);
+  (void)unreset.step(reference_of({0.12, -0.08}, {0.3, 0.9}, {0.1, -0.4}, {0.0, 0.2}), feedback_of(estimate_at(0)));
+  feed_controller(s, 2);
+  s.step(2);
+  const auto sample = reference_of({0.122, -0.08}, {0.3, 0.9}, {0.1, -0.4}, {0.0, 0.2});
+  const auto& u = fresh.step(sample, feedback_of(estimate_at(2)));
+  const auto& u_unreset = unreset.step(sample, feedback_of(estimate_at(2)));
+  EXPECT_NEAR(s.out("r4/cmd", "u1"), u(0), 1e-9 * std::abs(u(0)) + 1e-12);
+  EXPECT_NEAR(s.out("r4/cmd", "u2"), u(1), 1e-9 * std::abs(u(1)) + 1e-12);
+  EXPECT_GT(std::abs(u(0) - u_unreset(0)), 1e-9);  // the restart is what makes it match
+}
+
 TEST(ArmVdc, BadSamplesAreRefusedAndLeaveTheCommandAlone) {
   expect_refused_without_effect(kVdc, {}, {"r4/cmd"}, 6, 3, feed_controller, bad_controller_inputs());
 }
@@ -327,6 +359,59 @@ TEST(ArmEkf, UpdatesMatchTheAlgorithm) {
     }
   }
   EXPECT_NE(s.out("r4/estimate", "dtau1"), 0.0);  // the update moved the torque rate
+}
+
+// Every field of a published estimate is finite and within LinkJointState's @range
+// (idl/plexus/msg/estimates.idl), the edge check of a reader in another process.
+void expect_within_link_joint_state(const ServiceUnderTest& s, int64_t k) {
+  const auto m = s.published<msg::LinkJointState>("r4/estimate");
+  for (int i = 0; i < 2; ++i) {
+    for (auto [v, bound] : {std::pair{m.position()[i], 1e6},
+                            {m.velocity()[i], 1e4},
+                            {m.acceleration()[i], 1e7},
+                            {m.jerk()[i], 1e10},
+                            {m.torque()[i], 1e7},
+                            {m.torque_rate()[i], 1e10},
+                            {m.motor_position()[i], 1e6},
+                            {m.motor_velocity()[i], 1e4}}) {
+      ASSERT_TRUE(std::isfinite(v)) << "step " << k << ", joint " << i;
+      ASSERT_LE(std::abs(v), bound) << "step " << k << ", joint " << i;
+    }
+  }
+}
+
+TEST(ArmEkf, DivergedEstimateRestartsFromTheLatestSample) {
+  // Commands of +-1e7 N m (in JointCommand's range) alternating every step drive the filter
+  // at 1 kHz to 1e205 rad/s and then NaN within 6 steps, for good without the restart (the
+  // restarted joint controller's failure in fault.kill_each_service_*: docs/testing.md).
+  // Each estimate it publishes stays finite and in range; once the commands are sane again
+  // the filter follows the encoders.
+  ServiceUnderTest s(kEkf);
+  for (int64_t k = 0; k < 60; ++k) {
+    ASSERT_EQ(s.deliver("r4/joint_states", encoders(s, k, phi_at(k), dphi_at(k))), Rejection::none);
+    const double u = (k % 2 ? 1.0 : -1.0) * 1e7;
+    ASSERT_EQ(s.deliver("r4/cmd", joint_command(s, k, {u, -u})), Rejection::none);
+    s.step(k);
+    expect_within_link_joint_state(s, k);
+  }
+  for (int64_t k = 60; k < 80; ++k) {
+    feed_ekf(s, k);
+    s.step(k);
+    expect_within_link_joint_state(s, k);
+  }
+  ServiceUnderTest calm(kEkf);
+  for (int64_t k = 0; k < 80; ++k) {
+    feed_ekf(calm, k);
+    calm.step(k);
+  }
+  // As close to the encoders as a filter that never diverged, on the same inputs since step 60
+  // (this test's encoders and command are not one motion, so neither matches them).
+  for (auto [f, y] : {std::pair{"phi1", phi_at(79)(0)},
+                      {"phi2", phi_at(79)(1)},
+                      {"dphi1", dphi_at(79)(0)},
+                      {"dphi2", dphi_at(79)(1)}}) {
+    EXPECT_LE(std::abs(s.out("r4/estimate", f) - y), std::abs(calm.out("r4/estimate", f) - y) + 1e-6) << f;
+  }
 }
 
 TEST(ArmEkf, DefaultIsTheRobustTuning) {
