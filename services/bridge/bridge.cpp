@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <cerrno>
+#include <cmath>
 #include <cstring>
 #include <thread>
 #include <vector>
@@ -16,7 +17,9 @@
 #include "plexus/base/clock.hpp"
 #include "plexus/base/logging.hpp"
 #include "plexus/distributed/realtime.hpp"
+#include "plexus/link/device_clock.hpp"
 #include "plexus/link/frame.hpp"
+#include "plexus/link/protocol.hpp"
 
 namespace plexus::bridge {
 namespace {
@@ -40,8 +43,10 @@ struct SharedCounters {
   std::atomic<bool> up{false};
   std::atomic<uint64_t> frames_in{0}, frames_out{0}, crc_errors{0}, framing_errors{0}, oversize{0}, resyncs{0},
       bytes_discarded{0}, rejected_frames{0}, reconnects{0}, disconnects{0}, stale_commands{0}, stop_frames{0},
-      tx_errors{0}, commands_forwarded{0}, commands_refused{0};
-  std::atomic<double> latency_p50_us{0}, latency_p99_us{0}, latency_max_us{0};
+      tx_errors{0}, commands_forwarded{0}, commands_refused{0}, unsynced_frames{0}, clock_exchanges{0},
+      clock_restarts{0};
+  std::atomic<double> latency_p50_us{0}, latency_p99_us{0}, latency_max_us{0}, clock_offset_s{0}, clock_drift_ppm{0},
+      clock_uncertainty_us{0};
 };
 
 }  // namespace
@@ -66,6 +71,9 @@ struct Bridge::Impl {
   int64_t latency_max = 0;
   int64_t last_frame_mono = 0;  // last valid frame (0: none since the link opened)
   RateLimiter log_limit;
+  // Device time: host times in the exchanges are s since epoch_wall (CLOCK_REALTIME ns).
+  link::DeviceClock clock;
+  const int64_t epoch_wall = wall_time_ns();
 
   // Command thread only.
   scenario::SignalSample command;
@@ -75,6 +83,11 @@ struct Bridge::Impl {
       : routes(make_routes(sc, p, profiles)), link(std::move(l)), opt(std::move(o)) {
     if (routes.command.layout->fields.size() > kMaxCommandFields)
       throw InputError(routes.command.spec->name + ": more command fields than a frame carries");
+    if (opt.device_time)
+      for (const SensorRoute& r : routes.sensors)
+        if (r.layout->payload_size() + 8 > link::kMaxPayload)
+          throw InputError(r.spec->name + ": frame " + fmt::format("0x{:02x}", r.layout->id) +
+                           " has no room for the device time (16 fields at most, the time included)");
     heartbeat = p.publisher<msg::Heartbeat>(distributed::health_topic(opt.service), profiles.get("health"));
     hb = distributed::heartbeat_of(opt.service, routes.robot);
     int fds[2];
@@ -104,6 +117,56 @@ struct Bridge::Impl {
     return true;
   }
 
+  /// Device time: a request carrying its own departure time t1 (s since epoch_wall).
+  void send_time_request() {
+    uint8_t payload[24] = {};
+    link::put_f64_le(payload, static_cast<double>(wall_time_ns() - epoch_wall) * 1e-9);
+    (void)send_frame(link::kTimeRequestId, payload, sizeof payload);
+  }
+
+  void on_time_response(const link::Frame& f, int64_t arrived_wall) {
+    if (f.payload_size != 24) {
+      c.framing_errors.fetch_add(1, std::memory_order_relaxed);
+      warn("{}: time response with {} payload bytes, expected 24: dropped", opt.service, f.payload_size);
+      return;
+    }
+    const double t1 = link::get_f64_le(f.payload), t2 = link::get_f64_le(f.payload + 8),
+                 t3 = link::get_f64_le(f.payload + 16), t4 = static_cast<double>(arrived_wall - epoch_wall) * 1e-9;
+    if (!clock.add(t1, t2, t3, t4)) {
+      c.rejected_frames.fetch_add(1, std::memory_order_relaxed);
+      warn("{}: time response refused: t1 {} t2 {} t3 {} t4 {} cannot be one exchange", opt.service, t1, t2, t3, t4);
+      return;
+    }
+    last_frame_mono = monotonic_ns();
+    c.clock_exchanges.store(clock.exchanges(), std::memory_order_relaxed);
+    c.clock_restarts.store(clock.restarts(), std::memory_order_relaxed);
+    // The clock's host times count from epoch_wall: the offset against CLOCK_REALTIME itself.
+    c.clock_offset_s.store(clock.offset_s() - static_cast<double>(epoch_wall) * 1e-9, std::memory_order_relaxed);
+    c.clock_drift_ppm.store(clock.drift_ppm(), std::memory_order_relaxed);
+    c.clock_uncertainty_us.store(clock.uncertainty_s() * 1e6, std::memory_order_relaxed);
+  }
+
+  /// Device time: the host time (CLOCK_REALTIME ns) of a sample the device stamped at
+  /// `device_s`; false (counted) if there is no map yet or the time cannot be the sample's.
+  bool sample_time(double device_s, const SensorRoute& r, int64_t arrived_wall, int64_t& data_time) {
+    if (!clock.valid()) {
+      c.unsynced_frames.fetch_add(1, std::memory_order_relaxed);
+      return false;
+    }
+    const double host_s = std::isfinite(device_s) ? clock.to_host(device_s) : NAN;
+    const double ahead_s = host_s - static_cast<double>(arrived_wall - epoch_wall) * 1e-9;
+    // A sample is taken before it arrives (within the map's uncertainty, and 1 ms), and
+    // not longer ago than the link timeout.
+    if (!(ahead_s <= std::max(2 * clock.uncertainty_s(), 1e-3) && ahead_s >= -opt.link_timeout_s)) {
+      c.rejected_frames.fetch_add(1, std::memory_order_relaxed);
+      warn("{}: frame for {} refused: device time {} s maps to {} ms from its arrival", opt.service, r.spec->name,
+           device_s, ahead_s * 1e3);
+      return false;
+    }
+    data_time = epoch_wall + static_cast<int64_t>(std::llround(host_s * 1e9));
+    return true;
+  }
+
   void send_stop() {
     if (send_frame(link::kStopId, nullptr, 0)) c.stop_frames.fetch_add(1, std::memory_order_relaxed);
   }
@@ -126,6 +189,10 @@ struct Bridge::Impl {
   }
 
   void on_frame(const link::Frame& f, int64_t arrived_wall) {
+    if (f.id == link::kTimeResponseId && opt.device_time) {
+      on_time_response(f, arrived_wall);
+      return;
+    }
     const int16_t idx = routes.sensor_by_id[f.id];
     if (idx < 0) {  // not a frame this robot's device sends (unknown id, a host -> device id)
       c.framing_errors.fetch_add(1, std::memory_order_relaxed);
@@ -133,10 +200,11 @@ struct Bridge::Impl {
       return;
     }
     SensorRoute& r = routes.sensors[static_cast<std::size_t>(idx)];
-    if (f.payload_size != r.layout->payload_size()) {
+    const std::size_t expected = r.layout->payload_size() + (opt.device_time ? 8 : 0);  // + the device time
+    if (f.payload_size != expected) {
       c.framing_errors.fetch_add(1, std::memory_order_relaxed);
-      warn("{}: frame 0x{:02x} ({}) has {} payload bytes, expected {}: dropped", opt.service, f.id, r.spec->name,
-           f.payload_size, r.layout->payload_size());
+      warn("{}: frame 0x{:02x} ({}) has {} payload bytes, expected {}{}: dropped", opt.service, f.id, r.spec->name,
+           f.payload_size, expected, opt.device_time ? " (with the device time)" : "");
       return;
     }
     for (std::size_t i = 0; i < r.layout->fields.size(); ++i) sample.values[i] = link::get_f64_le(f.payload + 8 * i);
@@ -147,7 +215,11 @@ struct Bridge::Impl {
            distributed::to_string(why), r.layout->fields[bad], sample.values[bad]);
       return;
     }
-    r.publisher->publish_at(sample, arrived_wall, arrived_wall);
+    int64_t data_time = arrived_wall;
+    if (opt.device_time &&
+        !sample_time(link::get_f64_le(f.payload + r.layout->payload_size()), r, arrived_wall, data_time))
+      return;
+    r.publisher->publish_at(sample, data_time, data_time);
     ++r.published;
     const int64_t lat = wall_time_ns() - arrived_wall;
     latency[latency_count++ % kLatencyWindow] = lat;
@@ -210,7 +282,8 @@ struct Bridge::Impl {
     const int64_t timeout = ns_of(opt.link_timeout_s), retry = ns_of(opt.retry_s);
     int64_t expires = INT64_MIN;  // of the command held; none yet
     int64_t now = monotonic_ns();
-    int64_t next_stop_check = now + period, next_open = now, next_stats = now + kSecond;
+    int64_t next_stop_check = now + period, next_open = now, next_stats = now + kSecond, next_sync = now;
+    const int64_t sync_period = ns_of(1.0 / opt.time_sync_hz);
     bool opened_before = false;
     std::string error;
     while (!stop.load(std::memory_order_relaxed)) {
@@ -229,6 +302,7 @@ struct Bridge::Impl {
       c.up.store(link->is_open() && last_frame_mono > 0 && now - last_frame_mono <= timeout, std::memory_order_relaxed);
       pollfd fds[2] = {{pipe_r, POLLIN, 0}, {link->fd(), POLLIN, 0}};
       int64_t wake = std::min(next_stop_check, next_stats);
+      if (opt.device_time && link->is_open()) wake = std::min(wake, next_sync);
       if (!link->is_open()) wake = std::min(wake, next_open);
       const int wait_ms = static_cast<int>(std::clamp<int64_t>((wake - now + 999'999) / 1'000'000, 0, 100));
       const int ready = ::poll(fds, link->is_open() ? 2 : 1, wait_ms);
@@ -244,6 +318,10 @@ struct Bridge::Impl {
         if (link->is_open() && (fds[1].revents & POLLNVAL)) lose_device("invalid descriptor");
       }
       now = monotonic_ns();
+      if (opt.device_time && link->is_open() && now >= next_sync) {
+        send_time_request();
+        next_sync = std::max(next_sync + sync_period, now);
+      }
       if (now >= next_stop_check) {
         next_stop_check = std::max(next_stop_check + period, now - period + 1);
         if (now > expires) send_stop();  // no fresh command: stop explicitly, once per command period
@@ -305,6 +383,12 @@ struct Bridge::Impl {
     s.latency_p50_us(c.latency_p50_us.load(std::memory_order_relaxed));
     s.latency_p99_us(c.latency_p99_us.load(std::memory_order_relaxed));
     s.latency_max_us(c.latency_max_us.load(std::memory_order_relaxed));
+    s.unsynced_frames(get(c.unsynced_frames));
+    s.clock_exchanges(get(c.clock_exchanges));
+    s.clock_restarts(get(c.clock_restarts));
+    s.clock_offset_s(c.clock_offset_s.load(std::memory_order_relaxed));
+    s.clock_drift_ppm(c.clock_drift_ppm.load(std::memory_order_relaxed));
+    s.clock_uncertainty_us(c.clock_uncertainty_us.load(std::memory_order_relaxed));
     return s;
   }
 

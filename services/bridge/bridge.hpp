@@ -5,7 +5,9 @@
 //   bytes -> FrameDecoder (COBS, CRC, version: bad frames dropped and counted)
 //         -> route by frame id, payload length check
 //         -> edge check (WireSignal::check: finite, physical range)
-//         -> publish on <robot>/<topic>, data and origin time = when the frame arrived
+//         -> publish on <robot>/<topic>, data and origin time = when the frame arrived, or
+//            with device time, the sample's device time mapped to the host's clock
+//            (link::DeviceClock, fitted to the time exchanges the I/O thread makes)
 // DDS -> device (the command thread waits on the command reader):
 //   <robot>/cmd -> edge check (decode) -> deadline check (older than its deadline: not
 //   forwarded) -> pipe -> I/O thread -> command frame. While no fresh command is held the
@@ -33,6 +35,8 @@ struct BridgeOptions {
   std::string service;          ///< heartbeat and log name
   double link_timeout_s = 0.5;  ///< no valid frame for this long: link down, heartbeat DEGRADED
   double retry_s = 0.5;         ///< between attempts to open an absent device
+  bool device_time = false;     ///< the device stamps its samples (docs/bridges.md, "Device time")
+  double time_sync_hz = 50.0;   ///< time exchanges per second, with device_time
 };
 
 /// What the bridge did, for its exit line.

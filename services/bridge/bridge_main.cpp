@@ -36,24 +36,14 @@ void on_signal(int) { g_stop = true; }
 constexpr std::string_view kName = PLEXUS_BRIDGE_KIND;
 constexpr bool kSerial = kName == "serial_bridge";
 
+/// The link's counters as the exit line shows them: LinkStatus's members (generated), with
+/// `up` in place of the state enum.
 nlohmann::ordered_json link_json(const plexus::msg::LinkStatus& s) {
-  return {{"up", s.state() == plexus::msg::LINK_UP},
-          {"frames_in", s.frames_in()},
-          {"frames_out", s.frames_out()},
-          {"crc_errors", s.crc_errors()},
-          {"framing_errors", s.framing_errors()},
-          {"oversize", s.oversize()},
-          {"resyncs", s.resyncs()},
-          {"bytes_discarded", s.bytes_discarded()},
-          {"rejected_frames", s.rejected_frames()},
-          {"reconnects", s.reconnects()},
-          {"disconnects", s.disconnects()},
-          {"stale_commands", s.stale_commands()},
-          {"stop_frames", s.stop_frames()},
-          {"tx_errors", s.tx_errors()},
-          {"latency_p50_us", s.latency_p50_us()},
-          {"latency_p99_us", s.latency_p99_us()},
-          {"latency_max_us", s.latency_max_us()}};
+  nlohmann::ordered_json j{{"up", s.state() == plexus::msg::LINK_UP}};
+  const nlohmann::ordered_json members = plexus::msg::to_json(s);
+  for (const auto& [key, value] : members.items())
+    if (key != "state") j[key] = value;
+  return j;
 }
 
 }  // namespace
@@ -68,7 +58,8 @@ int main(int argc, char** argv) {
   scenario::ServiceDdsOptions net;
   std::string device, bind, peer;
   long baud = 0;
-  double link_timeout = 0, retry = 0, timeout = 0;
+  double link_timeout = 0, retry = 0, timeout = 0, time_sync_hz = 0;
+  bool device_time = false;
   std::vector<std::string> sets;
   bool start_signal = false;
   scenario::StandaloneSpec alone;
@@ -90,6 +81,9 @@ int main(int argc, char** argv) {
     app.add_option("--peer", peer, "ADDR:PORT of the device (alone: required)");
   }
   app.add_option("--link-timeout", link_timeout, "Seconds without a valid frame before the link is down (default 0.5)");
+  app.add_flag("--device-time", device_time,
+               "The device stamps its samples: map its clock to the host's by two-way exchanges (docs/bridges.md)");
+  app.add_option("--time-sync-hz", time_sync_hz, "With --device-time: exchanges per second, 1 .. 200 (default 50)");
   net.add_to(app);
   app.add_option("--mode", mode, "realtime only (a bridge follows its device's clock)")
       ->check(CLI::IsMember({"realtime", "lockstep"}));
@@ -110,10 +104,11 @@ int main(int argc, char** argv) {
       throw InputError("--mode " + mode + ": a bridge runs in realtime only (its device keeps time)");
     scenario::Scenario sc;
     if (!part_file.empty()) {
-      if (!device.empty() || baud || !bind.empty() || !peer.empty() || retry > 0 || link_timeout > 0)
+      if (!device.empty() || baud || !bind.empty() || !peer.empty() || retry > 0 || link_timeout > 0 || device_time ||
+          time_sync_hz > 0)
         throw InputError(
             "--part: the link comes from the part's `source:`; drop "
-            "--device/--baud/--bind/--peer/--retry/--link-timeout");
+            "--device/--baud/--bind/--peer/--retry/--link-timeout/--device-time/--time-sync-hz");
       std::vector<scenario::Override> overrides;
       for (const auto& s : sets) overrides.push_back(scenario::parse_override(s));
       sc = scenario::load_scenario(part_file, overrides, {.partial = true});
@@ -140,6 +135,8 @@ int main(int argc, char** argv) {
         src["peer"] = peer;
       }
       if (link_timeout > 0) src["link_timeout"] = link_timeout;
+      if (device_time) src["device_time"] = true;
+      if (app.count("--time-sync-hz")) src["time_sync_hz"] = time_sync_hz;
       alone.extra = YAML::Node(YAML::NodeType::Map);
       alone.extra["source"] = src;
       sc = scenario::load_standalone(alone, sets, true);
@@ -160,7 +157,11 @@ int main(int argc, char** argv) {
     // A plant simulator of the same robot left running would interleave with the device: warned.
     const service::ProducerMonitor producers(*participant, sc, po.name);
     bridge::Bridge b(sc, *participant, profiles, std::move(link),
-                     {.service = po.name, .link_timeout_s = src.link_timeout_s, .retry_s = src.retry_s});
+                     {.service = po.name,
+                      .link_timeout_s = src.link_timeout_s,
+                      .retry_s = src.retry_s,
+                      .device_time = src.device_time,
+                      .time_sync_hz = src.time_sync_hz});
     const auto r = b.run(g_stop);
     nlohmann::ordered_json j{{"service", po.name},
                              {"run_s", r.run_s},

@@ -70,3 +70,17 @@ foreach(variant "simulator;cyclone;138" "serial;fast;139")
     set_tests_properties(bridges.balancing_contract_${source}_${vendor} PROPERTIES RUN_SERIAL TRUE)
   endif()
 endforeach()
+
+# Device time (tests/bridges/device_time.sh; docs/bridges.md, "Device time"): the emulator's
+# clock 2.5 s ahead and 150 ppm fast on a UDP link with 0-2 ms of random delay each way; the
+# bridge's mapped timestamps within 100 us of the true sample times after 10 s, the arrival
+# stamps beside them. The bridge on each vendor, `plexus topic echo` on the other. RUN_SERIAL
+# and realtime: the map's accuracy rests on the two ends' wake-ups being alike, which a
+# CPU-bound neighbour makes unequal (the realtime lanes of CI's first phase; about 35 s).
+foreach(variant "fast;148" "cyclone;228")
+  list(POP_FRONT variant vendor domain)
+  add_test(NAME bridges.device_time_${vendor}
+           COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/device_time.sh $<TARGET_FILE_DIR:plexus>
+                   ${CMAKE_BINARY_DIR}/test-runs/bridges/device_time_${vendor} ${domain} ${vendor})
+  set_tests_properties(bridges.device_time_${vendor} PROPERTIES LABELS "bridges;realtime" TIMEOUT 120 RUN_SERIAL TRUE)
+endforeach()

@@ -19,6 +19,8 @@
 #include <cmath>
 #include <csignal>
 #include <cstdio>
+#include <cstring>
+#include <memory>
 
 #include "emulated_device.hpp"
 #include "emulator_link.hpp"
@@ -26,10 +28,12 @@
 #include "plexus/base/clock.hpp"
 #include "plexus/base/input_error.hpp"
 #include "plexus/base/logging.hpp"
+#include "plexus/link/protocol.hpp"
 #include "plexus/link/udp_socket.hpp"
 #include "plexus/runtime/periodic_loop.hpp"
 #include "plexus/scenario/overrides.hpp"
 #include "plexus/service/standalone.hpp"
+#include "timed_udp_port.hpp"
 
 namespace {
 
@@ -46,11 +50,19 @@ std::atomic<bool> g_stop{false};
 void on_signal(int) { g_stop = true; }
 
 /// A produced frame's way out: discarded while stalled or unplugged, else poisoned,
-/// encoded, damaged as the faults say, and queued on the link.
+/// encoded, damaged as the faults say, and queued on the link (or on the timed UDP port).
+/// With a truth file, each sample frame's true time is written there first.
 class Transmitter final : public emulator::FrameOutput {
  public:
-  Transmitter(emulator::FaultInjector& faults, emulator::EmulatorLink& link) : faults_(faults), link_(link) {}
+  Transmitter(emulator::FaultInjector& faults, emulator::EmulatorLink& link, emulator::TimedUdpPort* timed,
+              std::FILE* truth)
+      : faults_(faults), link_(link), timed_(timed), truth_(truth) {}
+  /// The host time (CLOCK_REALTIME ns) and device time of the samples of the next step.
+  void set_sample_time(int64_t wall_ns, double device_s) { wall_ns_ = wall_ns, device_s_ = device_s; }
   void send(uint8_t id, uint16_t seq, uint8_t* payload, std::size_t n) override {
+    if (truth_ && id < 0x80 && id != link::kTimeResponseId && n >= 8)
+      std::fprintf(truth_, "%u,%u,%.17g,%.17g,%lld\n", id, seq, link::get_f64_le(payload), device_s_,
+                   static_cast<long long>(wall_ns_));
     if (!faults_.sending(link_)) {
       ++discarded;
       return;
@@ -58,13 +70,20 @@ class Transmitter final : public emulator::FrameOutput {
     faults_.on_payload(payload, n);
     std::size_t len = link::encode_frame(id, seq, payload, n, buf_);
     len = faults_.on_encoded(buf_, len);
-    link_.queue(buf_, len, true);
+    if (timed_)
+      timed_->queue(buf_, len);
+    else
+      link_.queue(buf_, len, true);
   }
   uint64_t discarded = 0;  ///< produced while stalled or unplugged
 
  private:
   emulator::FaultInjector& faults_;
   emulator::EmulatorLink& link_;
+  emulator::TimedUdpPort* timed_;
+  std::FILE* truth_;
+  int64_t wall_ns_ = 0;
+  double device_s_ = 0.0;
   uint8_t buf_[link::kMaxEncodedFrame] = {};
 };
 
@@ -92,7 +111,9 @@ int main(int argc, char** argv) {
   scenario::StandaloneSpec alone;
   alone.program = kName;
   alone.robot_section = true;
-  std::string part_file, pty, udp_bind, udp_peer, faults_file, log_level = "info";
+  std::string part_file, pty, udp_bind, udp_peer, faults_file, truth_file, log_level = "info";
+  bool device_time = false;
+  double clock_offset = 0.0, clock_drift_ppm = 0.0, jitter_ms = 0.0;
   std::vector<std::string> sets, fault_specs;
   long baud = 1000000;
   int64_t watchdog_ms = 100;
@@ -119,6 +140,15 @@ int main(int argc, char** argv) {
   app.add_option("--faults", faults_file, "YAML list of faults: - {kind: flip, at: 1.5, count: 3}");
   app.add_option("--seed", seed, "Seed of the faults' random choices (default 1)");
   app.add_option("--duration", duration, "Run this many seconds (default: until SIGINT/SIGTERM)");
+  app.add_flag("--device-time", device_time,
+               "Stamp every sample frame with the device's clock (also on when the part's source says device_time)");
+  app.add_option("--clock-offset", clock_offset, "The device clock's reading at start, s (default 0)");
+  app.add_option("--clock-drift-ppm", clock_drift_ppm,
+                 "How fast the device clock runs, ppm, -1000 .. 1000 (default 0)");
+  app.add_option("--jitter-ms", jitter_ms,
+                 "UDP: a random delay per frame, 0 .. this many ms, each way, in order (default 0)");
+  app.add_option("--truth-times", truth_file,
+                 "CSV: per sample frame, id, seq, first field, device time (s), true host time (CLOCK_REALTIME ns)");
   app.add_option("--log-level", log_level, "trace, debug, info, warn, error, critical or off");
   try {
     app.parse(argc, argv);
@@ -160,6 +190,13 @@ int main(int argc, char** argv) {
     if (tx_buffer < 1024 || tx_buffer > 16 * 1024 * 1024)
       throw InputError("--tx-buffer " + std::to_string(tx_buffer) + ": expected bytes 1024 .. 16777216");
     lo.ring_bytes = tx_buffer;
+    if (!(std::abs(clock_offset) <= 1e6))
+      throw InputError("--clock-offset " + app["--clock-offset"]->as<std::string>() + ": expected seconds, |S| <= 1e6");
+    if (!(std::abs(clock_drift_ppm) <= 1000))
+      throw InputError("--clock-drift-ppm " + app["--clock-drift-ppm"]->as<std::string>() + ": expected -1000 .. 1000");
+    if (!(jitter_ms >= 0 && jitter_ms <= 100))
+      throw InputError("--jitter-ms " + app["--jitter-ms"]->as<std::string>() + ": expected 0 .. 100");
+    if (jitter_ms > 0 && !udp) throw InputError("--jitter-ms: UDP only (--udp-bind, --udp-peer)");
     std::vector<emulator::Fault> faults;
     for (const auto& s : fault_specs) faults.push_back(emulator::parse_fault_spec(s));
     if (!faults_file.empty())
@@ -196,6 +233,21 @@ int main(int argc, char** argv) {
                        ": expected seconds >= 0.00001 (at most 100 kHz)");
     const int64_t watchdog_ns = watchdog_ms * 1'000'000;
     emulator::EmulatedDevice device(sc, watchdog_ns);
+    for (const auto& [robot, src] : sc.sources) device_time = device_time || src.device_time;
+    if (device_time) device.enable_device_time();
+    // UDP with device time or jitter: the timed port (two threads own the socket; the loop's
+    // tick would add up to a step of one-sided delay to every time exchange).
+    const bool timed_port = udp && (device_time || jitter_ms > 0);
+    if (timed_port)
+      for (const auto& f : faults)
+        if (f.kind == emulator::FaultKind::unplug || f.kind == emulator::FaultKind::garbage ||
+            f.kind == emulator::FaultKind::oversize)
+          throw InputError(f.origin +
+                           ": not with --device-time or --jitter-ms over UDP (the timed port sends whole frames only)");
+    std::FILE* truth = nullptr;
+    if (!truth_file.empty() && !(truth = std::fopen(truth_file.c_str(), "w")))
+      throw InputError("--truth-times " + truth_file + ": cannot write it");
+    if (truth) std::fprintf(truth, "id,seq,first_field,device_time_s,sample_time_ns\n");
 
     // --- the link, the faults, the loop
     rt::LoopOptions loop_options;
@@ -206,7 +258,12 @@ int main(int argc, char** argv) {
     std::string error;
     if (!link.open(error)) throw InputError(error);
     emulator::FaultInjector injector(std::move(faults), static_cast<uint64_t>(seed));
-    Transmitter tx(injector, link);
+    const emulator::DeviceClockModel clock{wall_time_ns(), clock_offset, clock_drift_ppm};
+    std::unique_ptr<emulator::TimedUdpPort> timed;
+    if (timed_port)
+      timed = std::make_unique<emulator::TimedUdpPort>(link.fd(), clock, jitter_ms * 1e-3, static_cast<uint64_t>(seed));
+    Transmitter tx(injector, link, timed.get(), truth);
+    uint16_t time_response_seq = 0;
     link::FrameDecoder decoder;
 
     spdlog::info("robot {} on {}, step {} s, {}; watchdog {} ms; {}; {} fault(s), seed {}", device.robot(),
@@ -229,16 +286,34 @@ int main(int argc, char** argv) {
             reopens = link.counters().reopens;
             decoder.reset();
           }
-          link.poll([&](const uint8_t* bytes, std::size_t n) {
-            decoder.feed(bytes, n, [&](const link::Frame& f) { device.on_frame(f, now); });
-          });
+          const auto on_bytes = [&](const uint8_t* bytes, std::size_t n) {
+            decoder.feed(bytes, n, [&](const link::Frame& f) {
+              if (f.id == link::kTimeRequestId && f.payload_size == 24) {
+                // The pty's time responder: at the tick (the timed UDP port answers on arrival).
+                uint8_t payload[24];
+                std::memcpy(payload, f.payload, 8);
+                link::put_f64_le(payload + 8, clock.at(wall_time_ns()));
+                link::put_f64_le(payload + 16, clock.at(wall_time_ns()));
+                tx.send(link::kTimeResponseId, time_response_seq++, payload, sizeof payload);
+                return;
+              }
+              device.on_frame(f, now);
+            });
+          };
+          if (timed)
+            timed->poll(on_bytes);
+          else
+            link.poll(on_bytes);
           device.check_watchdog(now);
           injector.tick(static_cast<double>(t.deadline_ns - t0) * 1e-9, link);
           // The step is the grid's, from the deadline; steps missed in an overrun run first.
           const int64_t k = (t.deadline_ns - first_deadline) / period;
+          const int64_t wall = wall_time_ns();  // the samples of this tick are taken now
+          tx.set_sample_time(wall, clock.at(wall));
+          device.set_sample_time(clock.at(wall));
           for (int64_t j = std::max(last_k + 1, k - kMaxCatchUpSteps); j <= k; ++j, ++steps) device.step(j, tx);
           last_k = k;
-          if (injector.sending(link)) link.flush(now);
+          if (!timed && injector.sending(link)) link.flush(now);
           return !g_stop.load(std::memory_order_relaxed) && t.deadline_ns + period < end_ns;
         },
         first_deadline);
@@ -268,7 +343,16 @@ int main(int argc, char** argv) {
                              {"watchdog_tripped", device.watchdog_tripped()},
                              {"run_s", static_cast<double>(monotonic_ns() - t0) * 1e-9},
                              {"overruns", ls.overruns},
-                             {"jitter_p99_us", ls.jitter_p99_us}};
+                             {"jitter_p99_us", ls.jitter_p99_us},
+                             {"device_time", device_time}};
+    if (timed) {
+      const auto tc = timed->counters();
+      j["timed_port"] = {{"time_requests", tc.time_requests}, {"datagrams_in", tc.datagrams_in},
+                         {"datagrams_out", tc.datagrams_out}, {"ring_drops", tc.ring_drops},
+                         {"send_errors", tc.send_errors},     {"jitter_ms", jitter_ms}};
+    }
+    timed.reset();
+    if (truth) std::fclose(truth);
     link.close();
     std::printf("%s\n", j.dump().c_str());
     std::fflush(stdout);

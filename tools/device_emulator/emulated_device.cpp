@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "plexus/base/input_error.hpp"
 #include "robot_frames.hpp"
 
 namespace plexus::emulator {
@@ -71,12 +72,25 @@ EmulatedDevice::EmulatedDevice(scenario::Scenario& sc, int64_t watchdog_ns)
     const std::size_t nf = r.layout->fields.size();
     for (std::size_t i = 0; i < nf; ++i)
       link::put_f64_le(payload_ + 8 * i, r.field[i] >= 0 ? sample.values[static_cast<std::size_t>(r.field[i])] : 0.0);
+    std::size_t n = 8 * nf;
+    if (device_time_) {
+      link::put_f64_le(payload_ + n, sample_time_);
+      n += 8;
+    }
     ++c_.frames_produced;
-    out_->send(r.layout->id, r.seq++, payload_, 8 * nf);
+    out_->send(r.layout->id, r.seq++, payload_, n);
   };
 }
 
 void EmulatedDevice::start(int64_t now_ns) { last_cmd_ns_ = now_ns; }
+
+void EmulatedDevice::enable_device_time() {
+  for (const OutputRoute& r : routes_)
+    if (r.layout->payload_size() + 8 > link::kMaxPayload)
+      throw InputError("frame " + hex(r.layout->id) +
+                       " has no room for the device time (16 fields at most, the time included)");
+  device_time_ = true;
+}
 
 void EmulatedDevice::on_frame(const link::Frame& f, int64_t now_ns) {
   if (f.id == link::kStopId) {

@@ -56,6 +56,13 @@ class EmulatedDevice {
   void check_watchdog(int64_t now_ns);
   /// Runs base step k; every sample produced goes to `out` as its frame.
   void step(int64_t k, FrameOutput& out);
+  /// Device time (docs/bridges.md, "Device time"): from now on every device -> host frame
+  /// carries one more f64 after its fields, the time set by set_sample_time().
+  /// Throws InputError if a frame has no room for it (16 fields at most, the time included).
+  void enable_device_time();
+  bool device_time() const { return device_time_; }
+  /// The device clock's reading (s) for the samples of the next step().
+  void set_sample_time(double device_s) { sample_time_ = device_s; }
 
   const std::string& robot() const { return robot_; }
   /// One line: the frames it sends and the command it reads.
@@ -92,7 +99,9 @@ class EmulatedDevice {
   int64_t last_cmd_ns_ = 0;
 
   FrameOutput* out_ = nullptr;  // during step()
-  uint8_t payload_[link::kMaxPayload] = {};
+  bool device_time_ = false;
+  double sample_time_ = 0.0;
+  uint8_t payload_[link::kMaxPayload + 8] = {};  // + the device time
   scenario::StepExecutor::RemoteInput remote_;
   scenario::StepExecutor::OutputSink sink_;
   DeviceCounters c_;

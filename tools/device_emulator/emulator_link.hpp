@@ -60,6 +60,8 @@ class EmulatorLink {
   /// Opens again after close(); false (counted, logged at most once a second) on failure.
   bool reopen();
   bool is_open() const { return fd_ >= 0; }
+  /// The pty master or the UDP socket (-1 while closed).
+  int fd() const { return fd_; }
   /// "pty /tmp/x/tty -> /dev/pts/7", "udp 127.0.0.1:47002 -> 127.0.0.1:47001".
   std::string describe() const;
 

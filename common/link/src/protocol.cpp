@@ -35,6 +35,20 @@ std::vector<MessageLayout> make_layouts() {
        "BalancingTruth",
        {"x", "v", "theta", "theta_dot", "x_ddot", "theta_ddot"},
        "ground truth: travel, speed, tilt, tilt rate, acceleration, tilt acceleration"},
+      // --- device time (docs/bridges.md "Device time")
+      {kTimeResponseId,
+       D::to_host,
+       "",
+       "",
+       {"t1", "t2", "t3"},
+       "time response: the request's t1 echoed, device clock at its arrival (t2) and at this frame's departure (t3), "
+       "s"},
+      {kTimeRequestId,
+       D::to_device,
+       "",
+       "",
+       {"t1", "reserved1", "reserved2"},
+       "time request: host clock at departure (t1, s); reserved fields zero (the request is as long as the response)"},
       // --- commands
       {0x80,
        D::to_device,

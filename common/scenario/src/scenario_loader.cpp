@@ -327,6 +327,15 @@ struct Loader {
   }
 
   /// robots.<r>.source: a type name, or a map with `type` and that type's keys.
+  // A bridge's device time (docs/bridges.md, "Device time"): device_time, time_sync_hz.
+  static void device_time(const YamlMap& m, RobotSource& src) {
+    src.device_time = m.optional<bool>("device_time", src.device_time);
+    src.time_sync_hz = m.optional<double>("time_sync_hz", src.time_sync_hz);
+    if (!(src.time_sync_hz >= 1.0 && src.time_sync_hz <= 200.0))
+      m.fail("time_sync_hz", "expected 1 .. 200 exchanges per second");
+    if (m.has("time_sync_hz") && !src.device_time) m.fail("time_sync_hz", "only with device_time: true");
+  }
+
   void load_source(const YamlMap& robot, const std::string& rpath, const std::string& r) {
     RobotSource src;
     const YAML::Node node = robot.node("source");
@@ -368,11 +377,13 @@ struct Loader {
           if (src.baud < 115200 || src.baud > 1000000) m.fail("baud", "expected 115200 .. 1000000");
           src.link_timeout_s = positive("link_timeout", src.link_timeout_s);
           src.retry_s = positive("retry", src.retry_s);
+          device_time(m, src);
           break;
         case RobotSource::Type::udp_bridge:
           src.bind = m.required<std::string>("bind");
           src.peer = m.required<std::string>("peer");
           src.link_timeout_s = positive("link_timeout", src.link_timeout_s);
+          device_time(m, src);
           break;
         case RobotSource::Type::replay: {
           const std::string rec = m.required<std::string>("recording");

@@ -21,6 +21,11 @@ TEST(BridgeProtocol, EveryMessageBindsToItsIdlType) {
       EXPECT_TRUE(l.fields.empty());
       continue;
     }
+    if (l.id == link::kTimeRequestId || l.id == link::kTimeResponseId) {  // no topic: the link's own
+      EXPECT_EQ(l.fields.size(), 3u);
+      EXPECT_EQ(*l.topic, '\0');
+      continue;
+    }
     scenario::SignalSpec spec;
     spec.name = std::string("r1/") + l.topic;
     spec.producer = "test";
@@ -132,6 +137,23 @@ TEST(RobotSource, BadSourcesAreRefusedWithTheirKey) {
   bad("{type: udp_bridge, bind: 127.0.0.1:1}", "peer");
   bad("{type: serial_bridge, device: /dev/x, colour: red}", "colour");
   bad("{type: serial_bridge, device: /dev/x, retry: -1}", "robots.r1.source.retry");
+  bad("{type: udp_bridge, bind: 127.0.0.1:1, peer: 127.0.0.1:2, device_time: true, time_sync_hz: 0.5}",
+      "robots.r1.source.time_sync_hz");
+  bad("{type: udp_bridge, bind: 127.0.0.1:1, peer: 127.0.0.1:2, time_sync_hz: 20}", "only with device_time");
+  bad("{type: serial_bridge, device: /dev/x, device_time: maybe}", "robots.r1.source.device_time");
+}
+
+TEST(RobotSource, DeviceTimeIsReadFromTheSource) {
+  const auto sc = robot(
+      "name: t\nstep: 0.01\nrobots:\n  r1:\n    source: {type: udp_bridge, bind: 127.0.0.1:1, peer: 127.0.0.1:2, "
+      "device_time: true, time_sync_hz: 20}\n    plant: {type: unicycle}\n");
+  const auto& src = sc.sources.at("r1");
+  EXPECT_TRUE(src.device_time);
+  EXPECT_EQ(src.time_sync_hz, 20.0);
+  const auto plain = robot(
+      "name: t\nstep: 0.01\nrobots:\n  r1:\n    source: {type: serial_bridge, device: /dev/x}\n    plant: {type: "
+      "unicycle}\n");
+  EXPECT_FALSE(plain.sources.at("r1").device_time);
 }
 
 }  // namespace

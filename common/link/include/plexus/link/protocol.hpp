@@ -33,6 +33,14 @@ struct MessageLayout {
 /// fresh command arrives.
 inline constexpr uint8_t kStopId = 0x8F;
 
+/// Device time (docs/bridges.md, "Device time"): the two-way exchange that maps the
+/// device's clock to the host's. Host -> device: `t1` (the host's send time, s, echoed back)
+/// and two reserved f64 (zero), so that the request is as long as the response and their
+/// times on the wire are equal. Device -> host: `t1` echoed, `t2` (the device's clock when
+/// the request arrived) and `t3` (when the response left), both s. No topic.
+inline constexpr uint8_t kTimeRequestId = 0x8E;
+inline constexpr uint8_t kTimeResponseId = 0x0E;
+
 /// Every message of protocol version kProtocolVersion, by id.
 const std::vector<MessageLayout>& message_layouts();
 /// By id; nullptr if the id is not in the protocol.

@@ -79,6 +79,8 @@ struct RobotSource {
   std::string bind, peer;       ///< udp_bridge: ADDR:PORT of the bridge and of the device
   double link_timeout_s = 0.5;  ///< bridges: no valid frame for this long -> DEGRADED
   double retry_s = 0.5;         ///< bridges: between attempts to open an absent device
+  bool device_time = false;     ///< bridges: the device stamps its samples (docs/bridges.md, "Device time")
+  double time_sync_hz = 50.0;   ///< bridges with device_time: time exchanges per second, 1 .. 200
   std::string recording;        ///< replay: the recording (plexus record), absolute
 };
 const char* to_string(RobotSource::Type t);
