@@ -25,8 +25,8 @@ namespace plexus::bridge {
 namespace {
 
 constexpr int64_t kSecond = 1'000'000'000;
-constexpr std::size_t kLatencyWindow = 16384;  // most recent frames kept for percentiles
-constexpr std::size_t kMaxCommandFields = link::kMaxPayload / 8;
+constexpr std::size_t kLatencyWindow = 16384;                 // most recent frames kept for percentiles
+constexpr std::size_t kMaxCommandFields = link::kMaxPayload;  // a field is at least a byte
 
 /// A command on its way from the command thread to the I/O thread (through a pipe: one
 /// write of a trivially copyable record below PIPE_BUF is atomic, and neither side locks).
@@ -173,10 +173,8 @@ struct Bridge::Impl {
 
   void send_command(const CommandMessage& m) {
     uint8_t payload[link::kMaxPayload];
-    const auto& fields = routes.command.layout->fields;
-    for (std::size_t i = 0; i < fields.size(); ++i) link::put_f64_le(payload + 8 * i, m.values[i]);
-    if (send_frame(routes.command.layout->id, payload, fields.size() * 8))
-      c.commands_forwarded.fetch_add(1, std::memory_order_relaxed);
+    const std::size_t n = routes.command.layout->encode(m.values, payload);
+    if (send_frame(routes.command.layout->id, payload, n)) c.commands_forwarded.fetch_add(1, std::memory_order_relaxed);
   }
 
   template <class... Args>
@@ -207,12 +205,12 @@ struct Bridge::Impl {
            f.payload_size, expected, opt.device_time ? " (with the device time)" : "");
       return;
     }
-    for (std::size_t i = 0; i < r.layout->fields.size(); ++i) sample.values[i] = link::get_f64_le(f.payload + 8 * i);
+    r.layout->decode(f.payload, sample.values.data());
     std::size_t bad = 0;
     if (const auto why = r.publisher->wire().check(sample, bad); why != distributed::Rejection::none) {
       c.rejected_frames.fetch_add(1, std::memory_order_relaxed);
       warn("{}: frame 0x{:02x} for {} refused: {} ({} = {})", opt.service, f.id, r.spec->name,
-           distributed::to_string(why), r.layout->fields[bad], sample.values[bad]);
+           distributed::to_string(why), r.layout->fields[bad].name, sample.values[bad]);
       return;
     }
     int64_t data_time = arrived_wall;

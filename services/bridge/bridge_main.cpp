@@ -135,6 +135,16 @@ int main(int argc, char** argv) {
         src["peer"] = peer;
       }
       if (link_timeout > 0) src["link_timeout"] = link_timeout;
+      // The link comes from the options; what the device speaks (its own frames, its
+      // clock) from the robot section's `source`, if it has one.
+      try {
+        const YAML::Node own = alone.params_file.empty() ? YAML::Node() : YAML::LoadFile(alone.params_file)["source"];
+        if (own && own.IsMap())
+          for (const char* key : {"frames", "device_time", "time_sync_hz"})
+            if (own[key]) src[key] = own[key];
+      } catch (const YAML::Exception&) {
+        // load_standalone reports the file's error with its line
+      }
       if (device_time) src["device_time"] = true;
       if (app.count("--time-sync-hz")) src["time_sync_hz"] = time_sync_hz;
       alone.extra = YAML::Node(YAML::NodeType::Map);

@@ -15,7 +15,8 @@ namespace {
 /// The signal with the layout's fields: the bridge publishes every member the frame carries.
 std::unique_ptr<scenario::SignalSpec> framed_spec(const scenario::SignalSpec& s, const link::MessageLayout& l) {
   auto spec = std::make_unique<scenario::SignalSpec>(s);
-  spec->fields.assign(l.fields.begin(), l.fields.end());
+  spec->fields.clear();
+  for (const auto& f : l.fields) spec->fields.push_back(f.name);
   return spec;
 }
 
@@ -27,6 +28,7 @@ BridgeRoutes make_routes(scenario::Scenario& sc, rt::Participant& p, const rt::Q
   const scenario::StepExecutor wiring(sc);
   const RobotFrames frames = robot_frames(sc, wiring, "a bridge");
   r.robot = frames.robot;
+  r.table = frames.table;
   if (!frames.command)
     throw InputError(sc.file + ": robot " + r.robot + " reads no command; a bridge forwards exactly one");
   const auto& signals = wiring.signals();

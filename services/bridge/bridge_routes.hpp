@@ -3,8 +3,9 @@
 // A bridge stands in for the plant simulator of one robot, so it publishes exactly the
 // signals that robot's plant and sensors would (same topics, IDL types and QoS profiles:
 // it builds them from the same robot section) and reads the same command. Each signal
-// travels on the link as the frame the protocol defines for its topic and type
-// (plexus/link/protocol.hpp); a signal without one is a configuration error.
+// travels on the link as the frame its robot's table (the source's own `frames`, or the
+// protocol's built-in table, plexus/link/protocol.hpp) has for its topic and type; a signal
+// without one is a configuration error.
 #pragma once
 
 #include <array>
@@ -39,6 +40,7 @@ struct CommandRoute {
 
 struct BridgeRoutes {
   std::string robot;
+  std::shared_ptr<const link::FrameTable> table;  ///< what the layouts point into
   std::vector<SensorRoute> sensors;
   std::array<int16_t, 256> sensor_by_id{};  ///< frame id -> index in sensors, -1 if none
   CommandRoute command;

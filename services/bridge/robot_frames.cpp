@@ -1,6 +1,9 @@
 #include "robot_frames.hpp"
 
+#include <cstdio>
+
 #include "plexus/base/input_error.hpp"
+#include "plexus/link/frame.hpp"
 
 namespace plexus::bridge {
 namespace {
@@ -11,12 +14,46 @@ std::string where_of(const scenario::Scenario& sc, const std::string& component)
   return sc.file;
 }
 
-std::string no_frame(const scenario::SignalSpec& s) {
-  return s.name + " (" + (s.message.empty() ? "no IDL type" : s.message) +
-         ") has no frame in the bridge protocol (docs/bridges.md lists the frames)";
+std::string no_frame(const scenario::SignalSpec& s, bool declared) {
+  return s.name + " (" + (s.message.empty() ? "no IDL type" : s.message) + ") has no frame in " +
+         (declared ? "the source's own `frames`" : "the bridge protocol (docs/bridges.md lists the frames)");
 }
 
 }  // namespace
+
+std::shared_ptr<const link::FrameTable> frame_table(const std::vector<scenario::DeclaredFrame>& frames,
+                                                    std::size_t extra_bytes) {
+  if (frames.empty()) return {&link::message_layouts(), [](const link::FrameTable*) {}};  // static: not owned
+  auto table = std::make_shared<link::FrameTable>();
+  for (const auto& d : frames) {
+    const auto id = static_cast<uint8_t>(d.id);
+    char hex[8];
+    std::snprintf(hex, sizeof hex, "0x%02X", id);
+    if (link::is_link_id(id))
+      throw InputError(d.where + ": id " + hex + " is the link's own (STOP 0x8F, time exchange 0x0E and 0x8E)");
+    if ((id >= 0x80) != d.to_device)
+      throw InputError(d.where + ": id " + hex + ": " + (d.to_device ? "host -> device" : "device -> host") +
+                       " ids are " + (d.to_device ? "0x80 .. 0xFF" : "0x00 .. 0x7F"));
+    link::MessageLayout l;
+    l.id = id;
+    l.direction = d.to_device ? link::Direction::to_device : link::Direction::to_host;
+    l.topic = d.topic;
+    l.idl_type = d.type;
+    l.meaning = d.meaning;
+    for (const auto& f : d.fields) {
+      link::WireField w{f.name, link::WireKind::f64, f.scale};
+      link::parse_wire_kind(f.wire, w.kind);  // checked by the scenario loader
+      l.fields.push_back(w);
+    }
+    const std::size_t extra = d.to_device ? 0 : extra_bytes;
+    if (l.payload_size() + extra > link::kMaxPayload)
+      throw InputError(d.where + ": a payload of " + std::to_string(l.payload_size()) + " bytes" +
+                       (extra ? " and the device time's 8" : "") + " is longer than a frame's " +
+                       std::to_string(link::kMaxPayload));
+    table->push_back(std::move(l));
+  }
+  return table;
+}
 
 std::string robot_topic(const std::string& signal, const std::string& robot) {
   const std::string prefix = robot + "/";
@@ -35,11 +72,16 @@ RobotFrames robot_frames(const scenario::Scenario& sc, const scenario::StepExecu
     f.robot = robot;
   }
   if (f.robot.empty()) throw InputError(sc.file + ": no robot (plant and sensors) for " + who);
+  const auto src = sc.sources.find(f.robot);
+  f.table =
+      src == sc.sources.end() ? frame_table({}, 0) : frame_table(src->second.frames, src->second.device_time ? 8 : 0);
   const auto& signals = wiring.signals();
   for (std::size_t s : wiring.local_outputs()) {
     const auto& spec = signals[s];
-    const auto* layout = link::find_layout(robot_topic(spec.name, f.robot), spec.message, link::Direction::to_host);
-    if (!layout) throw InputError(where_of(sc, spec.producer) + ": " + no_frame(spec));
+    const auto* layout =
+        link::find_layout(*f.table, robot_topic(spec.name, f.robot), spec.message, link::Direction::to_host);
+    if (!layout)
+      throw InputError(where_of(sc, spec.producer) + ": " + no_frame(spec, f.table.get() != &link::message_layouts()));
     f.outputs.push_back({s, layout});
   }
   const auto commands = wiring.remote_inputs();
@@ -51,8 +93,11 @@ RobotFrames robot_frames(const scenario::Scenario& sc, const scenario::StepExecu
   }
   if (commands.size() == 1) {
     const auto& spec = signals[commands.front()];
-    const auto* layout = link::find_layout(robot_topic(spec.name, f.robot), spec.message, link::Direction::to_device);
-    if (!layout) throw InputError(sc.file + ": robot " + f.robot + ": " + no_frame(spec));
+    const auto* layout =
+        link::find_layout(*f.table, robot_topic(spec.name, f.robot), spec.message, link::Direction::to_device);
+    if (!layout)
+      throw InputError(sc.file + ": robot " + f.robot + ": " +
+                       no_frame(spec, f.table.get() != &link::message_layouts()));
     f.command = RobotFrames::Route{commands.front(), layout};
   }
   return f;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -15,6 +16,8 @@
 namespace plexus::bridge {
 
 struct RobotFrames {
+  /// The robot's frame table: its source's own (`source.frames`), or the built-in one.
+  std::shared_ptr<const link::FrameTable> table;
   struct Route {
     std::size_t signal = 0;  ///< index in the wiring's signals
     const link::MessageLayout* layout = nullptr;
@@ -26,10 +29,16 @@ struct RobotFrames {
 
 /// The frames of the scenario's one robot. `who` names the program in errors ("a bridge").
 /// Throws InputError naming the component for a component that is not a plant or a sensor,
-/// a second robot, an output or a command the protocol has no frame for, or more than one
-/// command.
+/// a second robot, an output or a command the table has no frame for, or more than one
+/// command; and for a declared table (frame_table()) that cannot be one.
 RobotFrames robot_frames(const scenario::Scenario& sc, const scenario::StepExecutor& wiring, const std::string& who);
 
+/// A source's declared frames as a table: throws InputError naming the entry for an id of
+/// the link's own (STOP 0x8F, the time exchange 0x0E and 0x8E), a device -> host id at or
+/// above 0x80 or a host -> device id below it, or a payload longer than a frame
+/// (`extra_bytes`: the device time, with device_time). Empty: the built-in table.
+std::shared_ptr<const link::FrameTable> frame_table(const std::vector<scenario::DeclaredFrame>& frames,
+                                                    std::size_t extra_bytes);
 /// A signal's topic below its robot: "r1/truth/state" -> "truth/state".
 std::string robot_topic(const std::string& signal, const std::string& robot);
 

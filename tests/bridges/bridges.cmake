@@ -1,6 +1,6 @@
 # Hardware bridges (docs/bridges.md): every source of a robot's topics keeps the simulator's
 # contract. Included from tests/CMakeLists.txt. DDS domains 130-139 are this file's (140-145:
-# interop.adjacent_domains_*; 146-149: other tests).
+# interop.adjacent_domains_*; 146-149: other tests; 96-98: the device-time and declared-frames tests).
 #
 # contract_probe checks one source from outside (discovery: topics, types, QoS; measured
 # rates, headers, values; a step command and a stale one); contract.sh starts the source
@@ -77,10 +77,22 @@ endforeach()
 # stamps beside them. The bridge on each vendor, `plexus topic echo` on the other. RUN_SERIAL
 # and realtime: the map's accuracy rests on the two ends' wake-ups being alike, which a
 # CPU-bound neighbour makes unequal (the realtime lanes of CI's first phase; about 35 s).
-foreach(variant "fast;148" "cyclone;228")
+foreach(variant "fast;148" "cyclone;98")
   list(POP_FRONT variant vendor domain)
   add_test(NAME bridges.device_time_${vendor}
            COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/device_time.sh $<TARGET_FILE_DIR:plexus>
                    ${CMAKE_BINARY_DIR}/test-runs/bridges/device_time_${vendor} ${domain} ${vendor})
   set_tests_properties(bridges.device_time_${vendor} PROPERTIES LABELS "bridges;realtime" TIMEOUT 120 RUN_SERIAL TRUE)
+endforeach()
+
+# A device's own frames (tests/bridges/declared_frames.sh; docs/bridges.md, "A device's own
+# frames"): encoder_board_robot.yaml's table (an i32 of 10 um, an f32, a u8 of 1 mm, ids of
+# its own) played by the emulator and read by udp_bridge from the same file; every value on
+# the topic within its wire type's quantisation of the true one. About 10 s.
+foreach(variant "fast;96" "cyclone;97")
+  list(POP_FRONT variant vendor domain)
+  add_test(NAME bridges.declared_frames_${vendor}
+           COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/declared_frames.sh $<TARGET_FILE_DIR:plexus>
+                   ${CMAKE_BINARY_DIR}/test-runs/bridges/declared_frames_${vendor} ${domain} ${vendor})
+  set_tests_properties(bridges.declared_frames_${vendor} PROPERTIES LABELS "bridges;light" TIMEOUT 60)
 endforeach()

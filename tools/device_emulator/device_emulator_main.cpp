@@ -51,18 +51,11 @@ void on_signal(int) { g_stop = true; }
 
 /// A produced frame's way out: discarded while stalled or unplugged, else poisoned,
 /// encoded, damaged as the faults say, and queued on the link (or on the timed UDP port).
-/// With a truth file, each sample frame's true time is written there first.
 class Transmitter final : public emulator::FrameOutput {
  public:
-  Transmitter(emulator::FaultInjector& faults, emulator::EmulatorLink& link, emulator::TimedUdpPort* timed,
-              std::FILE* truth)
-      : faults_(faults), link_(link), timed_(timed), truth_(truth) {}
-  /// The host time (CLOCK_REALTIME ns) and device time of the samples of the next step.
-  void set_sample_time(int64_t wall_ns, double device_s) { wall_ns_ = wall_ns, device_s_ = device_s; }
+  Transmitter(emulator::FaultInjector& faults, emulator::EmulatorLink& link, emulator::TimedUdpPort* timed)
+      : faults_(faults), link_(link), timed_(timed) {}
   void send(uint8_t id, uint16_t seq, uint8_t* payload, std::size_t n) override {
-    if (truth_ && id < 0x80 && id != link::kTimeResponseId && n >= 8)
-      std::fprintf(truth_, "%u,%u,%.17g,%.17g,%lld\n", id, seq, link::get_f64_le(payload), device_s_,
-                   static_cast<long long>(wall_ns_));
     if (!faults_.sending(link_)) {
       ++discarded;
       return;
@@ -81,9 +74,6 @@ class Transmitter final : public emulator::FrameOutput {
   emulator::FaultInjector& faults_;
   emulator::EmulatorLink& link_;
   emulator::TimedUdpPort* timed_;
-  std::FILE* truth_;
-  int64_t wall_ns_ = 0;
-  double device_s_ = 0.0;
   uint8_t buf_[link::kMaxEncodedFrame] = {};
 };
 
@@ -148,7 +138,8 @@ int main(int argc, char** argv) {
   app.add_option("--jitter-ms", jitter_ms,
                  "UDP: a random delay per frame, 0 .. this many ms, each way, in order (default 0)");
   app.add_option("--truth-times", truth_file,
-                 "CSV: per sample frame, id, seq, first field, device time (s), true host time (CLOCK_REALTIME ns)");
+                 "CSV: per sample frame, id, seq, first field, device time (s), true host time (CLOCK_REALTIME ns), "
+                 "every field's SI value before encoding");
   app.add_option("--log-level", log_level, "trace, debug, info, warn, error, critical or off");
   try {
     app.parse(argc, argv);
@@ -247,7 +238,8 @@ int main(int argc, char** argv) {
     std::FILE* truth = nullptr;
     if (!truth_file.empty() && !(truth = std::fopen(truth_file.c_str(), "w")))
       throw InputError("--truth-times " + truth_file + ": cannot write it");
-    if (truth) std::fprintf(truth, "id,seq,first_field,device_time_s,sample_time_ns\n");
+    if (truth) std::fprintf(truth, "id,seq,first_field,device_time_s,sample_time_ns,fields\n");
+    device.set_truth_log(truth);
 
     // --- the link, the faults, the loop
     rt::LoopOptions loop_options;
@@ -262,7 +254,7 @@ int main(int argc, char** argv) {
     std::unique_ptr<emulator::TimedUdpPort> timed;
     if (timed_port)
       timed = std::make_unique<emulator::TimedUdpPort>(link.fd(), clock, jitter_ms * 1e-3, static_cast<uint64_t>(seed));
-    Transmitter tx(injector, link, timed.get(), truth);
+    Transmitter tx(injector, link, timed.get());
     uint16_t time_response_seq = 0;
     link::FrameDecoder decoder;
 
@@ -309,8 +301,7 @@ int main(int argc, char** argv) {
           // The step is the grid's, from the deadline; steps missed in an overrun run first.
           const int64_t k = (t.deadline_ns - first_deadline) / period;
           const int64_t wall = wall_time_ns();  // the samples of this tick are taken now
-          tx.set_sample_time(wall, clock.at(wall));
-          device.set_sample_time(clock.at(wall));
+          device.set_sample_time(wall, clock.at(wall));
           for (int64_t j = std::max(last_k + 1, k - kMaxCatchUpSteps); j <= k; ++j, ++steps) device.step(j, tx);
           last_k = k;
           if (!timed && injector.sending(link)) link.flush(now);

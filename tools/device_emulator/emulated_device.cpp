@@ -16,7 +16,7 @@ std::string hex(uint8_t id) {
   return buf;
 }
 
-int16_t index_of(const std::vector<std::string>& names, const char* name) {
+int16_t index_of(const std::vector<std::string>& names, const std::string& name) {
   for (std::size_t i = 0; i < names.size(); ++i)
     if (names[i] == name) return static_cast<int16_t>(i);
   return -1;
@@ -29,6 +29,7 @@ EmulatedDevice::EmulatedDevice(scenario::Scenario& sc, int64_t watchdog_ns)
   // Which frame carries which signal: the bridge's own answer (services/bridge/robot_frames).
   const bridge::RobotFrames frames = bridge::robot_frames(sc, exec_, "the device emulator");
   robot_ = frames.robot;
+  table_ = frames.table;
   const auto& signals = exec_.signals();
   route_of_.assign(signals.size(), -1);
   for (const auto& [s, layout] : frames.outputs) {
@@ -37,7 +38,7 @@ EmulatedDevice::EmulatedDevice(scenario::Scenario& sc, int64_t watchdog_ns)
     r.layout = layout;
     r.field.fill(-1);
     for (std::size_t i = 0; i < layout->fields.size() && i < r.field.size(); ++i)
-      r.field[i] = index_of(spec.fields, layout->fields[i]);
+      r.field[i] = index_of(spec.fields, layout->fields[i].name);
     route_of_[s] = static_cast<int16_t>(routes_.size());
     routes_.push_back(r);
     if (spec.plant_state && truth_signal_ == SIZE_MAX) truth_signal_ = s;
@@ -49,7 +50,7 @@ EmulatedDevice::EmulatedDevice(scenario::Scenario& sc, int64_t watchdog_ns)
     cmd_field_.assign(spec.fields.size(), -1);
     for (std::size_t f = 0; f < spec.fields.size(); ++f)
       for (std::size_t i = 0; i < cmd_layout_->fields.size(); ++i)
-        if (spec.fields[f] == cmd_layout_->fields[i]) cmd_field_[f] = static_cast<int16_t>(i);
+        if (spec.fields[f] == cmd_layout_->fields[i].name) cmd_field_[f] = static_cast<int16_t>(i);
   }
 
   // The callbacks are built once: std::function copies nothing per step, and neither
@@ -70,9 +71,16 @@ EmulatedDevice::EmulatedDevice(scenario::Scenario& sc, int64_t watchdog_ns)
     if (ri < 0) return;
     OutputRoute& r = routes_[static_cast<std::size_t>(ri)];
     const std::size_t nf = r.layout->fields.size();
+    double values[link::kMaxPayload];
     for (std::size_t i = 0; i < nf; ++i)
-      link::put_f64_le(payload_ + 8 * i, r.field[i] >= 0 ? sample.values[static_cast<std::size_t>(r.field[i])] : 0.0);
-    std::size_t n = 8 * nf;
+      values[i] = r.field[i] >= 0 ? sample.values[static_cast<std::size_t>(r.field[i])] : 0.0;
+    std::size_t n = r.layout->encode(values, payload_);
+    if (truth_log_) {
+      std::fprintf(truth_log_, "%u,%u,%.17g,%.17g,%lld,", r.layout->id, r.seq, nf ? values[0] : 0.0, sample_time_,
+                   static_cast<long long>(sample_wall_ns_));
+      for (std::size_t i = 0; i < nf; ++i) std::fprintf(truth_log_, i ? " %.17g" : "%.17g", values[i]);
+      std::fputc('\n', truth_log_);
+    }
     if (device_time_) {
       link::put_f64_le(payload_ + n, sample_time_);
       n += 8;
@@ -110,9 +118,9 @@ void EmulatedDevice::on_frame(const link::Frame& f, int64_t now_ns) {
     ++c_.commands_refused;
     return;
   }
-  double v[link::kMaxPayload / 8];
+  double v[link::kMaxPayload];  // one field is at least a byte
+  cmd_layout_->decode(f.payload, v);
   for (std::size_t i = 0; i < cmd_layout_->fields.size(); ++i) {
-    v[i] = link::get_f64_le(f.payload + 8 * i);
     if (!std::isfinite(v[i])) {
       ++c_.commands_refused;
       return;

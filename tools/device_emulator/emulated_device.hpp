@@ -12,6 +12,8 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -61,8 +63,12 @@ class EmulatedDevice {
   /// Throws InputError if a frame has no room for it (16 fields at most, the time included).
   void enable_device_time();
   bool device_time() const { return device_time_; }
-  /// The device clock's reading (s) for the samples of the next step().
-  void set_sample_time(double device_s) { sample_time_ = device_s; }
+  /// The host time (CLOCK_REALTIME ns) and the device clock's reading (s) of the samples
+  /// of the next step().
+  void set_sample_time(int64_t wall_ns, double device_s) { sample_wall_ns_ = wall_ns, sample_time_ = device_s; }
+  /// Where each sample frame's record goes (`--truth-times`): id, seq, first field, device
+  /// time, true host time, and every field's SI value before encoding. nullptr: none.
+  void set_truth_log(std::FILE* f) { truth_log_ = f; }
 
   const std::string& robot() const { return robot_; }
   /// One line: the frames it sends and the command it reads.
@@ -75,12 +81,14 @@ class EmulatedDevice {
  private:
   struct OutputRoute {
     const link::MessageLayout* layout = nullptr;
-    std::array<int16_t, link::kMaxPayload / 8> field{};  ///< per layout field: the signal's field index, -1: none
+    std::array<int16_t, link::kMaxPayload>
+        field{};  ///< per layout field (at least a byte each): the signal's field index, -1: none
     uint16_t seq = 0;
   };
 
   scenario::Scenario& sc_;
   scenario::StepExecutor exec_;
+  std::shared_ptr<const link::FrameTable> table_;  // what the routes' layouts point into
   std::string robot_;
   std::vector<int16_t> route_of_;  // by signal: index in routes_, -1 if not an output
   std::vector<OutputRoute> routes_;
@@ -101,6 +109,8 @@ class EmulatedDevice {
   FrameOutput* out_ = nullptr;  // during step()
   bool device_time_ = false;
   double sample_time_ = 0.0;
+  int64_t sample_wall_ns_ = 0;
+  std::FILE* truth_log_ = nullptr;
   uint8_t payload_[link::kMaxPayload + 8] = {};  // + the device time
   scenario::StepExecutor::RemoteInput remote_;
   scenario::StepExecutor::OutputSink sink_;

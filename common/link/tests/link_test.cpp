@@ -642,6 +642,51 @@ TEST(Protocol, StopHasNoPayload) {
   EXPECT_EQ(stop->direction, Direction::to_device);
 }
 
+// A device's own wire types (docs/bridges.md, "A device's own frames"): an encoder board's
+// frame with an f32 and scaled integers, worked by hand.
+TEST(Protocol, WireTypesEncodeAndDecodeLittleEndian) {
+  MessageLayout l;
+  l.fields = {{"a", WireKind::f32, 1.0},  {"b", WireKind::i16, 0.001}, {"c", WireKind::u8, 1.0},
+              {"d", WireKind::i32, 1e-4}, {"e", WireKind::u16, 0.5},   {"f", WireKind::i8, 1.0},
+              {"g", WireKind::u32, 1.0},  {"h", WireKind::f64, 1.0}};
+  EXPECT_EQ(l.payload_size(), 4u + 2 + 1 + 4 + 2 + 1 + 4 + 8);
+  const double in[] = {1.5, -1.2344, 200.0, 0.12345, 3.3, -7.0, 70000.0, -2.25};
+  uint8_t p[kMaxPayload] = {};
+  ASSERT_EQ(l.encode(in, p), l.payload_size());
+  // 1.5f = 0x3FC00000; -1234 = 0xFB2E; 200; 1234 (0.12345 / 1e-4 = 1234.5 rounds to even) = 0x04D2;
+  // 3.3 / 0.5 = 6.6 -> 7; -7 = 0xF9; 70000 = 0x00011170; -2.25 = 0xC002000000000000.
+  const Bytes expected = {0x00, 0x00, 0xC0, 0x3F, 0x2E, 0xFB, 0xC8, 0xD2, 0x04, 0x00, 0x00, 0x07, 0x00,
+                          0xF9, 0x70, 0x11, 0x01, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x02, 0xC0};
+  EXPECT_EQ(Bytes(p, p + l.payload_size()), expected);
+  double out[8];
+  l.decode(p, out);
+  EXPECT_EQ(out[0], 1.5);
+  EXPECT_NEAR(out[1], -1.234, 1e-12);  // within the scale's half step of -1.2344
+  EXPECT_EQ(out[2], 200.0);
+  EXPECT_NEAR(out[3], 0.1234, 1e-12);
+  EXPECT_EQ(out[4], 3.5);
+  EXPECT_EQ(out[5], -7.0);
+  EXPECT_EQ(out[6], 70000.0);
+  EXPECT_EQ(out[7], -2.25);
+}
+
+TEST(Protocol, IntegersSaturateAndNonFiniteIsZero) {
+  MessageLayout l;
+  l.fields = {{"a", WireKind::i16, 0.001}, {"b", WireKind::u8, 1.0}, {"c", WireKind::i8, 1.0}};
+  const double in[] = {40.0, -3.0, std::numeric_limits<double>::quiet_NaN()};
+  uint8_t p[kMaxPayload] = {};
+  l.encode(in, p);
+  double out[3];
+  l.decode(p, out);
+  EXPECT_NEAR(out[0], 32.767, 1e-12);  // 40 / 0.001 held at INT16_MAX
+  EXPECT_EQ(out[1], 0.0);              // u8 holds no negative
+  EXPECT_EQ(out[2], 0.0);
+  WireKind k{};
+  EXPECT_TRUE(parse_wire_kind("i16", k));
+  EXPECT_EQ(k, WireKind::i16);
+  EXPECT_FALSE(parse_wire_kind("f16", k));
+}
+
 // --- serial port (on a pseudo-terminal) ---------------------------------------------------
 
 struct Pty {

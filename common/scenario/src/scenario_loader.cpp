@@ -12,6 +12,7 @@
 #include "plexus/base/input_error.hpp"
 #include "plexus/base/logging.hpp"
 #include "plexus/base/yaml_reader.hpp"
+#include "plexus/msg/registry.hpp"
 #include "plexus/scenario/digest.hpp"
 #include "plexus/scenario/format.hpp"
 #include "plexus/scenario/plugins.hpp"
@@ -336,6 +337,69 @@ struct Loader {
     if (m.has("time_sync_hz") && !src.device_time) m.fail("time_sync_hz", "only with device_time: true");
   }
 
+  // A device's own frame table (docs/bridges.md, "A device's own frames"): each entry's
+  // keys, its IDL type, and each field against that type's members.
+  void frames(const YamlMap& m, RobotSource& src) {
+    if (!m.has("frames")) return;
+    const std::string base = m.key_path("frames");
+    const auto entries = m.sequence("frames");
+    if (entries.empty()) m.fail("frames", "expected a list of frames (leave the key out for the built-in table)");
+    for (std::size_t i = 0; i < entries.size(); ++i) {
+      const YamlMap e(entries[i], sc.file, base + "[" + std::to_string(i) + "]");
+      DeclaredFrame f;
+      f.where = e.where() + ": " + base + "[" + std::to_string(i) + "]";
+      f.id = e.required<int>("id");
+      if (f.id < 0 || f.id > 255) e.fail("id", "expected 0 .. 255 (0x00 .. 0xFF)");
+      const std::string dir = e.required<std::string>("direction");
+      if (dir != "to_host" && dir != "to_device")
+        e.fail("direction", "expected to_host or to_device, got '" + dir + "'");
+      f.to_device = dir == "to_device";
+      f.topic = e.required<std::string>("topic");
+      f.type = e.required<std::string>("type");
+      f.meaning = e.optional<std::string>("meaning", "");
+      const msg::WireType* type = msg::find_wire_type(f.type);
+      if (!type) e.fail("type", "no IDL type '" + f.type + "' is known (plexus msg list shows them)");
+      const auto fields = e.sequence("fields");
+      if (fields.empty()) e.fail("fields", "expected the payload's fields, in order");
+      for (std::size_t j = 0; j < fields.size(); ++j) {
+        const YamlMap fm(fields[j], sc.file, e.key_path("fields") + "[" + std::to_string(j) + "]");
+        DeclaredFrame::Field field;
+        field.name = fm.required<std::string>("name");
+        field.wire = fm.optional<std::string>("wire", field.wire);
+        field.scale = fm.optional<double>("scale", field.scale);
+        fm.reject_unknown();
+        const msg::WireSlot* slot = nullptr;
+        for (const auto& sl : type->slots)
+          if (sl.field == field.name) slot = &sl;
+        if (!slot) {
+          std::vector<std::string> known;
+          for (const auto& sl : type->slots)
+            if (sl.primary) known.push_back(sl.field);
+          fm.fail("name", "'" + field.name + "' is not a field of " + f.type + " (" + known_list(known) + ")");
+        }
+        static const std::set<std::string> kWire{"f64", "f32", "i8", "u8", "i16", "u16", "i32", "u32"};
+        if (!kWire.count(field.wire)) fm.fail("wire", "expected f64, f32, i8, u8, i16, u16, i32 or u32");
+        const bool integer_wire = field.wire[0] != 'f';
+        if (!(field.scale > 0.0) || !std::isfinite(field.scale)) fm.fail("scale", "expected a number > 0");
+        if (!integer_wire && fm.has("scale")) fm.fail("scale", "only for integer wire types (SI value = raw * scale)");
+        // What the message member holds: an integer member takes integers only.
+        const bool integer_member = slot->kind != msg::WireSlot::Kind::f64 && slot->kind != msg::WireSlot::Kind::f32;
+        if (integer_member && (!integer_wire || field.scale != std::floor(field.scale)))
+          fm.fail("wire", "member " + std::string(slot->path) + " of " + f.type + " holds integers; " + field.wire +
+                              (integer_wire ? " with scale " + std::to_string(field.scale) : std::string()) +
+                              " does not");
+        for (const auto& other : f.fields)
+          if (other.name == field.name) fm.fail("name", "'" + field.name + "' twice in one frame");
+        f.fields.push_back(field);
+      }
+      e.reject_unknown();
+      for (const auto& other : src.frames)
+        if (other.id == f.id)
+          e.fail("id", "id " + std::to_string(f.id) + " is declared twice (also " + other.where + ")");
+      src.frames.push_back(std::move(f));
+    }
+  }
+
   void load_source(const YamlMap& robot, const std::string& rpath, const std::string& r) {
     RobotSource src;
     const YAML::Node node = robot.node("source");
@@ -378,12 +442,14 @@ struct Loader {
           src.link_timeout_s = positive("link_timeout", src.link_timeout_s);
           src.retry_s = positive("retry", src.retry_s);
           device_time(m, src);
+          frames(m, src);
           break;
         case RobotSource::Type::udp_bridge:
           src.bind = m.required<std::string>("bind");
           src.peer = m.required<std::string>("peer");
           src.link_timeout_s = positive("link_timeout", src.link_timeout_s);
           device_time(m, src);
+          frames(m, src);
           break;
         case RobotSource::Type::replay: {
           const std::string rec = m.required<std::string>("recording");

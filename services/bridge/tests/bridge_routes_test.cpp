@@ -9,6 +9,8 @@
 #include "plexus/link/frame.hpp"
 #include "plexus/link/protocol.hpp"
 #include "plexus/scenario/scenario.hpp"
+#include "plexus/scenario/step_executor.hpp"
+#include "robot_frames.hpp"
 
 namespace plexus::bridge {
 namespace {
@@ -23,14 +25,17 @@ TEST(BridgeProtocol, EveryMessageBindsToItsIdlType) {
     }
     if (l.id == link::kTimeRequestId || l.id == link::kTimeResponseId) {  // no topic: the link's own
       EXPECT_EQ(l.fields.size(), 3u);
-      EXPECT_EQ(*l.topic, '\0');
+      EXPECT_TRUE(l.topic.empty());
       continue;
     }
     scenario::SignalSpec spec;
     spec.name = std::string("r1/") + l.topic;
     spec.producer = "test";
     spec.message = l.idl_type;
-    spec.fields.assign(l.fields.begin(), l.fields.end());
+    for (const auto& f : l.fields) {
+      spec.fields.push_back(f.name);
+      EXPECT_EQ(f.kind, link::WireKind::f64) << f.name;  // the built-in table: f64 throughout
+    }
     EXPECT_NO_THROW(distributed::WireSignal(spec, 1'000'000)) << "frame 0x" << std::hex << int(l.id);
     EXPECT_LE(l.payload_size(), link::kMaxPayload);
   }
@@ -141,6 +146,103 @@ TEST(RobotSource, BadSourcesAreRefusedWithTheirKey) {
       "robots.r1.source.time_sync_hz");
   bad("{type: udp_bridge, bind: 127.0.0.1:1, peer: 127.0.0.1:2, time_sync_hz: 20}", "only with device_time");
   bad("{type: serial_bridge, device: /dev/x, device_time: maybe}", "robots.r1.source.device_time");
+}
+
+// A device's own frame table (docs/bridges.md, "A device's own frames").
+const std::string kEncoderBoard = R"(name: t
+step: 0.01
+robots:
+  r1:
+    source:
+      type: udp_bridge
+      bind: 127.0.0.1:1
+      peer: 127.0.0.1:2
+      frames:
+        - {id: 0x40, direction: to_host, topic: position, type: PositionMeasurement,
+           fields: [{name: x, wire: i32, scale: 1.0e-4}, {name: y, wire: f32}]}
+        - {id: 0x41, direction: to_host, topic: truth/state, type: Pose2D,
+           fields: [{name: x, wire: f32}, {name: y, wire: f32}, {name: theta, wire: i16, scale: 0.001}]}
+        - {id: 0x90, direction: to_device, topic: cmd, type: UnicycleCommand,
+           fields: [{name: v, wire: i16, scale: 0.001}, {name: omega, wire: i16, scale: 0.001}]}
+    plant: {type: unicycle}
+    sensors:
+      position: {type: position_sensor, kind: exact}
+)";
+
+TEST(DeclaredFrames, ARobotsOwnTableReplacesTheBuiltInOne) {
+  auto sc = robot(kEncoderBoard);
+  const scenario::StepExecutor wiring(sc);
+  const RobotFrames f = robot_frames(sc, wiring, "a test");
+  ASSERT_NE(f.table.get(), &link::message_layouts());
+  ASSERT_EQ(f.outputs.size(), 2u);
+  for (const auto& o : f.outputs) EXPECT_TRUE(o.layout->id == 0x40 || o.layout->id == 0x41) << int(o.layout->id);
+  ASSERT_TRUE(f.command);
+  EXPECT_EQ(f.command->layout->id, 0x90);
+  const auto* pos = link::find_layout(*f.table, uint8_t{0x40});
+  ASSERT_NE(pos, nullptr);
+  EXPECT_EQ(pos->payload_size(), 8u);  // i32 + f32
+  EXPECT_EQ(pos->fields[0].kind, link::WireKind::i32);
+  EXPECT_DOUBLE_EQ(pos->fields[0].scale, 1e-4);
+}
+
+TEST(DeclaredFrames, BadTablesAreRefusedNamingTheEntry) {
+  const auto bad = [](const std::string& frames, const std::string& expect, bool device_time = false) {
+    const std::string yaml =
+        "name: t\nstep: 0.01\nrobots:\n  r1:\n    source:\n      type: udp_bridge\n"
+        "      bind: 127.0.0.1:1\n      peer: 127.0.0.1:2\n" +
+        std::string(device_time ? "      device_time: true\n" : "") + "      frames:\n" + frames +
+        "    plant: {type: unicycle}\n";
+    try {
+      auto sc = robot(yaml);
+      const scenario::StepExecutor wiring(sc);
+      (void)robot_frames(sc, wiring, "a test");
+      ADD_FAILURE() << frames << " was accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(expect), std::string::npos) << e.what();
+    }
+  };
+  const std::string cmd =
+      "        - {id: 0x90, direction: to_device, topic: cmd, type: UnicycleCommand, fields: [{name: v}, {name: "
+      "omega}]}\n";
+  // A duplicate id.
+  bad("        - {id: 0x11, direction: to_host, topic: truth/state, type: Pose2D, fields: [{name: x}]}\n"
+      "        - {id: 0x11, direction: to_host, topic: truth/state, type: Pose2D, fields: [{name: y}]}\n" +
+          cmd,
+      "robots.r1.source.frames[1].id: id 17 is declared twice");
+  // An unknown field.
+  bad("        - {id: 0x11, direction: to_host, topic: truth/state, type: Pose2D, fields: [{name: altitude}]}\n" + cmd,
+      "robots.r1.source.frames[0].fields[0].name: 'altitude' is not a field of Pose2D");
+  // A payload longer than a frame: 17 f64.
+  std::string many;
+  for (int i = 1; i <= 16; ++i) many += std::string(many.empty() ? "" : ", ") + "{name: q" + std::to_string(i) + "}";
+  const std::string sixteen = many;
+  many += ", {name: dq1}";
+  bad("        - {id: 0x30, direction: to_host, topic: joint_states, type: JointReference, fields: [" + many + "]}\n" +
+          cmd,
+      "robots.r1.source.frames[0]: a payload of 136 bytes is longer than a frame's 128");
+  // 16 f64 fit, but not with the device time.
+  bad("        - {id: 0x30, direction: to_host, topic: joint_states, type: JointReference, fields: [" + sixteen +
+          "]}\n" + cmd,
+      "and the device time's 8", true);
+  // A wire type the member cannot hold: JointState's count is an unsigned short.
+  bad("        - {id: 0x31, direction: to_host, topic: joint_states, type: JointState, fields: [{name: count, wire: "
+      "f32}]}\n" +
+          cmd,
+      "frames[0].fields[0].wire: member count of JointState holds integers");
+  // The link's own ids, a direction against its id, an unknown wire type, a scale on a float.
+  bad("        - {id: 0x0E, direction: to_host, topic: truth/state, type: Pose2D, fields: [{name: x}]}\n" + cmd,
+      "id 0x0E is the link's own");
+  bad("        - {id: 0x91, direction: to_host, topic: truth/state, type: Pose2D, fields: [{name: x}]}\n" + cmd,
+      "device -> host ids are 0x00 .. 0x7F");
+  bad("        - {id: 0x11, direction: to_host, topic: truth/state, type: Pose2D, fields: [{name: x, wire: f16}]}\n" +
+          cmd,
+      "fields[0].wire: expected f64, f32");
+  bad("        - {id: 0x11, direction: to_host, topic: truth/state, type: Pose2D, fields: [{name: x, wire: f32, scale: "
+      "2}]}\n" +
+          cmd,
+      "fields[0].scale: only for integer wire types");
+  bad("        - {id: 0x11, direction: to_host, topic: truth/state, type: Pose2D, fields: [{name: x}]}\n",
+      "has no frame in the source's own `frames`");
 }
 
 TEST(RobotSource, DeviceTimeIsReadFromTheSource) {

@@ -1,6 +1,7 @@
 // The bridge protocol's messages (docs/bridges.md "Messages"): each frame id names one
-// typed topic of docs/topics.md and the fields its payload carries, each a little-endian
-// IEEE-754 f64, in the order listed. A field is named as the topic's signal field
+// typed topic of docs/topics.md and the fields its payload carries, in the order listed,
+// each with its wire type (the built-in table: little-endian IEEE-754 f64 throughout; a
+// robot's own table may use f32 and scaled integers). A field is named as the topic's signal field
 // (wire_types.cpp), so the DDS side converts a payload into its IDL message through the
 // same table as every other signal.
 //
@@ -11,6 +12,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -18,15 +20,38 @@ namespace plexus::link {
 
 enum class Direction : uint8_t { to_host, to_device };
 
+/// How one field travels: little-endian, IEEE-754 for f32/f64, two's complement for the
+/// signed integers. An integer field carries round(value / scale): the SI value is raw * scale.
+enum class WireKind : uint8_t { f64, f32, i8, u8, i16, u16, i32, u32 };
+std::size_t wire_size(WireKind k);
+const char* to_string(WireKind k);
+/// "f64", "f32", "i8", "u8", "i16", "u16", "i32", "u32"; false for anything else.
+bool parse_wire_kind(std::string_view text, WireKind& k);
+inline bool is_integer(WireKind k) { return k != WireKind::f64 && k != WireKind::f32; }
+
+struct WireField {
+  std::string name;               ///< the signal field (the IDL member's field name: "x", "q3")
+  WireKind kind = WireKind::f64;  ///< on the wire
+  double scale = 1.0;             ///< integers: SI value = raw * scale, > 0
+};
+
 struct MessageLayout {
   uint8_t id = 0;
   Direction direction = Direction::to_host;
-  const char* topic = "";           ///< `<robot>/<topic>` suffix: "position", "truth/state", "cmd"
-  const char* idl_type = "";        ///< short IDL type name: "PositionMeasurement"
-  std::vector<const char*> fields;  ///< payload: one f64 each, in this order
-  const char* meaning = "";         ///< one line for docs and errors
-  std::size_t payload_size() const { return fields.size() * 8; }
+  std::string topic;              ///< `<robot>/<topic>` suffix: "position", "truth/state", "cmd"
+  std::string idl_type;           ///< short IDL type name: "PositionMeasurement"
+  std::vector<WireField> fields;  ///< payload, in this order
+  std::string meaning;            ///< one line for docs and errors
+  std::size_t payload_size() const;
+  /// The fields' SI values from `payload` (payload_size() bytes) into values[0 .. fields).
+  void decode(const uint8_t* payload, double* values) const;
+  /// values[0 .. fields) into `payload`; an integer is rounded to its nearest step and held
+  /// at its type's limits (a non-finite value becomes 0). Returns the bytes written.
+  std::size_t encode(const double* values, uint8_t* payload) const;
 };
+/// A device's frames: the built-in table of protocol version 1, or a robot's own
+/// (`source.frames`, docs/bridges.md, "A device's own frames").
+using FrameTable = std::vector<MessageLayout>;
 
 /// Host -> device: stop now (zero velocity, zero torque), no payload. The bridge sends it
 /// instead of a command that is older than its deadline, once per command period while no
@@ -41,11 +66,17 @@ inline constexpr uint8_t kStopId = 0x8F;
 inline constexpr uint8_t kTimeRequestId = 0x8E;
 inline constexpr uint8_t kTimeResponseId = 0x0E;
 
-/// Every message of protocol version kProtocolVersion, by id.
-const std::vector<MessageLayout>& message_layouts();
-/// By id; nullptr if the id is not in the protocol.
+/// Whether an id belongs to the link itself (STOP, the time exchange): never a table's.
+inline bool is_link_id(uint8_t id) { return id == kStopId || id == kTimeRequestId || id == kTimeResponseId; }
+
+/// Every message of protocol version kProtocolVersion, by id: the default table.
+const FrameTable& message_layouts();
+/// By id; nullptr if the id is not in the table (default: the built-in one).
 const MessageLayout* find_layout(uint8_t id);
+const MessageLayout* find_layout(const FrameTable& table, uint8_t id);
 /// The message carrying a topic of a type in one direction; nullptr if none.
 const MessageLayout* find_layout(std::string_view topic, std::string_view idl_type, Direction direction);
+const MessageLayout* find_layout(const FrameTable& table, std::string_view topic, std::string_view idl_type,
+                                 Direction direction);
 
 }  // namespace plexus::link

@@ -66,6 +66,24 @@ struct ExternalInput {
   std::string producer;      ///< the producing component's name, for messages (empty: unknown)
 };
 
+/// One frame of a device's own table (robot key `source.frames`, docs/bridges.md, "A
+/// device's own frames"), as the scenario states it: checked against the IDL here (the type
+/// exists, each field is a member's field, the wire type fits the member); ids, sizes and
+/// the link's own ids are checked where the table is built (services/bridge/robot_frames).
+struct DeclaredFrame {
+  struct Field {
+    std::string name;
+    std::string wire = "f64";  ///< f64 f32 i8 u8 i16 u16 i32 u32
+    double scale = 1.0;        ///< integers: SI value = raw * scale
+  };
+  int id = 0;
+  bool to_device = false;
+  std::string topic, type;  ///< below the robot ("position"); the IDL type's short or scoped name
+  std::vector<Field> fields;
+  std::string meaning;
+  std::string where;  ///< "file:line: robots.r1.source.frames[2]"
+};
+
 /// Where a robot's sensor topics come from and where its command goes (robot key `source`,
 /// docs/bridges.md): the plant simulator (the default), a serial or UDP bridge to a device,
 /// or the replay of a recording. Under `plexus launch` the robot's process is the source's
@@ -73,15 +91,16 @@ struct ExternalInput {
 struct RobotSource {
   enum class Type { simulator, serial_bridge, udp_bridge, replay };
   Type type = Type::simulator;
-  std::string where;            ///< "file:line: robots.r1.source", for errors
-  std::string device;           ///< serial_bridge: tty path
-  long baud = 1000000;          ///< serial_bridge: 115200 .. 1000000
-  std::string bind, peer;       ///< udp_bridge: ADDR:PORT of the bridge and of the device
-  double link_timeout_s = 0.5;  ///< bridges: no valid frame for this long -> DEGRADED
-  double retry_s = 0.5;         ///< bridges: between attempts to open an absent device
-  bool device_time = false;     ///< bridges: the device stamps its samples (docs/bridges.md, "Device time")
-  double time_sync_hz = 50.0;   ///< bridges with device_time: time exchanges per second, 1 .. 200
-  std::string recording;        ///< replay: the recording (plexus record), absolute
+  std::string where;                  ///< "file:line: robots.r1.source", for errors
+  std::string device;                 ///< serial_bridge: tty path
+  long baud = 1000000;                ///< serial_bridge: 115200 .. 1000000
+  std::string bind, peer;             ///< udp_bridge: ADDR:PORT of the bridge and of the device
+  double link_timeout_s = 0.5;        ///< bridges: no valid frame for this long -> DEGRADED
+  double retry_s = 0.5;               ///< bridges: between attempts to open an absent device
+  bool device_time = false;           ///< bridges: the device stamps its samples (docs/bridges.md, "Device time")
+  double time_sync_hz = 50.0;         ///< bridges with device_time: time exchanges per second, 1 .. 200
+  std::vector<DeclaredFrame> frames;  ///< bridges: the device's own frame table; empty: the built-in one
+  std::string recording;              ///< replay: the recording (plexus record), absolute
 };
 const char* to_string(RobotSource::Type t);
 
