@@ -42,7 +42,12 @@ run_case() {
   trap pair_down EXIT
   pair_up "${$}l$loss" || { echo "FAIL: cannot create the namespaces for $loss %"; exit 1; }
   pair_loss "$loss" || { echo "FAIL: cannot set the $loss % loss rules"; exit 1; }
-  split_start "$out/loss_$loss" "$domain" "${HOSTS[@]}" "${PLACE[@]}" "${RFID_STEADY[@]}" --dds "$vendor"
+  # At 30 % each way the start handshake (discovery, then the start signal to every child)
+  # can take longer than the default 10 s: a clean-clone CI run (2026-11-29) lost h2's plant
+  # simulator that way ("no start signal from plexus launch within 10 s"). 30 s there.
+  local start=()
+  [ "$loss" -ge 30 ] && start=(--timeout 30)
+  split_start "$out/loss_$loss" "$domain" "${HOSTS[@]}" "${PLACE[@]}" "${RFID_STEADY[@]}" --dds "$vendor" "${start[@]}"
   split_wait 150
   pair_counters > "$out/loss_$loss.dropped"
   echo "$SPLIT_RC $SPLIT_H2_RC" > "$out/loss_$loss.rc"

@@ -5,6 +5,10 @@
 # dependencies on this machine (apt-get install --simulate, nothing installed).
 # Usage: deb_package.sh BUILD_DIR OUT_DIR
 set -euo pipefail
+# Searches read here-strings, never `echo "$big" | grep -q`: grep -q leaves at its first
+# match, echo then dies of SIGPIPE on a list longer than the pipe's buffer, and pipefail
+# turns that into a failed search (a clean-clone CI run, 2026-11-29: "the package lacks
+# ./usr/bin/component_host" for a package that had it).
 build=$(realpath "$1") out=$2
 rm -rf "$out" && mkdir -p "$out" && out=$(realpath "$out")
 (cd "$out" && cpack -G DEB --config "$build/CPackConfig.cmake" -B "$out" > cpack.log 2>&1) ||
@@ -15,7 +19,7 @@ info=$(dpkg-deb -I "$deb")
 echo "$info" | grep -E "^ (Package|Version|Architecture|Depends|Installed-Size):"
 for field in "Package: plexus" "Architecture: amd64" "Depends:.*libfastrtps2.9" "Depends:.*libddsc0debian" \
              "Depends:.*libyaml-cpp0.7"; do
-  echo "$info" | grep -Eq "^ $field" || { echo "FAIL: control lacks '$field'" >&2; exit 1; }
+  grep -Eq "^ $field" <<< "$info" || { echo "FAIL: control lacks '$field'" >&2; exit 1; }
 done
 contents=$(dpkg-deb -c "$deb" | awk '{print $6}')
 for f in ./usr/bin/plexus ./usr/bin/plexus_idlgen ./usr/bin/plant_simulator ./usr/bin/joint_controller \
@@ -23,10 +27,10 @@ for f in ./usr/bin/plexus ./usr/bin/plexus_idlgen ./usr/bin/plant_simulator ./us
          ./usr/lib/cmake/plexus/plexusConfig.cmake ./usr/lib/cmake/plexus/plexusConfigVersion.cmake \
          ./usr/include/plexus/msg/messages.hpp ./usr/include/plexus/scenario/component.hpp \
          ./usr/share/plexus/qos.yaml ./usr/share/plexus/scenarios/four_robots.yaml ./usr/share/plexus/idl/plexus/msg/pose.idl; do
-  echo "$contents" | grep -qx "$f" || { echo "FAIL: the package lacks $f" >&2; exit 1; }
+  grep -qx "$f" <<< "$contents" || { echo "FAIL: the package lacks $f" >&2; exit 1; }
 done
 # No test helper, and no private header (src/), in the package.
-if echo "$contents" | grep -Eq "/(topic_peer|plexus_test_peer|native_[a-z_]+|[a-z_]+_tests)$|/src/"; then
+if grep -Eq "/(topic_peer|plexus_test_peer|native_[a-z_]+|[a-z_]+_tests)$|/src/" <<< "$contents"; then
   echo "FAIL: test helpers or private headers in the package" >&2; exit 1
 fi
 echo "files: $(echo "$contents" | grep -vc '/$')"
