@@ -69,6 +69,13 @@ endfunction()
 #   - the tests labelled `netns` or `multihost` (network namespaces, veth pairs, sshd) take
 #     one lock, `plexus_netns_realtime`: creating and deleting namespaces holds the kernel's
 #     network locks, which would stall another such test's `ip`/`nft` commands mid-fault.
+#   - the tests labelled `heavy` (a dozen processes, or restarts that rediscover them all:
+#     the soak, the kill-each runs, the 45 s main jobs) take one lock, `plexus_heavy_realtime`,
+#     so that at most one runs at a time: two of them with the soak and a lossy split run
+#     beside them left a restarted controller 1.0-1.5 s to come back, and a pty-based serial
+#     loop beside the two main jobs missed its bound (clean-clone CI runs of 2026-11-29;
+#     docs/testing.md). A chain of about 390 s, inside the phase's ~520; not the netns tests,
+#     whose own chain it would join into one longer than the phase.
 #     They are one chain (about 370 s), so they start first: COST, which orders ctest's queue
 #     when it has no times of its own (a clean build); the others by their TIMEOUT.
 # tools/setup/test.sh selects the same tests for the phase from `ctest --show-only=json-v1`.
@@ -85,16 +92,23 @@ function(plexus_realtime_lanes)
     if(NOT timeout)
       set(timeout 1500)  # ctest's default
     endif()
+    get_test_property(${test} RESOURCE_LOCK locks)
+    if(NOT locks)
+      set(locks "")
+    endif()
+    set(cost ${timeout})
     if("netns" IN_LIST labels OR "multihost" IN_LIST labels)
-      get_test_property(${test} RESOURCE_LOCK locks)
-      if(NOT locks)
-        set(locks "")
-      endif()
       list(APPEND locks plexus_netns_realtime)
       math(EXPR cost "${timeout} + 10000")
+    endif()
+    if("heavy" IN_LIST labels)
+      list(APPEND locks plexus_heavy_realtime)
+      math(EXPR cost "${cost} + 5000")
+    endif()
+    if(locks)
       string(APPEND changes "    set_tests_properties([=[${test}]=] PROPERTIES RUN_SERIAL FALSE COST ${cost} RESOURCE_LOCK \"${locks}\")\n")
     else()
-      string(APPEND changes "    set_tests_properties([=[${test}]=] PROPERTIES RUN_SERIAL FALSE COST ${timeout})\n")
+      string(APPEND changes "    set_tests_properties([=[${test}]=] PROPERTIES RUN_SERIAL FALSE COST ${cost})\n")
     endif()
   endforeach()
   file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/realtime_lanes/lanes.cmake

@@ -86,7 +86,7 @@ foreach(variant "fast;148" "cyclone;98")
 endforeach()
 
 # A device's own frames (tests/bridges/declared_frames.sh; docs/bridges.md, "A device's own
-# frames"): encoder_board_robot.yaml's table (an i32 of 10 um, an f32, a u8 of 1 mm, ids of
+# frames"): encoder_board_robot.yaml's table (an f32, an i16 of 1 mm, a u8 of 1 mm, ids of
 # its own) played by the emulator and read by udp_bridge from the same file; every value on
 # the topic within its wire type's quantisation of the true one. About 10 s.
 foreach(variant "fast;96" "cyclone;97")

@@ -19,7 +19,7 @@ foreach(variant "fast;125;174" "cyclone;126;176")
                    component_host localisation_observer motion_controller terrain_classifier icr_estimator
                    attitude_filter plant_simulator)
   set_tests_properties(fault.kill_each_service_${vendor} PROPERTIES
-                       LABELS "fault;realtime;multiprocess;slow" TIMEOUT 600 RUN_SERIAL TRUE)
+                       LABELS "fault;realtime;multiprocess;slow;heavy" TIMEOUT 600 RUN_SERIAL TRUE)
   add_test(NAME fault.kill_each_service_arm_${vendor}
            COMMAND bash ${FAULT_DIR}/kill_each.sh $<TARGET_FILE:plexus> ${FAULT_DIR}/three_robots.yaml
                    ${PROJECT_SOURCE_DIR}/deploy/scenarios/arm_vdc_ekf.yaml ${FAULT_RUNS}/kill_each_arm_${vendor}
@@ -75,4 +75,4 @@ endforeach()
 add_test(NAME fault.soak_fast
          COMMAND bash ${FAULT_DIR}/soak.sh $<TARGET_FILE:plexus> ${PROJECT_SOURCE_DIR}/deploy/scenarios/four_robots.yaml
                  ${FAULT_RUNS}/soak_fast 122 fast 101 25)
-set_tests_properties(fault.soak_fast PROPERTIES LABELS "fault;realtime;multiprocess;slow" TIMEOUT 400 RUN_SERIAL TRUE)
+set_tests_properties(fault.soak_fast PROPERTIES LABELS "fault;realtime;multiprocess;slow;heavy" TIMEOUT 400 RUN_SERIAL TRUE)

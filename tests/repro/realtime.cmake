@@ -88,5 +88,5 @@ foreach(variant "fast;172" "cyclone;173")
                    ${PROJECT_SOURCE_DIR}/deploy/scenarios/four_robots.yaml
                    ${CMAKE_BINARY_DIR}/test-runs/realtime/main_job_45s_${vendor} ${domain} ${vendor} 45)
   set_tests_properties(repro.realtime.main_job_45s_${vendor} PROPERTIES
-                       LABELS "repro;realtime;multiprocess;slow" TIMEOUT 300 RUN_SERIAL TRUE)
+                       LABELS "repro;realtime;multiprocess;slow;heavy" TIMEOUT 300 RUN_SERIAL TRUE)
 endforeach()
