@@ -283,9 +283,7 @@ int main(int argc, char** argv) {
               if (f.id == link::kTimeRequestId && f.payload_size == 24) {
                 // The pty's time responder: at the tick (the timed UDP port answers on arrival).
                 uint8_t payload[24];
-                std::memcpy(payload, f.payload, 8);
-                link::put_f64_le(payload + 8, clock.at(wall_time_ns()));
-                link::put_f64_le(payload + 16, clock.at(wall_time_ns()));
+                clock.answer(f.payload, wall_time_ns(), payload);
                 tx.send(link::kTimeResponseId, time_response_seq++, payload, sizeof payload);
                 return;
               }

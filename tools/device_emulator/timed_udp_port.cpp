@@ -82,10 +82,8 @@ void TimedUdpPort::answer(const link::Frame& request, int64_t now_ns) {
   // t2: the device's clock when the request arrived (its delay is over now); t3: as the
   // response leaves the device (its own delay on the line follows).
   uint8_t payload[24];
-  std::memcpy(payload, request.payload, 8);  // t1, echoed
-  link::put_f64_le(payload + 8, clock_.at(now_ns));
+  clock_.answer(request.payload, now_ns, payload);
   uint8_t frame[link::kMaxEncodedFrame];
-  link::put_f64_le(payload + 16, clock_.at(wall_time_ns()));
   const std::size_t len = link::encode_frame(link::kTimeResponseId, response_seq_++, payload, sizeof payload, frame);
   std::lock_guard<std::mutex> lk(mu_);
   ++c_.time_requests;
