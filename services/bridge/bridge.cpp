@@ -25,8 +25,8 @@ namespace plexus::bridge {
 namespace {
 
 constexpr int64_t kSecond = 1'000'000'000;
-constexpr std::size_t kLatencyWindow = 16384;                 // most recent frames kept for percentiles
-constexpr std::size_t kMaxCommandFields = link::kMaxPayload;  // a field is at least a byte
+constexpr std::size_t kLatencyWindow = 16384;  // most recent frames kept for percentiles
+constexpr std::size_t kMaxCommandFields = link::kMaxFields;
 
 /// A command on its way from the command thread to the I/O thread (through a pipe: one
 /// write of a trivially copyable record below PIPE_BUF is atomic, and neither side locks).
@@ -87,7 +87,8 @@ struct Bridge::Impl {
       for (const SensorRoute& r : routes.sensors)
         if (r.layout->payload_size() + 8 > link::kMaxPayload)
           throw InputError(r.spec->name + ": frame " + fmt::format("0x{:02x}", r.layout->id) +
-                           " has no room for the device time (16 fields at most, the time included)");
+                           " has no room for the device time (" + std::to_string(link::kMaxPayload) +
+                           " bytes at most, the time included)");
     heartbeat = p.publisher<msg::Heartbeat>(distributed::health_topic(opt.service), profiles.get("health"));
     hb = distributed::heartbeat_of(opt.service, routes.robot);
     int fds[2];

@@ -19,6 +19,39 @@ std::string no_frame(const scenario::SignalSpec& s, bool declared) {
          (declared ? "the source's own `frames`" : "the bridge protocol (docs/bridges.md lists the frames)");
 }
 
+/// The built-in table sized for the robot's arm (its per-joint frames, link::for_joints): the
+/// joints its signals carry, which every per-joint frame must agree on. The table itself when
+/// the robot has none of them.
+std::shared_ptr<const link::FrameTable> sized_for_joints(const scenario::Scenario& sc,
+                                                         const scenario::StepExecutor& wiring,
+                                                         const std::string& robot) {
+  const link::FrameTable& builtin = link::message_layouts();
+  const auto& signals = wiring.signals();
+  std::size_t joints = 0;
+  std::string first;
+  const auto consider = [&](std::size_t s, link::Direction direction) {
+    const auto& spec = signals[s];
+    const auto* l = link::find_layout(builtin, robot_topic(spec.name, robot), spec.message, direction);
+    if (!l || !link::per_joint(*l)) return;
+    const std::size_t n = link::joints_in(*l, spec.fields);
+    const std::string where = spec.producer.empty() ? sc.file : where_of(sc, spec.producer);
+    if (n == 0 || n > link::kMaxJoints)
+      throw InputError(where + ": " + spec.name + " carries " + std::to_string(n) +
+                       " joints; the bridge protocol's joint frames carry 1 .. " + std::to_string(link::kMaxJoints));
+    if (joints != 0 && n != joints)
+      throw InputError(where + ": " + spec.name + " carries " + std::to_string(n) + " joints and " + first + " " +
+                       std::to_string(joints) + "; one robot's joint frames agree");
+    joints = n;
+    first = spec.name;
+  };
+  for (std::size_t s : wiring.local_outputs()) consider(s, link::Direction::to_host);
+  for (std::size_t s : wiring.remote_inputs()) consider(s, link::Direction::to_device);
+  if (joints == 0) return {&builtin, [](const link::FrameTable*) {}};  // static: not owned
+  auto table = std::make_shared<link::FrameTable>();
+  for (const auto& l : builtin) table->push_back(link::per_joint(l) ? link::for_joints(l, joints) : l);
+  return table;
+}
+
 }  // namespace
 
 std::shared_ptr<const link::FrameTable> frame_table(const std::vector<scenario::DeclaredFrame>& frames,
@@ -45,6 +78,9 @@ std::shared_ptr<const link::FrameTable> frame_table(const std::vector<scenario::
       link::parse_wire_kind(f.wire, w.kind);  // checked by the scenario loader
       l.fields.push_back(w);
     }
+    if (l.fields.size() > link::kMaxFields)
+      throw InputError(d.where + ": " + std::to_string(l.fields.size()) + " fields; a frame carries " +
+                       std::to_string(link::kMaxFields) + " at most");
     const std::size_t extra = d.to_device ? 0 : extra_bytes;
     if (l.payload_size() + extra > link::kMaxPayload)
       throw InputError(d.where + ": a payload of " + std::to_string(l.payload_size()) + " bytes" +
@@ -73,15 +109,15 @@ RobotFrames robot_frames(const scenario::Scenario& sc, const scenario::StepExecu
   }
   if (f.robot.empty()) throw InputError(sc.file + ": no robot (plant and sensors) for " + who);
   const auto src = sc.sources.find(f.robot);
-  f.table =
-      src == sc.sources.end() ? frame_table({}, 0) : frame_table(src->second.frames, src->second.device_time ? 8 : 0);
+  const bool declared = src != sc.sources.end() && !src->second.frames.empty();
+  f.table = declared ? frame_table(src->second.frames, src->second.device_time ? 8 : 0)
+                     : sized_for_joints(sc, wiring, f.robot);
   const auto& signals = wiring.signals();
   for (std::size_t s : wiring.local_outputs()) {
     const auto& spec = signals[s];
     const auto* layout =
         link::find_layout(*f.table, robot_topic(spec.name, f.robot), spec.message, link::Direction::to_host);
-    if (!layout)
-      throw InputError(where_of(sc, spec.producer) + ": " + no_frame(spec, f.table.get() != &link::message_layouts()));
+    if (!layout) throw InputError(where_of(sc, spec.producer) + ": " + no_frame(spec, declared));
     f.outputs.push_back({s, layout});
   }
   const auto commands = wiring.remote_inputs();
@@ -95,9 +131,7 @@ RobotFrames robot_frames(const scenario::Scenario& sc, const scenario::StepExecu
     const auto& spec = signals[commands.front()];
     const auto* layout =
         link::find_layout(*f.table, robot_topic(spec.name, f.robot), spec.message, link::Direction::to_device);
-    if (!layout)
-      throw InputError(sc.file + ": robot " + f.robot + ": " +
-                       no_frame(spec, f.table.get() != &link::message_layouts()));
+    if (!layout) throw InputError(sc.file + ": robot " + f.robot + ": " + no_frame(spec, declared));
     f.command = RobotFrames::Route{commands.front(), layout};
   }
   return f;

@@ -53,21 +53,50 @@ add_test(NAME bridges.emulator_smoke
                  ${PROJECT_SOURCE_DIR}/deploy/params/unicycle_robot.yaml ${CMAKE_BINARY_DIR}/test-runs/bridges/emulator_smoke)
 set_tests_properties(bridges.emulator_smoke PROPERTIES LABELS "bridges")
 
-# The balancing robot (paper 002) through the serial bridge, against its simulator's
-# contract (tests/bridges/balancing_contract.sh): topics, types, QoS, rates (IMU 100 Hz,
-# odometry and truth 500 Hz), headers and values. One vendor each way; no drive.
-foreach(variant "simulator;cyclone;138" "serial;fast;139")
-  list(POP_FRONT variant source vendor domain)
-  add_test(NAME bridges.balancing_contract_${source}_${vendor}
+# The other robot families against their simulator's contract (tests/bridges/family_contract.sh):
+# topics, types, QoS, rates, headers and values, without a drive. The balancing robot (paper
+# 002: IMU 100 Hz, odometry and truth 500 Hz) as before; the skid-steer robot (paper 001: GPS
+# 20 Hz, tracks, IMU, truth 100 Hz) and the flexible-joint arm (paper 004: joint states and truth
+# at 1 kHz; 500 Hz on the serial line, which 1 kHz of a 2-joint arm's frames would overfill)
+# from plant_simulator, and through both bridges on both vendors (issue 30). Domains: the
+# balancing robot's 138-139, the others' 88-95, 99, 152-153.
+foreach(variant "balancing;simulator;cyclone;138" "balancing;serial;fast;139"
+                "skid_steer;simulator;cyclone;88" "skid_steer;udp;fast;89" "skid_steer;udp;cyclone;91"
+                "skid_steer;serial;fast;92" "skid_steer;serial;cyclone;93"
+                "arm;simulator;fast;94" "arm;udp;fast;95" "arm;udp;cyclone;99"
+                "arm;serial;fast;152" "arm;serial;cyclone;153")
+  list(POP_FRONT variant family source vendor domain)
+  set(name bridges.${family}_contract_${source}_${vendor})
+  add_test(NAME ${name}
            COMMAND ${PROJECT_SOURCE_DIR}/tests/scripts/own_netns.sh
-                   bash ${CMAKE_CURRENT_LIST_DIR}/balancing_contract.sh ${source} ${vendor} ${domain}
-                   ${CMAKE_BINARY_DIR}/test-runs/bridges/balancing_contract_${source}_${vendor} $<TARGET_FILE_DIR:plexus>)
+                   bash ${CMAKE_CURRENT_LIST_DIR}/family_contract.sh ${family} ${source} ${vendor} ${domain}
+                   ${CMAKE_BINARY_DIR}/test-runs/bridges/${family}_contract_${source}_${vendor} $<TARGET_FILE_DIR:plexus>)
   # Its rates are judged over the whole window as the contract tests above (assertions that
   # do not depend on the load, issue 15), and it runs in a network namespace of its own as
   # they do.
-  set_tests_properties(bridges.balancing_contract_${source}_${vendor} PROPERTIES LABELS "bridges;realtime;light" TIMEOUT 60)
+  set_tests_properties(${name} PROPERTIES LABELS "bridges;realtime;light" TIMEOUT 60)
   if(source STREQUAL "serial")  # a pty: as bridges.contract_serial_*
-    set_tests_properties(bridges.balancing_contract_${source}_${vendor} PROPERTIES RUN_SERIAL TRUE)
+    set_tests_properties(${name} PROPERTIES RUN_SERIAL TRUE)
+  endif()
+endforeach()
+
+# Issue 30: paper 001's terrain switch and paper 004's 1 kHz arm closed through udp_bridge and
+# the device emulator, against the same scenario with plant_simulator in the same test, both in
+# realtime (tests/bridges/closed_loop_udp.sh): the skid-steer's re-convergence and classifier
+# accuracy within 10 %; the arm's settling within Table 4's band and its RMS within 20 %.
+# The arm's two targets are missed and reported, not asserted (the script's header;
+# docs/bridges.md, "Closed loops"). Realtime and RUN_SERIAL (the figures are timing-sensitive):
+# about 36 s (skid-steer) and 15 s (arm) each. Domains 154, 228-230.
+foreach(variant "skid_steer;fast;154" "skid_steer;cyclone;228" "arm;fast;229" "arm;cyclone;230")
+  list(POP_FRONT variant family vendor domain)
+  add_test(NAME bridges.closed_loop_${family}_udp_${vendor}
+           COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/closed_loop_udp.sh ${family} $<TARGET_FILE:plexus>
+                   $<TARGET_FILE_DIR:plexus> ${vendor} ${domain}
+                   ${CMAKE_BINARY_DIR}/test-runs/bridges/closed_loop_${family}_udp_${vendor} ${PROJECT_SOURCE_DIR}/deploy)
+  set_tests_properties(bridges.closed_loop_${family}_udp_${vendor} PROPERTIES
+                       LABELS "bridges;realtime;multiprocess;slow" TIMEOUT 240 RUN_SERIAL TRUE)
+  if(family STREQUAL "arm")  # the 1 kHz arm across processes: by itself, as every such test
+    set_tests_properties(bridges.closed_loop_${family}_udp_${vendor} PROPERTIES LABELS "bridges;realtime;multiprocess;alone")
   endif()
 endforeach()
 

@@ -103,6 +103,7 @@ int main(int argc, char** argv) {
   alone.robot_section = true;
   std::string part_file, pty, udp_bind, udp_peer, faults_file, truth_file, log_level = "info";
   bool device_time = false;
+  bool hold_until_command = false;
   double clock_offset = 0.0, clock_drift_ppm = 0.0, jitter_ms = 0.0;
   std::vector<std::string> sets, fault_specs;
   long baud = 1000000;
@@ -124,6 +125,9 @@ int main(int argc, char** argv) {
   app.add_option("--baud", baud,
                  "Line rate the output is paced at, 8N1: 115200 .. 1000000; 0: unpaced (default 1000000)");
   app.add_option("--tx-buffer", tx_buffer, "TX ring in bytes: frames that find it full are dropped (default 65536)");
+  app.add_flag("--hold-until-command", hold_until_command,
+               "The plant holds its initial state (sensors still report it) until the first valid command; its time "
+               "starts then");
   app.add_option("--watchdog-ms", watchdog_ms, "No valid command for this long: zero command (default 100)");
   app.add_option("--fault", fault_specs,
                  "KIND@T[:key=value,...] (flip, drop, garbage, oversize, poison, stall, unplug); repeatable");
@@ -226,6 +230,7 @@ int main(int argc, char** argv) {
     emulator::EmulatedDevice device(sc, watchdog_ns);
     for (const auto& [robot, src] : sc.sources) device_time = device_time || src.device_time;
     if (device_time) device.enable_device_time();
+    if (hold_until_command) device.hold_until_command();
     // UDP with device time or jitter: the timed port (two threads own the socket; the loop's
     // tick would add up to a step of one-sided delay to every time exchange).
     const bool timed_port = udp && (device_time || jitter_ms > 0);

@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 
 #include "plexus/base/input_error.hpp"
+#include "plexus/msg/registry.hpp"
 #include "robot_frames.hpp"
 
 namespace plexus::emulator {
@@ -16,9 +18,27 @@ std::string hex(uint8_t id) {
   return buf;
 }
 
-int16_t index_of(const std::vector<std::string>& names, const std::string& name) {
+/// The message member a field name fills ("a_z" and "az" are both Imu's
+/// linear_acceleration[2]); nullptr if the type has no such field.
+const msg::WireSlot* slot_of(const msg::WireType* type, const std::string& name) {
+  if (type)
+    for (const auto& s : type->slots)
+      if (s.field == name) return &s;
+  return nullptr;
+}
+
+/// Where a frame field's value is among a signal's fields: the same name, or another name of
+/// the same member of the signal's IDL type (the frames name each member once; a component may
+/// use an alias). -1: the signal does not carry it.
+int16_t index_of(const std::vector<std::string>& names, const std::string& name, const msg::WireType* type) {
   for (std::size_t i = 0; i < names.size(); ++i)
     if (names[i] == name) return static_cast<int16_t>(i);
+  const msg::WireSlot* want = slot_of(type, name);
+  if (!want) return -1;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    const msg::WireSlot* have = slot_of(type, names[i]);
+    if (have && std::strcmp(have->path, want->path) == 0) return static_cast<int16_t>(i);  // "linear_acceleration[2]"
+  }
   return -1;
 }
 
@@ -37,8 +57,9 @@ EmulatedDevice::EmulatedDevice(scenario::Scenario& sc, int64_t watchdog_ns)
     OutputRoute r;
     r.layout = layout;
     r.field.fill(-1);
+    const msg::WireType* type = msg::find_wire_type(spec.message);
     for (std::size_t i = 0; i < layout->fields.size() && i < r.field.size(); ++i)
-      r.field[i] = index_of(spec.fields, layout->fields[i].name);
+      r.field[i] = index_of(spec.fields, layout->fields[i].name, type);
     route_of_[s] = static_cast<int16_t>(routes_.size());
     routes_.push_back(r);
     if (spec.plant_state && truth_signal_ == SIZE_MAX) truth_signal_ = s;
@@ -48,9 +69,10 @@ EmulatedDevice::EmulatedDevice(scenario::Scenario& sc, int64_t watchdog_ns)
     cmd_layout_ = frames.command->layout;
     const auto& spec = signals[cmd_signal_];
     cmd_field_.assign(spec.fields.size(), -1);
-    for (std::size_t f = 0; f < spec.fields.size(); ++f)
-      for (std::size_t i = 0; i < cmd_layout_->fields.size(); ++i)
-        if (spec.fields[f] == cmd_layout_->fields[i].name) cmd_field_[f] = static_cast<int16_t>(i);
+    std::vector<std::string> frame_fields;
+    for (const auto& w : cmd_layout_->fields) frame_fields.push_back(w.name);
+    const msg::WireType* type = msg::find_wire_type(spec.message);
+    for (std::size_t f = 0; f < spec.fields.size(); ++f) cmd_field_[f] = index_of(frame_fields, spec.fields[f], type);
   }
 
   // The callbacks are built once: std::function copies nothing per step, and neither
@@ -71,7 +93,7 @@ EmulatedDevice::EmulatedDevice(scenario::Scenario& sc, int64_t watchdog_ns)
     if (ri < 0) return;
     OutputRoute& r = routes_[static_cast<std::size_t>(ri)];
     const std::size_t nf = r.layout->fields.size();
-    double values[link::kMaxPayload];
+    double values[link::kMaxFields];
     for (std::size_t i = 0; i < nf; ++i)
       values[i] = r.field[i] >= 0 ? sample.values[static_cast<std::size_t>(r.field[i])] : 0.0;
     std::size_t n = r.layout->encode(values, payload_);
@@ -95,8 +117,8 @@ void EmulatedDevice::start(int64_t now_ns) { last_cmd_ns_ = now_ns; }
 void EmulatedDevice::enable_device_time() {
   for (const OutputRoute& r : routes_)
     if (r.layout->payload_size() + 8 > link::kMaxPayload)
-      throw InputError("frame " + hex(r.layout->id) +
-                       " has no room for the device time (16 fields at most, the time included)");
+      throw InputError("frame " + hex(r.layout->id) + " has no room for the device time (" +
+                       std::to_string(link::kMaxPayload) + " bytes at most, the time included)");
   device_time_ = true;
 }
 
@@ -118,7 +140,7 @@ void EmulatedDevice::on_frame(const link::Frame& f, int64_t now_ns) {
     ++c_.commands_refused;
     return;
   }
-  double v[link::kMaxPayload];  // one field is at least a byte
+  double v[link::kMaxFields];
   cmd_layout_->decode(f.payload, v);
   for (std::size_t i = 0; i < cmd_layout_->fields.size(); ++i) {
     if (!std::isfinite(v[i])) {
@@ -144,6 +166,14 @@ void EmulatedDevice::check_watchdog(int64_t now_ns) {
 
 void EmulatedDevice::step(int64_t k, FrameOutput& out) {
   out_ = &out;
+  if (hold_) {
+    if (!have_cmd_)
+      k = 0;  // held: the initial state again
+    else {
+      if (first_k_ < 0) first_k_ = k;
+      k = k - first_k_ + 1;
+    }
+  }
   exec_.step(k, remote_, sink_);
   out_ = nullptr;
 }

@@ -58,6 +58,12 @@ class EmulatedDevice {
   void check_watchdog(int64_t now_ns);
   /// Runs base step k; every sample produced goes to `out` as its frame.
   void step(int64_t k, FrameOutput& out);
+  /// Powered but held until the first valid command (`--hold-until-command`), as a drive
+  /// with its brakes on: until then every step is the plant's step 0 again (its initial
+  /// state, sampled by the sensors each tick), and the plant's time starts at the tick
+  /// the first command arrived on. So a run's services, started apart from the device,
+  /// meet the plant at its initial state whenever the device came up.
+  void hold_until_command() { hold_ = true; }
   /// Device time (docs/bridges.md, "Device time"): from now on every device -> host frame
   /// carries one more f64 after its fields, the time set by set_sample_time().
   /// Throws InputError if a frame has no room for it (16 fields at most, the time included).
@@ -81,8 +87,7 @@ class EmulatedDevice {
  private:
   struct OutputRoute {
     const link::MessageLayout* layout = nullptr;
-    std::array<int16_t, link::kMaxPayload>
-        field{};  ///< per layout field (at least a byte each): the signal's field index, -1: none
+    std::array<int16_t, link::kMaxFields> field{};  ///< per layout field: the signal's field index, -1: none
     uint16_t seq = 0;
   };
 
@@ -105,6 +110,9 @@ class EmulatedDevice {
   bool tripped_ = false;        // the watchdog holds the zero command
   int64_t watchdog_ns_;
   int64_t last_cmd_ns_ = 0;
+
+  bool hold_ = false;
+  int64_t first_k_ = -1;  // with hold_: the emulator's step of the first command (the plant's step 1)
 
   FrameOutput* out_ = nullptr;  // during step()
   bool device_time_ = false;

@@ -2,7 +2,7 @@
 # The fuzz smoke CI runs after the test suite (tools/setup/test.sh; docs/testing.md, "Fuzzing"):
 # the fuzz build in build-fuzz/ (clang, ASan + UBSan: -DPLEXUS_FUZZ=ON, a build of its own so
 # that the canonical build is unchanged; FUZZ_JOBS parallel compiles, default 2), then every
-# target's smoke test (ctest label fuzz): the committed corpus replayed, then 20 s of fuzzing
+# target's smoke test (ctest label fuzz): the committed corpus replayed, then 10 s of fuzzing
 # from it. FUZZ_BUILD_ONLY=1: the build alone (what CI runs beside the shared tests).
 set -euo pipefail
 cd "$(dirname "$0")/../.."

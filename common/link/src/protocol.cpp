@@ -79,6 +79,30 @@ FrameTable make_layouts() {
        "BalancingTruth",
        {"x", "v", "theta", "theta_dot", "x_ddot", "theta_ddot"},
        "ground truth: travel, speed, tilt, tilt rate, acceleration, tilt acceleration"},
+      // --- skid-steer robot (paper 001)
+      {0x30, D::to_host, "gps", "Pose2D", {"x", "y", "theta"}, "GPS position (m) and heading (rad)"},
+      {0x31, D::to_host, "wheels", "TrackSpeeds", {"v_l", "v_r"}, "left and right track speeds (m/s)"},
+      {0x32,
+       D::to_host,
+       "truth/state",
+       "SkidSteerTruth",
+       {"x", "y", "theta", "y_l", "y_r", "x_G", "terrain", "a_z", "v_l", "v_r"},
+       "ground truth: pose (m, m, rad), the tracks' and the body's ICR (m), terrain index, body z "
+       "acceleration (m/s^2), track speeds (m/s)"},
+      // --- flexible-joint arm (paper 004): per joint, `#` is 1 .. n (n the arm's joints, 1..16)
+      {0x40,
+       D::to_host,
+       "joint_states",
+       "JointState",
+       {"phi#", "dphi#", "tau#"},
+       "motor positions (rad), then velocities (rad/s), then joint torques (N m): 3n fields"},
+      {0x41,
+       D::to_host,
+       "truth/state",
+       "FlexibleJointTruth",
+       {"q#", "dq#", "phi#", "dphi#", "tau#"},
+       "ground truth: link positions (rad) and velocities (rad/s), motor positions (rad) and velocities (rad/s), "
+       "joint torques (N m): 5n fields"},
       // --- device time (docs/bridges.md "Device time")
       {kTimeResponseId,
        D::to_host,
@@ -101,6 +125,13 @@ FrameTable make_layouts() {
        {"v", "omega"},
        "unicycle command: speed (m/s), turn rate (rad/s)"},
       {0x81, D::to_device, "cmd", "WheelTorqueCommand", {"torque"}, "wheel torque (N m, both wheels together)"},
+      {0x82,
+       D::to_device,
+       "cmd",
+       "TrackCommand",
+       {"v_l", "v_r"},
+       "skid-steer command: left and right track speeds (m/s)"},
+      {0x83, D::to_device, "cmd", "JointCommand", {"u#"}, "arm command: motor torque per joint (N m): n fields"},
       {kStopId, D::to_device, "", "", {}, "stop now: zero velocity, zero torque"},
   };
   FrameTable table;
@@ -207,6 +238,47 @@ std::size_t MessageLayout::encode(const double* values, uint8_t* p) const {
     p += wire_size(f.kind);
   }
   return static_cast<std::size_t>(p - start);
+}
+
+bool per_joint(const MessageLayout& l) {
+  for (const auto& f : l.fields)
+    if (f.name.find('#') != std::string::npos) return true;
+  return false;
+}
+
+MessageLayout for_joints(const MessageLayout& l, std::size_t n) {
+  MessageLayout out = l;
+  out.fields.clear();
+  for (const auto& f : l.fields) {
+    const std::size_t at = f.name.find('#');
+    if (at == std::string::npos) {
+      out.fields.push_back(f);
+      continue;
+    }
+    for (std::size_t j = 1; j <= n; ++j) {
+      WireField w = f;
+      w.name.replace(at, 1, std::to_string(j));
+      out.fields.push_back(std::move(w));
+    }
+  }
+  return out;
+}
+
+std::size_t joints_in(const MessageLayout& l, const std::vector<std::string>& fields) {
+  for (const auto& f : l.fields) {
+    const std::size_t at = f.name.find('#');
+    if (at == std::string::npos) continue;
+    std::size_t n = 0;
+    for (;;) {
+      std::string name = f.name;
+      name.replace(at, 1, std::to_string(n + 1));
+      bool found = false;
+      for (const auto& s : fields) found = found || s == name;
+      if (!found) return n;
+      ++n;
+    }
+  }
+  return 0;
 }
 
 const FrameTable& message_layouts() {

@@ -248,6 +248,30 @@ TEST(Frame, UnicycleCommandBytes) {
   EXPECT_EQ(encode_frame(Sent{0x80, 1, payload}), expected);
 }
 
+// docs/bridges.md's worked frames of the skid-steer's and the arm's commands (checked there
+// against an independent encoding: Python's struct, a bitwise CRC and COBS).
+TEST(Frame, TrackCommandBytes) {
+  // id 0x82, seq 7, v_l = 0.5, v_r = -0.25.
+  Bytes payload(16);
+  const double values[] = {0.5, -0.25};
+  ASSERT_EQ(find_layout(0x82)->encode(values, payload.data()), 16u);
+  const Bytes expected = {0x04, 0x01, 0x82, 0x07, 0x01, 0x01, 0x01, 0x01, 0x01, 0x01, 0x03, 0xE0,
+                          0x3F, 0x01, 0x01, 0x01, 0x01, 0x01, 0x05, 0xD0, 0xBF, 0x6E, 0x8D, 0x00};
+  EXPECT_EQ(encode_frame(Sent{0x82, 7, payload}), expected);
+}
+
+TEST(Frame, JointCommandOfATwoJointArmBytes) {
+  // id 0x83 sized for 2 joints (u1, u2), seq 2, u1 = 1.5, u2 = -2.0.
+  const MessageLayout l = for_joints(*find_layout(0x83), 2);
+  ASSERT_EQ(l.payload_size(), 16u);
+  Bytes payload(16);
+  const double values[] = {1.5, -2.0};
+  l.encode(values, payload.data());
+  const Bytes expected = {0x04, 0x01, 0x83, 0x02, 0x01, 0x01, 0x01, 0x01, 0x01, 0x01, 0x03, 0xF8,
+                          0x3F, 0x01, 0x01, 0x01, 0x01, 0x01, 0x01, 0x04, 0xC0, 0x65, 0x17, 0x00};
+  EXPECT_EQ(encode_frame(Sent{0x83, 2, payload}), expected);
+}
+
 TEST(Frame, TooLongPayloadIsNotEncoded) {
   uint8_t payload[kMaxPayload + 1] = {};
   uint8_t out[kMaxEncodedFrame + 8];
@@ -429,7 +453,8 @@ TEST(Frame, NoiseWithoutZerosIsOneBadBlock) {
 TEST(Frame, OversizeRunThenValidFrame) {
   const Sent s{0x11, 5, Bytes(24, 0x09)};
   Collect c;
-  c.feed(Bytes(1000, 0x55));
+  const std::size_t run = kMaxEncodedFrame + 500;
+  c.feed(Bytes(run, 0x55));
   EXPECT_EQ(c.c().oversize, 1u);  // once per run, not per byte
   EXPECT_EQ(c.c().resyncs, 1u);
   c.feed({0x00});
@@ -438,7 +463,7 @@ TEST(Frame, OversizeRunThenValidFrame) {
   EXPECT_EQ(c.frames[0], s);
   EXPECT_EQ(c.c().oversize, 1u);
   EXPECT_EQ(c.c().resyncs, 1u);
-  EXPECT_EQ(c.c().bytes_discarded, 1001u);
+  EXPECT_EQ(c.c().bytes_discarded, run + 1);
 }
 
 // Without a delimiter after the run, the decoder cannot tell where the next frame starts:
@@ -447,18 +472,19 @@ TEST(Frame, OversizeRunSwallowsTheFrameItRunsInto) {
   const Sent a{0x11, 1, Bytes(24, 0x09)}, b{0x11, 2, Bytes(24, 0x0A)};
   const Bytes ea = encode_frame(a);
   Collect c;
-  c.feed(Bytes(300, 0x55));
+  const std::size_t run = kMaxEncodedFrame + 164;
+  c.feed(Bytes(run, 0x55));
   c.feed(ea);
   c.feed(encode_frame(b));
   ASSERT_EQ(c.frames.size(), 1u);
   EXPECT_EQ(c.frames[0], b);
   EXPECT_EQ(c.c().oversize, 1u);
-  EXPECT_EQ(c.c().bytes_discarded, 300 + ea.size());
+  EXPECT_EQ(c.c().bytes_discarded, run + ea.size());
 }
 
 TEST(Frame, OversizeBoundary) {
   {
-    Collect c;  // 135 bytes and a delimiter: could be a frame, checked as one
+    Collect c;  // kMaxEncodedFrame - 1 bytes and a delimiter: could be a frame, checked as one
     c.feed(Bytes(kMaxEncodedFrame - 1, 0x55));
     c.feed({0x00});
     EXPECT_EQ(c.c().oversize, 0u);
@@ -466,7 +492,7 @@ TEST(Frame, OversizeBoundary) {
     EXPECT_EQ(c.c().bytes_discarded, kMaxEncodedFrame);
   }
   {
-    Collect c;  // 136 bytes: oversize
+    Collect c;  // kMaxEncodedFrame bytes: oversize
     c.feed(Bytes(kMaxEncodedFrame, 0x55));
     c.feed({0x00});
     EXPECT_EQ(c.c().oversize, 1u);
@@ -548,13 +574,13 @@ TEST(Frame, ResetDropsAPartialFrame) {
   ASSERT_EQ(c.frames.size(), 1u);
   EXPECT_EQ(c.frames[0], s);
   // In the middle of an oversize run: the run was counted; the next byte starts afresh.
-  c.feed(Bytes(200, 0x55));
+  c.feed(Bytes(kMaxEncodedFrame + 64, 0x55));
   c.decoder.reset();
   c.feed(e);
   EXPECT_EQ(c.frames.size(), 2u);
   EXPECT_EQ(c.c().oversize, 1u);
   EXPECT_EQ(c.c().resyncs, 2u);
-  EXPECT_EQ(c.c().bytes_discarded, 210u);
+  EXPECT_EQ(c.c().bytes_discarded, 10u + kMaxEncodedFrame + 64);
 }
 
 TEST(Frame, ShorterFrameLeavesNoStalePayload) {
@@ -633,6 +659,40 @@ TEST(Protocol, FindByTopicTypeAndDirection) {
   EXPECT_EQ(find_layout("truth/state", "BalancingTruth", Direction::to_host)->id, 0x22);
   EXPECT_EQ(find_layout("cmd", "UnicycleCommand", Direction::to_device)->id, 0x80);
   EXPECT_EQ(find_layout("gps", "PositionMeasurement", Direction::to_host), nullptr);
+}
+
+TEST(Protocol, SkidSteerFrames) {
+  EXPECT_EQ(find_layout("gps", "Pose2D", Direction::to_host)->id, 0x30);
+  EXPECT_EQ(find_layout("wheels", "TrackSpeeds", Direction::to_host)->id, 0x31);
+  EXPECT_EQ(find_layout("imu", "Imu", Direction::to_host)->id, 0x20);  // the balancing robot's: six fields
+  const MessageLayout* truth = find_layout("truth/state", "SkidSteerTruth", Direction::to_host);
+  ASSERT_NE(truth, nullptr);
+  EXPECT_EQ(truth->id, 0x32);
+  EXPECT_EQ(truth->payload_size(), 80u);
+  EXPECT_EQ(find_layout("cmd", "TrackCommand", Direction::to_device)->id, 0x82);
+}
+
+// The arm's frames carry one field per joint (`#`): sized for the arm's n joints in member
+// order, and a 16-joint arm's truth (80 f64) fits a frame with its device time.
+TEST(Protocol, JointFramesAreSizedForTheArm) {
+  const MessageLayout* states = find_layout("joint_states", "JointState", Direction::to_host);
+  ASSERT_NE(states, nullptr);
+  EXPECT_TRUE(per_joint(*states));
+  EXPECT_FALSE(per_joint(*find_layout(0x82)));
+  const MessageLayout two = for_joints(*states, 2);
+  std::vector<std::string> names;
+  for (const auto& f : two.fields) names.push_back(f.name);
+  EXPECT_EQ(names, (std::vector<std::string>{"phi1", "phi2", "dphi1", "dphi2", "tau1", "tau2"}));
+  EXPECT_FALSE(per_joint(two));
+  EXPECT_EQ(joints_in(*states, {"phi1", "phi2", "phi3", "dphi1", "dphi2", "dphi3"}), 3u);
+  EXPECT_EQ(joints_in(*states, {"phi2", "dphi1"}), 0u);   // a run from 1
+  EXPECT_EQ(joints_in(*find_layout(0x82), {"v_l"}), 0u);  // no per-joint field
+  const MessageLayout* truth = find_layout("truth/state", "FlexibleJointTruth", Direction::to_host);
+  ASSERT_NE(truth, nullptr);
+  EXPECT_EQ(for_joints(*truth, kMaxJoints).payload_size(), 640u);
+  EXPECT_LE(for_joints(*truth, kMaxJoints).payload_size() + 8, kMaxPayload);
+  EXPECT_LE(for_joints(*truth, kMaxJoints).fields.size(), kMaxFields);
+  EXPECT_EQ(for_joints(*find_layout("cmd", "JointCommand", Direction::to_device), 16).payload_size(), 128u);
 }
 
 TEST(Protocol, StopHasNoPayload) {

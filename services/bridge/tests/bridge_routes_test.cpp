@@ -28,6 +28,16 @@ TEST(BridgeProtocol, EveryMessageBindsToItsIdlType) {
       EXPECT_TRUE(l.topic.empty());
       continue;
     }
+    if (link::per_joint(l)) {  // sized for an arm: checked for 1 and 16 joints
+      for (std::size_t n : {std::size_t{1}, link::kMaxJoints}) {
+        const link::MessageLayout sized = link::for_joints(l, n);
+        scenario::SignalSpec spec{std::string("r1/") + l.topic, {}, 1, "test", false, l.idl_type};
+        for (const auto& f : sized.fields) spec.fields.push_back(f.name);
+        EXPECT_NO_THROW(distributed::WireSignal(spec, 1'000'000)) << "frame 0x" << std::hex << int(l.id) << ", " << n;
+        EXPECT_LE(sized.payload_size() + 8, link::kMaxPayload);
+      }
+      continue;
+    }
     scenario::SignalSpec spec;
     spec.name = std::string("r1/") + l.topic;
     spec.producer = "test";
@@ -105,6 +115,52 @@ robots:
   EXPECT_EQ(r.sensors.size(), 3u);
   for (int id : {0x20, 0x21, 0x22}) EXPECT_GE(r.sensor_by_id[static_cast<std::size_t>(id)], 0) << id;
   EXPECT_EQ(r.command.layout->id, 0x81);
+}
+
+TEST_F(Routes, SkidSteerRobotRoutesEveryTopic) {
+  auto sc = robot(R"(
+name: t
+step: 0.01
+clock: {mode: realtime}
+robots:
+  r2:
+    source: {type: udp_bridge, bind: "127.0.0.1:47001", peer: "127.0.0.1:47002"}
+    plant: {type: skid_steer}
+    sensors:
+      gps: {type: pose_sensor, rate: 20}
+      wheels: {type: track_speed_sensor}
+      imu: {type: imu_z_sensor}
+)");
+  const BridgeRoutes r = make_routes(sc, *participant, profiles);
+  EXPECT_EQ(r.sensors.size(), 4u);
+  for (int id : {0x30, 0x31, 0x20, 0x32}) EXPECT_GE(r.sensor_by_id[static_cast<std::size_t>(id)], 0) << id;
+  EXPECT_EQ(r.command.layout->id, 0x82);
+}
+
+// The arm's frames are sized for its joints: 3 here (phi, dphi, tau per joint), the command
+// one torque per joint, the truth five values per joint.
+TEST_F(Routes, ArmRoutesEveryTopicSizedForItsJoints) {
+  auto sc = robot(R"(
+name: t
+step: 0.001
+clock: {mode: realtime}
+robots:
+  r4:
+    source: {type: udp_bridge, bind: "127.0.0.1:47001", peer: "127.0.0.1:47002"}
+    plant: {type: flexible_joint_arm, model: uniform, dof: 3}
+    sensors:
+      joint_states: {type: joint_encoders, dof: 3}
+)");
+  const BridgeRoutes r = make_routes(sc, *participant, profiles);
+  ASSERT_EQ(r.sensors.size(), 2u);
+  const auto& states = r.sensors[static_cast<std::size_t>(r.sensor_by_id[0x40])];
+  EXPECT_EQ(states.layout->fields.size(), 9u);
+  EXPECT_EQ(states.layout->fields[3].name, "dphi1");
+  EXPECT_EQ(r.sensors[static_cast<std::size_t>(r.sensor_by_id[0x41])].layout->payload_size(), 15u * 8);
+  EXPECT_EQ(r.command.layout->id, 0x83);
+  EXPECT_EQ(r.command.layout->fields.size(), 3u);
+  EXPECT_EQ(r.command.layout->fields[2].name, "u3");
+  EXPECT_NE(r.table.get(), &link::message_layouts());  // a table of its own
 }
 
 TEST_F(Routes, RefusesASensorTheProtocolCannotCarry) {
@@ -212,18 +268,18 @@ TEST(DeclaredFrames, BadTablesAreRefusedNamingTheEntry) {
   // An unknown field.
   bad("        - {id: 0x11, direction: to_host, topic: truth/state, type: Pose2D, fields: [{name: altitude}]}\n" + cmd,
       "robots.r1.source.frames[0].fields[0].name: 'altitude' is not a field of Pose2D");
-  // A payload longer than a frame: 17 f64.
-  std::string many;
-  for (int i = 1; i <= 16; ++i) many += std::string(many.empty() ? "" : ", ") + "{name: q" + std::to_string(i) + "}";
-  const std::string sixteen = many;
-  many += ", {name: dq1}";
-  bad("        - {id: 0x30, direction: to_host, topic: joint_states, type: JointReference, fields: [" + many + "]}\n" +
-          cmd,
-      "robots.r1.source.frames[0]: a payload of 136 bytes is longer than a frame's 128");
-  // 16 f64 fit, but not with the device time.
-  bad("        - {id: 0x30, direction: to_host, topic: joint_states, type: JointReference, fields: [" + sixteen +
-          "]}\n" + cmd,
-      "and the device time's 8", true);
+  // More fields than a frame carries: LinkJointState's 128 f64 (1024 bytes, a frame's
+  // payload) and its count.
+  std::string all;
+  for (const char* member : {"q", "dq", "ddq", "dddq", "tau", "dtau", "phi", "dphi"})
+    for (int i = 1; i <= 16; ++i)
+      all += std::string(all.empty() ? "" : ", ") + "{name: " + member + std::to_string(i) + "}";
+  bad("        - {id: 0x30, direction: to_host, topic: estimate, type: LinkJointState, fields: [" + all +
+          ", {name: count, wire: u16}]}\n" + cmd,
+      "robots.r1.source.frames[0]: 129 fields; a frame carries 128 at most");
+  // 128 f64 fit, but not with the device time.
+  bad("        - {id: 0x30, direction: to_host, topic: estimate, type: LinkJointState, fields: [" + all + "]}\n" + cmd,
+      "a payload of 1024 bytes and the device time's 8 is longer than a frame's 1024", true);
   // A wire type the member cannot hold: JointState's count is an unsigned short.
   bad("        - {id: 0x31, direction: to_host, topic: joint_states, type: JointState, fields: [{name: count, wire: "
       "f32}]}\n" +

@@ -29,6 +29,10 @@ const char* to_string(WireKind k);
 bool parse_wire_kind(std::string_view text, WireKind& k);
 inline bool is_integer(WireKind k) { return k != WireKind::f64 && k != WireKind::f32; }
 
+/// Fields in one frame at most: a signal's (scenario::kMaxSignalFields is 136), and each
+/// field is at least a byte of kMaxPayload.
+inline constexpr std::size_t kMaxFields = 128;
+
 struct WireField {
   std::string name;               ///< the signal field (the IDL member's field name: "x", "q3")
   WireKind kind = WireKind::f64;  ///< on the wire
@@ -49,6 +53,18 @@ struct MessageLayout {
   /// at its type's limits (a non-finite value becomes 0). Returns the bytes written.
   std::size_t encode(const double* values, uint8_t* payload) const;
 };
+/// The built-in table's joint arrays (the arm's frames): a field named with `#` stands for
+/// one field per joint, `#` = 1 .. n in that order ("phi#": phi1 .. phin), n the arm's joints.
+/// A robot's frames are sized for its arm before use (for_joints(), bridge::robot_frames).
+inline constexpr std::size_t kMaxJoints = 16;
+/// Whether a layout has per-joint fields.
+bool per_joint(const MessageLayout& l);
+/// The layout for an arm of n joints (1 .. kMaxJoints): each `#` field becomes n fields.
+MessageLayout for_joints(const MessageLayout& l, std::size_t n);
+/// How many joints a signal's fields carry for a per-joint layout: the longest run 1, 2, ...
+/// of its first `#` field among `fields` ("phi1", "phi2": 2); 0 if none.
+std::size_t joints_in(const MessageLayout& l, const std::vector<std::string>& fields);
+
 /// A device's frames: the built-in table of protocol version 1, or a robot's own
 /// (`source.frames`, docs/bridges.md, "A device's own frames").
 using FrameTable = std::vector<MessageLayout>;

@@ -1,0 +1,140 @@
+#!/usr/bin/env bash
+# closed_loop_udp.sh FAMILY PLEXUS BIN_DIR VENDOR DOMAIN OUT_DIR DEPLOY_DIR
+#
+# Issue 30: a paper's closed loop through udp_bridge, with the device emulator on the far end,
+# against the same scenario with plant_simulator, both in realtime under `plexus launch`, one
+# after the other in this test (the reference measured beside the figure it judges):
+#   skid_steer  paper 001's terrain switch (icr_terrain_switch_prior.yaml, shortened to 15 s
+#               with the switch concrete -> tile at 10 s; `plexus sim`: 1.25 s, accuracy 1.0):
+#               the ICRs' re-convergence after the switch within 10 % of plant_simulator's or
+#               one classifier decision (0.25 s, its resolution), and the classifier's
+#               accuracy within 10 %;
+#   arm         paper 004's arm at 1 kHz (arm_vdc_ekf.yaml as repro.realtime.arm_vdc_ekf_1khz_*
+#               runs it: reference, EKF and VDC in one process; the bridge with device time):
+#               the issue's targets, both joints settled within Table 4's band (<= 0.36 /
+#               0.37 s) and the RMS errors within 20 % of plant_simulator's, are MISSED and
+#               reported, not asserted (docs/bridges.md, "Closed loops": a link's two hops take
+#               0.5-0.7 ms of the 1 ms period, and the loop gets a period more delay than the
+#               simulator's, which this VDC does not tolerate). Asserted: the loop ran through
+#               the bridge (at least 90 % of the run's commands obeyed, no sample refused) and
+#               the arm stayed bounded (RMS < 100 mrad).
+# The robot's source is udp_bridge on loopback (ports 40000 + 10*DOMAIN + {0,1}); `plexus
+# launch` starts the bridge, and the emulator (unpaced, `--hold-until-command`: the plant holds
+# its initial state until the first command, as plant_simulator's starts with the run) runs
+# the robot's part of the scenario that the launch wrote. Both runs must exit 0 (or 1 with
+# only the paper's expectations failing) and the emulator must exit 0 having obeyed commands.
+# Prints both runs' figures and their ratios.
+set -u
+family=$1 plexus=$2 bin=$3 vendor=$4 domain=$5 out=$6 deploy=$7
+case $family in
+  skid_steer)
+    robot=r1
+    args=(--set duration=15 --set "robots.r1.plant.schedule=[[0, concrete], [10, tile]]" --set "expectations={}")
+    # NAME:RELATIVE[:RESOLUTION]: the re-convergence is counted in the classifier's decisions
+    # (hop_s 0.25 s: measured 1.0 and 1.25 s in realtime with either source), so a difference of
+    # one decision is the measurement's resolution, not a difference of the sources.
+    checks="reconvergence_time_switch1_s:0.10:0.25 classifier_accuracy:0.10"
+    reported_only=0
+    device_time=""
+    scenario=$deploy/scenarios/icr_terrain_switch_prior.yaml ;;
+  arm)
+    robot=arm
+    args=(--set step=0.001 --set clock.input_deadline_periods=20 --set services.reference.process=control
+          --set services.observer.process=control --set services.controller.process=control
+          --set services.observer.blind_after_s=0.01 --set "expectations={}")
+    checks="rms_e1_mrad:0.20 rms_e2_mrad:0.20"
+    reported_only=1
+    device_time=", device_time: true"
+    scenario=$deploy/scenarios/arm_vdc_ekf.yaml ;;
+  *) echo "closed_loop_udp.sh: FAMILY: skid_steer or arm"; exit 2 ;;
+esac
+rm -rf "$out" && mkdir -p "$out"
+emu=""
+launch=""
+trap '[ -n "$emu" ] && kill -TERM $emu 2>/dev/null; [ -n "$launch" ] && kill -TERM $launch 2>/dev/null; wait 2>/dev/null' EXIT
+run() {  # run NAME [ARGS...]: one realtime launch; its metrics in $out/NAME.json
+  local name=$1 rc
+  shift
+  "$plexus" launch "$scenario" --set clock.mode=realtime "${args[@]}" "$@" --dds "$vendor" --domain "$domain" \
+    --json --quiet --out "$out/$name" > "$out/$name.json" 2> "$out/$name.err" &
+  launch=$!
+}
+finish() {  # finish NAME: waits for the launch; exit 0 or 1 (an expectation) accepted
+  local rc
+  wait $launch
+  rc=$?
+  launch=""
+  if [ $rc -ne 0 ] && [ $rc -ne 1 ]; then echo "FAIL: the $1 run exited $rc"; tail -5 "$out/$1.err"; exit 1; fi
+  [ -s "$out/$1.json" ] || { echo "FAIL: the $1 run printed no metrics"; tail -5 "$out/$1.err"; exit 1; }
+}
+
+# 1. The reference: plant_simulator.
+run simulator
+finish simulator
+
+# 2. The same through udp_bridge and the emulator.
+pe=$((40000 + 10 * domain)) pb=$((40000 + 10 * domain + 1))
+run bridge --set "robots.$robot.source={type: udp_bridge, bind: 127.0.0.1:$pb, peer: 127.0.0.1:$pe$device_time}"
+part="$out/bridge/parts/udp_bridge_$robot.yaml"
+for _ in $(seq 1 100); do [ -s "$part" ] && break; sleep 0.05; done
+[ -s "$part" ] || { echo "FAIL: the launcher wrote no part for udp_bridge $robot"; cat "$out/bridge.err"; exit 1; }
+"$bin/device_emulator" --part "$part" --udp-bind 127.0.0.1:$pe --udp-peer 127.0.0.1:$pb --baud 0 --hold-until-command \
+  > "$out/emulator.json" 2> "$out/emulator.err" &
+emu=$!
+finish bridge
+kill -TERM $emu
+wait $emu
+emu_rc=$?
+emu=""
+[ "$emu_rc" -eq 0 ] || { echo "FAIL: the emulator exited $emu_rc"; tail -5 "$out/emulator.err"; exit 1; }
+commands=$(jq -r '.commands' "$out/emulator.json" 2> /dev/null | tail -1)
+[ "${commands:-0}" -gt 0 ] 2> /dev/null || { echo "FAIL: the emulator obeyed no command"; exit 1; }
+echo "emulator: $commands commands, $(jq -r '.frames_produced' "$out/emulator.json" | tail -1) frames," \
+     "overruns $(jq -r '.overruns' "$out/emulator.json" | tail -1)"
+bridge_line=$(grep -ho "{\"service\":\"udp_bridge $robot\".*}" "$out/bridge/logs/"*.log 2> /dev/null | tail -1)
+[ -n "$bridge_line" ] && echo "bridge: frames in $(jq -r '.link.frames_in' <<< "$bridge_line"), out" \
+  "$(jq -r '.link.frames_out' <<< "$bridge_line"), frame-to-topic latency p50 $(jq -r '.link.latency_p50_us' <<< "$bridge_line") us," \
+  "p99 $(jq -r '.link.latency_p99_us' <<< "$bridge_line") us"
+
+# 3. The figures.
+fail=0
+missed=0
+printf '%-32s %12s %12s %8s %14s\n' metric simulator bridge ratio bound
+for check in $checks; do
+  IFS=: read -r name tol res <<< "$check"
+  s=$(jq -r ".$name" "$out/simulator.json") b=$(jq -r ".$name" "$out/bridge.json")
+  verdict=$(awk -v s="$s" -v b="$b" -v t="$tol" -v res="${res:-0}" 'BEGIN {
+    if (s == "null" || b == "null" || s != s + 0 || b != b + 0) { print "nan FAIL"; exit }
+    r = (s == 0) ? (b == 0 ? 1 : 1e9) : b / s
+    a = b - s; if (a < 0) a = -a
+    d = (s == 0) ? (b == 0 ? 0 : 1e9) : a / s
+    printf "%.3f %s", r, (d <= t || a <= res + 1e-9 ? "ok" : "FAIL") }')
+  bound="+-$(awk -v t="$tol" 'BEGIN { printf "%g %%", 100 * t }')${res:+ or $res}"
+  printf '%-32s %12.4g %12.4g %8s %14s %s\n' "$name" "$s" "$b" "${verdict% *}" "$bound" "${verdict#* }"
+  [ "${verdict#* }" = ok ] || missed=1
+done
+if [ "$family" = arm ]; then
+  for run in simulator bridge; do
+    echo "$run: settling $(jq -r '.settling_time_1_s' "$out/$run.json") / $(jq -r '.settling_time_2_s' "$out/$run.json") s" \
+         "(Table 4 <= 0.36 / 0.37), rms $(jq -r '.rms_norm_mrad' "$out/$run.json") mrad"
+    for j in 1:0.36 2:0.37; do
+      v=$(jq -r ".settling_time_${j%%:*}_s" "$out/$run.json")
+      awk -v v="$v" -v b="${j##*:}" 'BEGIN { exit !(v != "null" && v + 0 == v && v <= b) }' || missed=1
+    done
+  done
+  commands=$(jq -r '.commands' "$out/emulator.json" | tail -1)
+  [ "$commands" -ge 4500 ] || { echo "FAIL: the emulator obeyed $commands commands (>= 4500 of the run's 5000)"; fail=1; }
+  rejected=$(jq -r '[.services[] | .rejected_inputs] | add' "$out/bridge/launch.json")
+  [ "$rejected" = 0 ] || { echo "FAIL: $rejected samples refused"; fail=1; }
+  awk -v r="$(jq -r '.rms_norm_mrad' "$out/bridge.json")" 'BEGIN { exit !(r + 0 == r && r < 100) }' ||
+    { echo "FAIL: the arm through the bridge left 100 mrad of RMS error"; fail=1; }
+fi
+if [ $missed -eq 1 ]; then
+  if [ "$reported_only" = 1 ]; then
+    echo "MISSED (reported, not asserted): the paper's figures through the bridge (docs/bridges.md, \"Closed loops\")"
+  else
+    fail=1
+  fi
+fi
+[ $fail -eq 0 ] && echo PASS || echo FAIL
+exit $fail
