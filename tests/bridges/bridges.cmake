@@ -93,10 +93,14 @@ foreach(variant "skid_steer;fast;154" "skid_steer;cyclone;228" "arm;fast;229" "a
            COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/closed_loop_udp.sh ${family} $<TARGET_FILE:plexus>
                    $<TARGET_FILE_DIR:plexus> ${vendor} ${domain}
                    ${CMAKE_BINARY_DIR}/test-runs/bridges/closed_loop_${family}_udp_${vendor} ${PROJECT_SOURCE_DIR}/deploy)
-  # Not `alone`, though the arm's is a 1 kHz loop across processes: what it asserts (commands
-  # obeyed, no sample refused, RMS under 100 mrad) holds under load; its figures are reported.
   set_tests_properties(bridges.closed_loop_${family}_udp_${vendor} PROPERTIES
                        LABELS "bridges;realtime;multiprocess;slow" TIMEOUT 240 RUN_SERIAL TRUE)
+  # The 1 kHz arm across processes runs by itself, as every such test: in CI's lanes (clean
+  # clone of f7b5a6c) its plant_simulator run lost the band (RMS 18.8 mrad) and the emulator
+  # obeyed 4199 of 5000 commands.
+  if(family STREQUAL "arm")
+    set_tests_properties(bridges.closed_loop_${family}_udp_${vendor} PROPERTIES LABELS "bridges;realtime;multiprocess;alone")
+  endif()
 endforeach()
 
 # Device time (tests/bridges/device_time.sh; docs/bridges.md, "Device time"): the emulator's
