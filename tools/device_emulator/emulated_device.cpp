@@ -3,10 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 
 #include "plexus/base/input_error.hpp"
-#include "plexus/msg/registry.hpp"
+#include "plexus/scenario/member_of.hpp"
 #include "robot_frames.hpp"
 
 namespace plexus::emulator {
@@ -18,27 +17,16 @@ std::string hex(uint8_t id) {
   return buf;
 }
 
-/// The message member a field name fills ("a_z" and "az" are both Imu's
-/// linear_acceleration[2]); nullptr if the type has no such field.
-const msg::WireSlot* slot_of(const msg::WireType* type, const std::string& name) {
-  if (type)
-    for (const auto& s : type->slots)
-      if (s.field == name) return &s;
-  return nullptr;
-}
-
 /// Where a frame field's value is among a signal's fields: the same name, or another name of
 /// the same member of the signal's IDL type (the frames name each member once; a component may
 /// use an alias). -1: the signal does not carry it.
-int16_t index_of(const std::vector<std::string>& names, const std::string& name, const msg::WireType* type) {
+int16_t index_of(const std::vector<std::string>& names, const std::string& name, const std::string& message) {
   for (std::size_t i = 0; i < names.size(); ++i)
     if (names[i] == name) return static_cast<int16_t>(i);
-  const msg::WireSlot* want = slot_of(type, name);
-  if (!want) return -1;
-  for (std::size_t i = 0; i < names.size(); ++i) {
-    const msg::WireSlot* have = slot_of(type, names[i]);
-    if (have && std::strcmp(have->path, want->path) == 0) return static_cast<int16_t>(i);  // "linear_acceleration[2]"
-  }
+  const std::string member = scenario::member_of(message, name);
+  if (member.empty()) return -1;
+  for (std::size_t i = 0; i < names.size(); ++i)
+    if (scenario::member_of(message, names[i]) == member) return static_cast<int16_t>(i);
   return -1;
 }
 
@@ -57,9 +45,8 @@ EmulatedDevice::EmulatedDevice(scenario::Scenario& sc, int64_t watchdog_ns)
     OutputRoute r;
     r.layout = layout;
     r.field.fill(-1);
-    const msg::WireType* type = msg::find_wire_type(spec.message);
     for (std::size_t i = 0; i < layout->fields.size() && i < r.field.size(); ++i)
-      r.field[i] = index_of(spec.fields, layout->fields[i].name, type);
+      r.field[i] = index_of(spec.fields, layout->fields[i].name, spec.message);
     route_of_[s] = static_cast<int16_t>(routes_.size());
     routes_.push_back(r);
     if (spec.plant_state && truth_signal_ == SIZE_MAX) truth_signal_ = s;
@@ -71,8 +58,8 @@ EmulatedDevice::EmulatedDevice(scenario::Scenario& sc, int64_t watchdog_ns)
     cmd_field_.assign(spec.fields.size(), -1);
     std::vector<std::string> frame_fields;
     for (const auto& w : cmd_layout_->fields) frame_fields.push_back(w.name);
-    const msg::WireType* type = msg::find_wire_type(spec.message);
-    for (std::size_t f = 0; f < spec.fields.size(); ++f) cmd_field_[f] = index_of(frame_fields, spec.fields[f], type);
+    for (std::size_t f = 0; f < spec.fields.size(); ++f)
+      cmd_field_[f] = index_of(frame_fields, spec.fields[f], spec.message);
   }
 
   // The callbacks are built once: std::function copies nothing per step, and neither

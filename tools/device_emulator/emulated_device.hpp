@@ -66,7 +66,7 @@ class EmulatedDevice {
   void hold_until_command() { hold_ = true; }
   /// Device time (docs/bridges.md, "Device time"): from now on every device -> host frame
   /// carries one more f64 after its fields, the time set by set_sample_time().
-  /// Throws InputError if a frame has no room for it (16 fields at most, the time included).
+  /// Throws InputError if a frame has no room for it (link::kMaxPayload bytes, the time included).
   void enable_device_time();
   bool device_time() const { return device_time_; }
   /// The host time (CLOCK_REALTIME ns) and the device clock's reading (s) of the samples

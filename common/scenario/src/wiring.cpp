@@ -5,6 +5,7 @@
 
 #include "plexus/base/input_error.hpp"
 #include "plexus/msg/registry.hpp"
+#include "plexus/scenario/member_of.hpp"
 
 namespace plexus::scenario::detail {
 namespace {
@@ -55,14 +56,6 @@ bool same_message(const std::string& a, const std::string& b) {
   };
   return (a.find("::") == std::string::npos || b.find("::") == std::string::npos) && short_of(a) == short_of(b) &&
          msg::find_wire_type(a) == msg::find_wire_type(b);
-}
-
-// The member a field of `message` fills ("position[0]"), or "" when the type or field is unknown.
-std::string member_of(const std::string& message, const std::string& field) {
-  if (const msg::WireType* t = msg::find_wire_type(message))
-    for (const auto& s : t->slots)
-      if (s.field == field) return s.path;
-  return "";
 }
 
 }  // namespace
@@ -172,3 +165,14 @@ Wiring wire(const Scenario& scenario) {
 }
 
 }  // namespace plexus::scenario::detail
+
+namespace plexus::scenario {
+
+std::string member_of(const std::string& message, const std::string& field) {
+  if (const msg::WireType* t = msg::find_wire_type(message))
+    for (const auto& s : t->slots)
+      if (s.field == field) return s.path;
+  return "";
+}
+
+}  // namespace plexus::scenario

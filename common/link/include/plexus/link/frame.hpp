@@ -19,7 +19,7 @@ namespace plexus::link {
 inline constexpr uint8_t kProtocolVersion = 1;
 inline constexpr std::size_t kHeaderSize = 4;  ///< version, id, seq
 inline constexpr std::size_t kCrcSize = 2;
-inline constexpr std::size_t kMaxPayload = 1024;  ///< bytes: 128 little-endian f64 (a 16-joint arm's truth is 80)
+inline constexpr std::size_t kMaxPayload = 1024;  ///< bytes: 128 little-endian f64 (a 16-joint arm's truth: 80)
 inline constexpr std::size_t kMaxRawFrame = kHeaderSize + kMaxPayload + kCrcSize;
 /// Longest frame on the link, delimiter included. A longer run of bytes without a 0x00 is
 /// an oversize frame: dropped, and the decoder resyncs at the next delimiter.
