@@ -3,7 +3,9 @@
 //
 //   the arm model keys (services/common/arm_model_params.hpp: model, dof, length ..
 //   stiffness, gravity, payload_mass) + k_p, k_v, k_d (lists; default eq. (60)'s gains for
-//   2 joints, 0 otherwise), velocity (motor | link, default motor).
+//   2 joints, 0 otherwise), velocity (motor | link, default motor), inertia (links |
+//   with_motors, default links), acceleration (desired | estimated, default desired): the
+//   readings of (60), docs/algorithms/arm.md "Table 4: the set-up".
 //   in reference {q1.., dq1.., ddq1.., dddq1..} (JointReference), estimate {q1.., dq1..,
 //   ddq1.., dddq1.., tau1.., dtau1.., phi1.., dphi1..} (LinkJointState);
 //   out cmd {u1..un} (JointCommand; 0 until both inputs exist).
@@ -31,6 +33,12 @@ alg::CtPdParams read_ct_pd(const YamlMap& p) {
   const std::string vel = p.optional<std::string>("velocity", "motor");
   if (vel != "motor" && vel != "link") p.fail("velocity", "must be motor or link");
   v.velocity = vel == "motor" ? alg::CtPdVelocity::kMotor : alg::CtPdVelocity::kLink;
+  const std::string inertia = p.optional<std::string>("inertia", "links");
+  if (inertia != "links" && inertia != "with_motors") p.fail("inertia", "must be links or with_motors");
+  v.inertia = inertia == "links" ? alg::CtPdInertia::kLinks : alg::CtPdInertia::kWithMotors;
+  const std::string acc = p.optional<std::string>("acceleration", "desired");
+  if (acc != "desired" && acc != "estimated") p.fail("acceleration", "must be desired or estimated");
+  v.acceleration = acc == "desired" ? alg::CtPdAcceleration::kDesired : alg::CtPdAcceleration::kEstimated;
   return v;
 }
 

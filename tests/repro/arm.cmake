@@ -50,3 +50,10 @@ add_test(NAME cli.arm_initial_velocity_list_size
                  $<TARGET_FILE:plexus> sim ${ARM_SCENARIO} --quiet --set robots.arm.plant.dq0=[1,1,1])
 set_tests_properties(cli.arm_gain_list_size cli.arm_negative_gain cli.arm_bad_link_mass cli.arm_bad_jacobian
                      cli.arm_too_many_joints cli.arm_initial_velocity_list_size PROPERTIES LABELS "cli")
+
+# issue 29: table4_fit, the tool that fits Table 4's unstated set-up, runs the scenario runner's
+# closed loop (its arm_table4 set-up gives plexus sim's figures) and refuses a bad argument.
+add_test(NAME tools.table4_fit_matches_sim
+         COMMAND ${CMAKE_CURRENT_LIST_DIR}/table4_fit_check.sh $<TARGET_FILE:table4_fit> $<TARGET_FILE:plexus>
+                 ${PROJECT_SOURCE_DIR}/deploy/scenarios/arm_table4.yaml ${CMAKE_BINARY_DIR}/test-runs/table4_fit)
+set_tests_properties(tools.table4_fit_matches_sim PROPERTIES LABELS "unit")

@@ -3,13 +3,15 @@
 # PASS_REGULAR_EXPRESSION makes ctest ignore the exit code).
 #
 #   cmake -DCOMMAND="prog|arg|arg" [-DEXPECT_RC=0] -DCHECKS="a.b == 200;a.c > 0;d exists"
-#         [-DMISSES="name;name"] -P json_checks.cmake
+#         [-DMISSES="name;name"] [-DINCONSISTENT="name;name"] -P json_checks.cmake
 #
 # MISSES, for a run of `plexus sim|launch` that misses known paper targets: the exact set
 # of expectations that must fail (stderr lines "expectation failed: <name> = ..."), in any
 # order; "none" for a run that must meet every expectation. A miss fixed, or another
 # expectation broken, fails the check, so the docs listing the misses stay true. Bound each
-# miss's value with CHECKS so that it cannot get worse unnoticed.
+# miss's value with CHECKS so that it cannot get worse unnoticed. INCONSISTENT, likewise: the
+# exact set of unmet expectations reported as inconsistent in the paper (stderr lines
+# "inconsistent in the paper: <name> = ..."; the scenario's paper_inconsistent), "none" for none.
 #
 # A check is "<path> <op> <value>" or "<path> exists": the path is dot-separated keys into
 # the JSON (a key holding '.' is not supported), op one of == > >= < <= (numbers compared
@@ -22,23 +24,30 @@ execute_process(COMMAND ${cmd} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARI
 if(NOT rc EQUAL EXPECT_RC)
   message(FATAL_ERROR "exit ${rc}, expected ${EXPECT_RC}\nstderr: ${err}\nstdout: ${out}")
 endif()
-if(DEFINED MISSES)
-  string(REGEX MATCHALL "expectation failed: [A-Za-z0-9_.]+" lines "${err}")
-  set(failed_names "")
+# The exact set of names that stderr lines "<prefix><name> = ..." carry must equal `want`
+# ("none": no such line).
+function(require_exact_names prefix want what)
+  string(REGEX MATCHALL "${prefix}[A-Za-z0-9_.]+" lines "${err}")
+  set(got "")
   foreach(line IN LISTS lines)
-    string(REPLACE "expectation failed: " "" name "${line}")
-    list(APPEND failed_names "${name}")
+    string(REPLACE "${prefix}" "" name "${line}")
+    list(APPEND got "${name}")
   endforeach()
-  set(want_names "${MISSES}")
-  if(want_names STREQUAL "none")
-    set(want_names "")
+  if(want STREQUAL "none")
+    set(want "")
   endif()
-  list(SORT failed_names)
-  list(SORT want_names)
-  if(NOT "${failed_names}" STREQUAL "${want_names}")
-    message(FATAL_ERROR "failed expectations [${failed_names}], expected exactly [${want_names}]\nstderr: ${err}")
+  list(SORT got)
+  list(SORT want)
+  if(NOT "${got}" STREQUAL "${want}")
+    message(FATAL_ERROR "${what} [${got}], expected exactly [${want}]\nstderr: ${err}")
   endif()
-  message(STATUS "failed expectations, as expected: [${failed_names}]")
+  message(STATUS "${what}, as expected: [${got}]")
+endfunction()
+if(DEFINED MISSES)
+  require_exact_names("expectation failed: " "${MISSES}" "failed expectations")
+endif()
+if(DEFINED INCONSISTENT)
+  require_exact_names("inconsistent in the paper: " "${INCONSISTENT}" "inconsistent in the paper")
 endif()
 string(JSON type ERROR_VARIABLE bad TYPE "${out}")
 if(bad)

@@ -41,6 +41,7 @@ int finish_run(const scenario::Scenario& sc, const scenario::RunLog& log, double
   }
   if (!quiet) std::fprintf(stderr, "run folder: %s\n", dir.string().c_str());
   for (const auto& f : ev.failures) std::fprintf(stderr, "%s\n", f.c_str());
+  for (const auto& f : ev.inconsistent) std::fprintf(stderr, "%s\n", f.c_str());
   return ev.failures.empty() ? 0 : 1;
 }
 

@@ -22,8 +22,12 @@ Evaluation evaluate(const Scenario& scenario, const RunLog& log) {
   for (const auto& e : scenario.expectations) {
     for (const auto& [name, result] : ev.metrics) {
       if (name != e.metric || e.holds(result.value)) continue;
-      ev.failures.push_back("expectation failed: " + name + " = " + format_number(result.value) + ", bound " +
-                            e.op_text() + " " + format_number(e.bound));
+      const std::string what =
+          name + " = " + format_number(result.value) + ", bound " + e.op_text() + " " + format_number(e.bound);
+      if (e.inconsistent.empty())
+        ev.failures.push_back("expectation failed: " + what);
+      else
+        ev.inconsistent.push_back("inconsistent in the paper: " + what + " (evidence: " + e.inconsistent + ")");
     }
   }
   return ev;

@@ -17,6 +17,10 @@ Comparison compare(const ReportInputs& in) {
       if (kv.second.IsScalar() && parse_expectation(kv.first.Scalar(), kv.second.Scalar(), e))
         bounds[e.metric].push_back(e);
     }
+  if (in.scenario["paper_inconsistent"] && in.scenario["paper_inconsistent"].IsMap())
+    for (const auto& kv : in.scenario["paper_inconsistent"])
+      if (kv.second.IsScalar())
+        for (Expectation& e : bounds[kv.first.Scalar()]) e.inconsistent = kv.second.Scalar();
   std::map<std::string, std::string> papers;
   if (in.scenario["metrics"] && in.scenario["metrics"].IsSequence())
     for (const auto& m : in.scenario["metrics"]) {
@@ -34,15 +38,20 @@ Comparison compare(const ReportInputs& in) {
     if (metric == "digest") continue;
     const double v = value.is_number() ? value.get<double>() : std::nan("");
     const auto& es = bounds[metric];
-    std::string result = "-";
-    for (const auto& e : es) result = (result == "-" || result == "pass") && e.holds(v) ? "pass" : "FAIL";
-    c.rows.push_back({metric, papers[metric], format_number(v), bound_text(es), result});
+    std::string result = "-", evidence;
+    for (const auto& e : es) {
+      result = worse_result(result, expectation_result(e, v));
+      if (!e.inconsistent.empty()) evidence = e.inconsistent;
+    }
+    c.rows.push_back({metric, papers[metric], format_number(v), bound_text(es), result,
+                      result == kInconsistentResult ? evidence : ""});
     if (result == "FAIL") ++c.failed;
+    if (result == kInconsistentResult) ++c.inconsistent;
   }
   // An expectation whose metric metrics.json lacks is a row too: missing, and FAIL.
   for (const auto& [metric, es] : bounds) {
     if (in.metrics.contains(metric)) continue;
-    c.rows.push_back({metric, papers[metric], "missing", bound_text(es), "FAIL"});
+    c.rows.push_back({metric, papers[metric], "missing", bound_text(es), "FAIL", ""});
     ++c.failed;
   }
   return c;
@@ -52,7 +61,8 @@ std::string Comparison::markdown() const {
   std::ostringstream table;
   table << "| metric | value | expectation | result |\n|---|---|---|---|\n";
   for (const auto& r : rows)
-    table << "| " << r.metric << " | " << r.value << " | " << r.bound << " | " << r.result << " |\n";
+    table << "| " << r.metric << " | " << r.value << " | " << r.bound << " | " << r.result
+          << (r.evidence.empty() ? "" : " (" + r.evidence + ")") << " |\n";
   return table.str();
 }
 

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "plexus/base/yaml_reader.hpp"
+#include "plexus/scenario/expectation.hpp"
 
 namespace plexus::scenario {
 namespace {
@@ -54,6 +55,7 @@ table.comparison th { background: #eee; }
 table.comparison td.num { text-align: right; font-variant-numeric: tabular-nums; }
 tr.pass td.result { background: #d8f0d8; color: #145214; font-weight: bold; }
 tr.fail td.result { background: #f6d4d4; color: #8a1010; font-weight: bold; }
+tr.inconsistent td.result { background: #efe6c8; color: #5a4a10; font-weight: bold; }
 tr.missing td.value { color: #8a1010; font-style: italic; }
 .summary { font-weight: bold; }
 .summary.fail { color: #8a1010; }
@@ -105,18 +107,25 @@ std::string report_html(const ReportInputs& in, const Comparison& comparison, co
 
   html << "<h2 id=\"comparison\">Comparison with the papers</h2>\n";
   html << "<p class=\"summary " << (comparison.failed ? "fail" : "pass") << "\">" << with_bound - comparison.failed
-       << " of " << with_bound << " expectations met" << (comparison.failed ? " (FAIL rows below)" : "") << ".</p>\n";
+       << " of " << with_bound << " expectations met" << (comparison.failed ? " (FAIL rows below)" : "");
+  if (comparison.inconsistent)
+    html << "; " << comparison.inconsistent
+         << " not met are inconsistent in the paper (its own text cannot produce them; the evidence is named in the "
+            "row) and do not fail the run";
+  html << ".</p>\n";
   html << "<table class=\"comparison\">\n<thead><tr><th>metric</th><th>paper</th><th>ours</th><th>bound</th>"
           "<th>result</th></tr></thead>\n<tbody>\n";
   for (const auto& r : comparison.rows) {
-    const std::string cls = r.value == "missing" ? "fail missing"
-                            : r.result == "FAIL" ? "fail"
-                            : r.result == "pass" ? "pass"
-                                                 : "none";
+    const std::string cls = r.value == "missing"              ? "fail missing"
+                            : r.result == "FAIL"              ? "fail"
+                            : r.result == "pass"              ? "pass"
+                            : r.result == kInconsistentResult ? "inconsistent"
+                                                              : "none";
     html << "<tr class=\"" << cls << "\"><td class=\"metric\"><code>" << esc(r.metric)
          << "</code></td><td class=\"paper\">" << esc(r.paper.empty() ? "-" : r.paper)
          << "</td><td class=\"value num\">" << value_cell(r.value) << "</td><td class=\"bound\">" << esc(r.bound)
-         << "</td><td class=\"result\">" << esc(r.result) << "</td></tr>\n";
+         << "</td><td class=\"result\">" << esc(r.result)
+         << (r.evidence.empty() ? "" : "<br><small>evidence: " + esc(r.evidence) + "</small>") << "</td></tr>\n";
   }
   html << "</tbody>\n</table>\n";
   html << "<p>paper: the published figure the metric reproduces (the metric's <code>paper</code> key in the scenario); "

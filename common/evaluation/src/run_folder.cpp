@@ -81,13 +81,16 @@ void write_summary(const fs::path& p, const Scenario& sc, const Evaluation& ev, 
     for (const auto& e : sc.expectations)
       if (e.metric == name) {
         bound += (bound.empty() ? "" : ", ") + std::string(e.op_text()) + " " + format_number(e.bound);
-        result = e.holds(r.value) && result != "FAIL" ? "pass" : "FAIL";
+        result = worse_result(result, expectation_result(e, r.value));
       }
     out << "| " << name << " | " << format_number(r.value) << " | " << md_cell(bound) << " | " << md_cell(result)
         << " |\n";
   }
-  out << "\n" << (ev.failures.empty() ? "All expectations met." : "Expectations failed:") << "\n";
+  out << "\n"
+      << (ev.failures.empty() ? "All expectations met" : "Expectations failed:")
+      << (ev.failures.empty() ? (ev.inconsistent.empty() ? "." : " but those inconsistent in the paper.") : "") << "\n";
   for (const auto& f : ev.failures) out << "\n- " << f;
+  for (const auto& f : ev.inconsistent) out << "\n- " << f;
   out << "\n";
   if (!sc.warnings.empty()) {
     out << "\n## Warnings\n";

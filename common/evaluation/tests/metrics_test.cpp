@@ -82,6 +82,30 @@ TEST(Metrics, EvaluateReportsFailedExpectationsWithValueAndBound) {
   EXPECT_EQ(ev.to_json().dump(), R"({"digest":")" + ev.digest + R"(","m":0.25,"n":null})");
 }
 
+// An expectation marked paper_inconsistent that is not met is reported with its evidence and
+// does not fail the run; one that is met passes as usual.
+TEST(Metrics, InconsistentInThePaperIsNotAFailure) {
+  Scenario sc;
+  sc.metrics.push_back({"m", "value_max", [](const RunLog&) { return MetricResult{0.25, {}}; }});
+  sc.metrics.push_back({"k", "value_max", [](const RunLog&) { return MetricResult{0.1, {}}; }});
+  Expectation e;
+  ASSERT_TRUE(parse_expectation("m", "<= 0.2", e));
+  e.inconsistent = "docs/a.md, \"B\"";
+  sc.expectations.push_back(e);
+  ASSERT_TRUE(parse_expectation("k", "<= 0.2", e));
+  sc.expectations.push_back(e);
+  const Evaluation ev = evaluate(sc, two_signals());
+  EXPECT_TRUE(ev.failures.empty());
+  ASSERT_EQ(ev.inconsistent.size(), 1u);
+  EXPECT_EQ(ev.inconsistent[0], "inconsistent in the paper: m = 0.25, bound <= 0.2 (evidence: docs/a.md, \"B\")");
+  EXPECT_EQ(expectation_result(sc.expectations[0], 0.25), kInconsistentResult);
+  EXPECT_EQ(expectation_result(sc.expectations[0], 0.15), "pass");
+  EXPECT_EQ(expectation_result(sc.expectations[1], 0.25), "FAIL");
+  EXPECT_EQ(worse_result("pass", kInconsistentResult), kInconsistentResult);
+  EXPECT_EQ(worse_result(kInconsistentResult, "FAIL"), "FAIL");
+  EXPECT_EQ(worse_result("-", "pass"), "pass");
+}
+
 TEST(Expectations, ParseEveryOperatorAndRejectGarbage) {
   Expectation e;
   ASSERT_TRUE(parse_expectation("m", "<= 0.05", e));

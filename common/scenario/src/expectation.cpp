@@ -17,6 +17,17 @@ bool Expectation::holds(double value) const {
   return false;
 }
 
+std::string expectation_result(const Expectation& e, double value) {
+  if (e.holds(value)) return "pass";
+  return e.inconsistent.empty() ? "FAIL" : kInconsistentResult;
+}
+
+std::string worse_result(const std::string& a, const std::string& b) {
+  for (const char* r : {"FAIL", kInconsistentResult, "pass"})
+    if (a == r || b == r) return r;
+  return a;
+}
+
 const char* Expectation::op_text() const {
   switch (op) {
     case Op::le: return "<=";
@@ -55,7 +66,7 @@ bool parse_expectation(const std::string& metric, const std::string& text, Expec
       return false;
     }
     if (rest.find_first_not_of(' ', used) != std::string::npos || !std::isfinite(v)) return false;
-    out = Expectation{metric, op, v};
+    out = Expectation{metric, op, v, {}};
     return true;
   }
   return false;

@@ -604,6 +604,22 @@ struct Loader {
         ex.fail(metric, "expected '<op> <number>' with op one of <=, >=, <, >, ==; got '" + text + "'");
       sc.expectations.push_back(e);
     }
+    load_paper_inconsistent(top);
+  }
+
+  /// `paper_inconsistent:` {metric: evidence}: expectations whose published figure the
+  /// paper's own text cannot produce (expectation.hpp); each names an expectation.
+  void load_paper_inconsistent(const YamlMap& top) {
+    if (!top.has("paper_inconsistent")) return;
+    const YamlMap pi = top.map("paper_inconsistent");
+    for (const auto& metric : pi.keys()) {
+      const auto evidence = pi.required<std::string>(metric);
+      if (evidence.empty()) pi.fail(metric, "must name the evidence (a docs page and section)");
+      bool found = false;
+      for (Expectation& e : sc.expectations)
+        if (e.metric == metric) e.inconsistent = evidence, found = true;
+      if (!found) pi.fail(metric, "no expectation on '" + metric + "' in expectations");
+    }
   }
 
   /// `parameter_changes:`: [{step, key, value}], each checked against its component's own
@@ -641,7 +657,8 @@ struct Loader {
 
   void load(const YamlMap& top) {
     // Read every top-level key first, so a misspelt one is reported before anything deeper.
-    for (const char* k : {"robots", "services", "loops", "metrics", "expectations", "inputs", "parameter_changes"})
+    for (const char* k : {"robots", "services", "loops", "metrics", "expectations", "paper_inconsistent", "inputs",
+                          "parameter_changes"})
       top.node(k);
     load_top(top);
     top.reject_unknown();
@@ -649,8 +666,10 @@ struct Loader {
     load_components(top);
     load_loops(top);
     load_parameter_changes(top);
-    if (sc.partial && (top.has("metrics") || top.has("expectations")))
-      top.fail(top.has("metrics") ? "metrics" : "expectations",
+    if (sc.partial && (top.has("metrics") || top.has("expectations") || top.has("paper_inconsistent")))
+      top.fail(top.has("metrics")        ? "metrics"
+               : top.has("expectations") ? "expectations"
+                                         : "paper_inconsistent",
                "belongs to a whole scenario, not to one service's part");
     load_metrics(top);
     load_expectations(top);

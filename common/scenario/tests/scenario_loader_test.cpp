@@ -47,6 +47,14 @@ TEST(ScenarioLoader, LoadsTheValidScenario) {
   EXPECT_TRUE(sc.resolved["robots"]["r1"]["sensors"]["gps"]["seed"]);
 }
 
+TEST(ScenarioLoader, PaperInconsistentMarksItsExpectation) {
+  const Scenario sc = load_scenario_text(
+      with("  final_x: \"<= 2\"\n", "  final_x: \"<= 2\"\npaper_inconsistent:\n  final_x: docs/x.md, \"Why\"\n"),
+      "t.yaml");
+  ASSERT_EQ(sc.expectations.size(), 1u);
+  EXPECT_EQ(sc.expectations[0].inconsistent, "docs/x.md, \"Why\"");
+}
+
 TEST(ScenarioLoader, RealtimeClockSettings) {
   const Scenario sc = load_scenario_text(
       with("seed: 5\n", "seed: 5\nclock: {mode: realtime, input_deadline_periods: 4, blind_after_s: 0.5}\n"), "t.yaml");
@@ -225,6 +233,12 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{
             "expectation_number", with("\"<= 2\"", "\"<= two\""),
             "t.yaml:25: expectations.final_x: expected '<op> <number>' with op one of <=, >=, <, >, ==; got '<= two'"},
+        BadCase{"inconsistent_without_expectation",
+                with("  final_x: \"<= 2\"\n", "  final_x: \"<= 2\"\npaper_inconsistent:\n  final_y: docs/x.md\n"),
+                "t.yaml:27: paper_inconsistent.final_y: no expectation on 'final_y' in expectations"},
+        BadCase{"inconsistent_without_evidence",
+                with("  final_x: \"<= 2\"\n", "  final_x: \"<= 2\"\npaper_inconsistent:\n  final_x: \"\"\n"),
+                "t.yaml:27: paper_inconsistent.final_x: must name the evidence (a docs page and section)"},
         BadCase{"yaml_syntax", "name: [t\n", "t.yaml:2: YAML syntax error: end of sequence flow not found"}),
     [](const ::testing::TestParamInfo<BadCase>& param_info) { return std::string(param_info.param.label); });
 

@@ -59,18 +59,18 @@ acc=$(jq -r '.skid_classifier_accuracy' "$m")
 echo "skid re-convergence ${reconv} s (paper <= 3, lockstep 1.0), classifier accuracy ${acc} (>= 0.95, lockstep 1.0)"
 arm() { jq -r ".arm_$1" "$m"; }
 echo "arm: settling $(arm settling_time_1_s) / $(arm settling_time_2_s) s (Table 4 <= 0.36 / 0.37)," \
-     "rms $(arm rms_e1_mrad) / $(arm rms_e2_mrad) mrad (lockstep 1.29 / 1.14)," \
-     "peak torque $(arm max_torque_1_nm) / $(arm max_torque_2_nm) N m (lockstep 590 / 163)"
+     "rms $(arm rms_e1_mrad) / $(arm rms_e2_mrad) mrad (Table 4 0.649 / 0.619, lockstep 0.634 / 0.619)," \
+     "peak torque $(arm max_torque_1_nm) / $(arm max_torque_2_nm) N m (Table 4 46.33 / 14.39, lockstep 46.75 / 14.58)"
 within() {  # within NAME LOW HIGH
   awk -v v="$(arm "$1")" -v lo="$2" -v hi="$3" 'BEGIN { exit !(v != "null" && v >= lo && v <= hi) }' ||
     { echo "arm_$1 = $(arm "$1") outside [$2, $3]"; fail=1; }
 }
 within settling_time_1_s 0 0.36
 within settling_time_2_s 0 0.37
-within rms_e1_mrad 0 1.42
-within rms_e2_mrad 0 1.26
-within max_torque_1_nm 0 650
-within max_torque_2_nm 0 180
+within rms_e1_mrad 0 0.746
+within rms_e2_mrad 0 0.712
+within max_torque_1_nm 0 53.28
+within max_torque_2_nm 0 16.55
 fits=$(jq -r '.loops.arm.fits' "$j")
 echo "timing budget of loop arm: fits=$fits ($(jq -c '.loops.arm.hops | length' "$j") hops between processes)"
 [ "$fits" = true ] || { echo "loop arm: no verdict, or it does not fit its budget"; fail=1; }

@@ -29,7 +29,13 @@ CtPdController::CtPdController(const CtPdParams& p) : params_(p), n_(p.model.dof
 }
 
 const Eigen::VectorXd& CtPdController::step(const ArmReferenceSample& ref, const ArmFeedback& fb) {
-  dyn_.inverse_dynamics(fb.q, fb.qd, ref.qdd, u_);  // M(q) q_d'' + C(q, q') q' + G(q)
+  const Eigen::VectorXd& a = params_.acceleration == CtPdAcceleration::kDesired ? ref.qdd : fb.qdd;
+  dyn_.inverse_dynamics(fb.q, fb.qd, a, u_);  // M(q) q_d'' + C(q, q') q' + G(q)
+  if (params_.inertia == CtPdInertia::kWithMotors)
+    for (int i = 0; i < n_; ++i) {
+      const ArmJoint& j = params_.model.joints[static_cast<std::size_t>(i)];
+      u_(i) += j.motor_inertia * a(i) + j.friction * ref.qd(i);  // eq. (16) at phi = q
+    }
   const Eigen::VectorXd& v = params_.velocity == CtPdVelocity::kLink ? fb.qd : fb.phid;
   u_ += params_.k_p.cwiseProduct(ref.q - fb.q) + params_.k_v.cwiseProduct(ref.qd - v) +
         params_.k_d.cwiseProduct(fb.qd - fb.phid);  // eq. (60)

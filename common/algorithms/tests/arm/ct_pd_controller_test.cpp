@@ -24,6 +24,32 @@ TEST(CtPdController, OnTheReferenceItIsTheComputedTorque) {
   EXPECT_GT(c.step(r, fb)(0), expected(0) + 15.0);
 }
 
+// The readings of (60) (issue 29): with the rotors (the rigid equivalent) the computed torque
+// adds J q_d'' + F q_d'; with the estimated acceleration it multiplies M by the observer's q''.
+TEST(CtPdController, ReadingsOfEq60) {
+  const ArmModel m = ArmModel::paper_2dof();
+  ArmRigidBodyDynamics dyn(m);
+  Rng rng(71);
+  ArmReferenceSample r{testing::random_vector(rng, 2, 1), testing::random_vector(rng, 2, 1),
+                       testing::random_vector(rng, 2, 5), Eigen::VectorXd::Zero(2)};
+  ArmFeedback fb = ArmFeedback::zero(2);
+  fb.q = r.q, fb.qd = r.qd, fb.phid = r.qd, fb.qdd = testing::random_vector(rng, 2, 5);
+  CtPdParams p = CtPdParams::paper_2dof();
+  p.inertia = CtPdInertia::kWithMotors;
+  Eigen::VectorXd links(2);
+  dyn.inverse_dynamics(r.q, r.qd, r.qdd, links);
+  const Eigen::VectorXd with = CtPdController(p).step(r, fb);
+  for (int i = 0; i < 2; ++i) {
+    const ArmJoint& j = m.joints[static_cast<std::size_t>(i)];
+    EXPECT_NEAR(with(i), links(i) + j.motor_inertia * r.qdd(i) + j.friction * r.qd(i), 1e-9) << i;
+  }
+  p.inertia = CtPdInertia::kLinks;
+  p.acceleration = CtPdAcceleration::kEstimated;
+  Eigen::VectorXd estimated(2);
+  dyn.inverse_dynamics(r.q, r.qd, fb.qdd, estimated);
+  EXPECT_TRUE(CtPdController(p).step(r, fb).isApprox(estimated, 1e-12));
+}
+
 double late_error(CtPdVelocity velocity) {
   FlexibleJointArmPlant plant({});
   CtPdParams p = CtPdParams::paper_2dof();

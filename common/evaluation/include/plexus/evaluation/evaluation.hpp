@@ -18,6 +18,9 @@ struct Evaluation {
   std::vector<std::pair<std::string, MetricResult>> metrics;  ///< in scenario order
   /// One line per failed expectation: "expectation failed: <metric> = <value>, bound <op> <bound>".
   std::vector<std::string> failures;
+  /// One line per unmet expectation marked `paper_inconsistent` (not a failure):
+  /// "inconsistent in the paper: <metric> = <value>, bound <op> <bound> (evidence: ...)".
+  std::vector<std::string> inconsistent;
 
   /// {"digest": "...", "<metric>": value, ...} in scenario order; a NaN value is null.
   nlohmann::ordered_json to_json() const;

@@ -6,6 +6,14 @@
 // desired acceleration q_d''. The rigid-body terms are one KDL recursive Newton-Euler call
 // on the nominal model. Paper gains: K_p = diag(1900, 500), K_v = diag(500, 150),
 // K_d = diag(110, 110). Note that (60) has no motor-inertia term J q_d''.
+//
+// Two readings of (60) the text allows (issue 29, docs/algorithms/arm.md "Table 4: the
+// set-up"), both off by default:
+// - `inertia`: T_m^T M_1 T_m is the links' inertia (kLinks, as we read it), or the rigid
+//   equivalent of the flexible arm, links and rotors (kWithMotors: + J q_d'' + F q_d', the
+//   motor side of eq. (16) at phi = q);
+// - `acceleration`: q_d'' (kDesired, computed torque) or the observer's q'' (kEstimated,
+//   (60) exactly as printed).
 #pragma once
 
 #include <Eigen/Core>
@@ -24,10 +32,24 @@ enum class CtPdVelocity {
   kMotor,  ///< K_v (q_d' - phi'): collocated velocity feedback, stable with the same gains.
 };
 
+/// What the computed-torque inertia of eq. (60) covers.
+enum class CtPdInertia {
+  kLinks,       ///< M(q) of the links alone (no J q_d'' term)
+  kWithMotors,  ///< the rigid equivalent: + J q_d'' + F q_d' (rotor inertia and friction)
+};
+
+/// Which acceleration the computed torque of eq. (60) multiplies by M.
+enum class CtPdAcceleration {
+  kDesired,    ///< q_d'' (computed torque)
+  kEstimated,  ///< the observer's q'' (eq. (60) as printed)
+};
+
 struct CtPdParams {
   ArmModel model = ArmModel::paper_2dof();  ///< nominal model
   Eigen::VectorXd k_p, k_v, k_d;            ///< diagonal gains, one per joint, >= 0
   CtPdVelocity velocity = CtPdVelocity::kLink;
+  CtPdInertia inertia = CtPdInertia::kLinks;
+  CtPdAcceleration acceleration = CtPdAcceleration::kDesired;
   static CtPdParams paper_2dof();
 };
 
