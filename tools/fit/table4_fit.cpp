@@ -309,6 +309,7 @@ std::vector<Reading> ct_readings(const std::vector<std::string>& vel, const std:
 
 int main(int argc, char** argv) {
   CLI::App app{"table4_fit: fit paper 004's unstated set-up to both columns of Table 4 (issue 29)"};
+  app.set_version_flag("--version", std::string("table4_fit ") + PLEXUS_VERSION);
   std::string gravity = "hanging", inertia = "joint", q0 = "0", dq0 = "1", step = "0.0002", ekf_init = "steady",
               limit = "0", vdc_accel = "model", ct_vel = "motor", ct_inertia = "links", ct_accel = "desired",
               theta = "1", times = "5", csv;
