@@ -11,7 +11,8 @@
 // every combination of the candidate values given on the command line, in parallel, and
 // ranks each (set-up, VDC reading, CT+PD reading, T) by its worst relative error over the
 // 14 figures. T is not simulated separately: the metrics of every T in --times come from
-// one run (a T past the run's end extends the last two periods' mean-square error, marked).
+// one run (a T past the run's end extends the last two periods' mean-square error, marked),
+// and a settling time counts only if the error stays in the band for --hold (1 s) after it.
 //
 //   table4_fit --gravity hanging,none --inertia joint,com --q0 0,0.5 --dq0 0,1 --jobs 2
 //
@@ -192,8 +193,10 @@ Trace simulate(const SetUp& s, const Reading& r, double duration, std::uint64_t 
 }
 
 // The Table 4 metrics of a trace over [0, T] (the scenario metrics' definitions:
-// tracking_rms, settling_time, value_max_abs of the command).
-Figures figures(const Trace& t, double step, double T) {
+// tracking_rms, settling_time, value_max_abs of the command), except that a settling time
+// counts only if the error then stays in the band for `hold` seconds of the window: one at
+// the window's end is an artefact (the error leaves the band again after it).
+Figures figures(const Trace& t, double step, double T, double hold) {
   Figures out{};
   const double inf = std::numeric_limits<double>::infinity();
   if (t.diverged) {
@@ -225,8 +228,8 @@ Figures figures(const Trace& t, double step, double T) {
   out.f[1] = 1e3 * std::sqrt(s2 / count);
   out.f[2] = 1e3 * std::sqrt((s1 + s2) / count);
   auto settle = [&](long last) {
-    if (last + 1 >= static_cast<long>(m)) return inf;  // ends outside the band
-    return last < 0 ? 0.0 : static_cast<double>(last + 1) * step;
+    const double s = last < 0 ? 0.0 : static_cast<double>(last + 1) * step;
+    return s > T - hold ? inf : s;  // ends outside the band, or not long enough inside
   };
   out.f[3] = settle(last1);
   out.f[4] = settle(last2);
@@ -313,7 +316,7 @@ int main(int argc, char** argv) {
   std::string gravity = "hanging", inertia = "joint", q0 = "0", dq0 = "1", step = "0.0002", ekf_init = "steady",
               limit = "0", vdc_accel = "model", ct_vel = "motor", ct_inertia = "links", ct_accel = "desired",
               theta = "1", times = "5", csv;
-  double duration = 6.0;
+  double duration = 6.0, hold = 1.0;
   int jobs = 2, top = 15;
   std::uint64_t seed = 4;
   app.add_option("--gravity", gravity, "hanging, none, side, side-, upright (comma list)");
@@ -331,6 +334,8 @@ int main(int argc, char** argv) {
   app.add_option("--ct-accel", ct_accel, "acceleration of (60): desired, estimated");
   app.add_option("--times", times, "run lengths T to score, s");
   app.add_option("--duration", duration, "simulated duration per run, s")->check(CLI::Range(1.0, 60.0));
+  app.add_option("--hold", hold, "s: a settling time counts if the error then stays in the band this long")
+      ->check(CLI::Range(0.0, 10.0));
   app.add_option("--jobs", jobs, "parallel runs")->check(CLI::Range(1, 64));
   app.add_option("--top", top, "rows to print")->check(CLI::Range(1, 100000));
   app.add_option("--seed", seed, "encoder noise seed");
@@ -380,7 +385,7 @@ int main(int argc, char** argv) {
     for (std::size_t i; (i = next.fetch_add(1)) < runs;) {
       const SetUp& s = setups[i / readings.size()];
       const Trace t = simulate(s, readings[i % readings.size()], duration, seed);
-      for (double T : ts) result[i].push_back(figures(t, s.step, T));
+      for (double T : ts) result[i].push_back(figures(t, s.step, T, hold));
       if ((i + 1) % 50 == 0) {
         std::lock_guard<std::mutex> lock(print);
         std::fprintf(stderr, "table4_fit: %zu of %zu runs\n", i + 1, runs);
