@@ -13,6 +13,7 @@
 #include <string>
 
 #include "plexus/algorithms/arm/ct_pd_controller.hpp"
+#include "plexus/scenario/params.hpp"
 #include "plexus/scenario/registry.hpp"
 #include "services/common/arm_model_params.hpp"
 #include "services/joint_controller/arm_controller_base.hpp"
@@ -33,12 +34,11 @@ alg::CtPdParams read_ct_pd(const YamlMap& p) {
   const std::string vel = p.optional<std::string>("velocity", "motor");
   if (vel != "motor" && vel != "link") p.fail("velocity", "must be motor or link");
   v.velocity = vel == "motor" ? alg::CtPdVelocity::kMotor : alg::CtPdVelocity::kLink;
-  const std::string inertia = p.optional<std::string>("inertia", "links");
-  if (inertia != "links" && inertia != "with_motors") p.fail("inertia", "must be links or with_motors");
-  v.inertia = inertia == "links" ? alg::CtPdInertia::kLinks : alg::CtPdInertia::kWithMotors;
-  const std::string acc = p.optional<std::string>("acceleration", "desired");
-  if (acc != "desired" && acc != "estimated") p.fail("acceleration", "must be desired or estimated");
-  v.acceleration = acc == "desired" ? alg::CtPdAcceleration::kDesired : alg::CtPdAcceleration::kEstimated;
+  v.inertia = choice(p, "inertia", "links", {"links", "with_motors"}) == "links" ? alg::CtPdInertia::kLinks
+                                                                                 : alg::CtPdInertia::kWithMotors;
+  v.acceleration = choice(p, "acceleration", "desired", {"desired", "estimated"}) == "desired"
+                       ? alg::CtPdAcceleration::kDesired
+                       : alg::CtPdAcceleration::kEstimated;
   return v;
 }
 
