@@ -6,12 +6,13 @@
 //
 //   in wheels {v_l, v_r} (TrackSpeeds), gps {x, y, theta} (Pose2D), and with
 //     adaptive_reset: terrain {class, windows} (TerrainClass); out icr {x, y, theta, y_l,
-//     y_r, x_G, resets, sd_y_l, sd_y_r, sd_x_G} (IcrEstimate)
+//     y_r, x_G, resets, sd_y_l, sd_y_r, sd_x_G, model_age} (IcrEstimate)
 //   q_diag, r_diag, p0_diag, p_b_diag (lists; paper eq. (21)-(22)), initial_icr ([1, -1, 1]),
 //   process_noise (dt_squared), enforce_track_sides (true), track_side_margin (0.01),
 //   adaptive_reset (false), consecutive_windows (2), reset_mode (covariance | prior),
 //   icr_library (required with prior: a terrain ICR library file, relative to the scenario's
-//   folder), prior_check_updates (60)
+//   folder), prior_check_updates (60), rewind_s (3 s with prior, 0 with covariance; 0..30),
+//   rewind_candidates (60)
 //
 // reset_mode prior (plexus; docs/algorithms/skid_steer.md "Prior reset"): on a confirmed
 // change to a terrain the library knows, the ICRs restart from that terrain's learned values
@@ -20,8 +21,13 @@
 // (a shadow filter on the same inputs) for the next prior_check_updates GPS updates; the
 // hypothesis whose innovations are less likely (summed NIS + log det S) is dropped, as soon
 // as the sums differ by 10 (a likelihood ratio of e^5) or at the end: a wrong prior is
-// replaced by the paper's filter. A terrain the library lacks
-// gets the paper's reset.
+// replaced by the paper's filter. A terrain the library lacks gets the paper's reset.
+//
+// rewind_s (common/algorithms/include/plexus/algorithms/skid_steer/icr_terrain_reset.hpp):
+// each reset is applied at the switch time it makes most likely among the last rewind_s
+// seconds of steps, which are filtered again, not at the confirmation a second after the
+// switch; model_age publishes since when the published ICRs apply (icr_odometry integrates
+// those steps again).
 //
 // It starts (pose from the GPS) at its first GPS sample; from then on it predicts with the
 // track speeds at every step and updates at every new GPS sample.
@@ -40,6 +46,7 @@
 #include <string>
 
 #include "plexus/algorithms/skid_steer/icr_ekf.hpp"
+#include "plexus/algorithms/skid_steer/icr_terrain_reset.hpp"
 #include "plexus/algorithms/skid_steer/terrain_change_detector.hpp"
 #include "plexus/algorithms/skid_steer/terrain_icr_library.hpp"
 #include "plexus/scenario/params.hpp"
@@ -99,65 +106,63 @@ bool prior_mode(const YamlMap& p) {
   return mode == "prior";
 }
 
+alg::IcrTerrainResetOptions reset_options(const ComponentConfig& c, bool prior) {
+  const YamlMap& p = c.params();
+  alg::IcrTerrainResetOptions o;
+  o.check_updates = p.optional<int>("prior_check_updates", o.check_updates);
+  if (o.check_updates < 1) p.fail("prior_check_updates", "must be >= 1");
+  o.max_candidates = p.optional<int>("rewind_candidates", o.max_candidates);
+  if (o.max_candidates < 1) p.fail("rewind_candidates", "must be >= 1");
+  // Default: rewound for plexus's prior reset, at the confirmation for paper 001's reset.
+  const double rewind_s = p.optional<double>("rewind_s", prior ? 3.0 : 0.0);
+  if (!(rewind_s >= 0.0 && rewind_s <= 30.0)) p.fail("rewind_s", "must be in [0, 30] s");
+  if (p.has("rewind_s") && !p.optional<bool>("adaptive_reset", false))
+    p.fail("rewind_s", "only used with adaptive_reset: true");
+  o.rewind_steps = static_cast<int>(std::lround(rewind_s / c.period()));
+  return o;
+}
+
 class IcrEkfComponent final : public Component {
  public:
   explicit IcrEkfComponent(const ComponentConfig& c)
       : Component(c),
-        ekf_(ekf_params(c.params())),
+        prior_(prior_mode(c.params())),
+        filter_(ekf_params(c.params()), reset_options(c, prior_)),
         adaptive_(c.params().optional<bool>("adaptive_reset", false)),
         detector_(c.params().optional<int>("consecutive_windows", 2)),
         dt_(c.period()),
         wheels_(add_input("wheels", {"v_l", "v_r"}, "TrackSpeeds")),
         gps_(add_input("gps", {"x", "y", "theta"}, "Pose2D")),
         classes_(adaptive_ ? &add_input("terrain", {"class", "windows"}, "TerrainClass") : nullptr),
-        out_(add_output("icr", {"x", "y", "theta", "y_l", "y_r", "x_G", "resets", "sd_y_l", "sd_y_r", "sd_x_G"},
+        out_(add_output("icr",
+                        {"x", "y", "theta", "y_l", "y_r", "x_G", "resets", "sd_y_l", "sd_y_r", "sd_x_G", "model_age"},
                         "IcrEstimate")),
-        prior_(prior_mode(c.params())),
-        library_(library_of(c, prior_)),
-        check_updates_(c.params().optional<int>("prior_check_updates", 60)),
-        shadow_(ekf_) {
+        library_(library_of(c, prior_)) {
     if (prior_ && !adaptive_) c.params().fail("reset_mode", "prior needs adaptive_reset: true");
-    if (check_updates_ < 1) c.params().fail("prior_check_updates", "must be >= 1");
     write();
   }
 
   uint64_t dropped_late_samples() const override { return late_gps_; }
 
   void step(int64_t /*k*/, double /*t*/) override {
-    if (started_ && wheels_.valid()) {
-      ekf_.predict({wheels_[0], wheels_[1]}, dt_);
-      if (checking_ > 0) shadow_.predict({wheels_[0], wheels_[1]}, dt_);
-    }
     const int64_t due_before = gps_due_;
     gps_due_ = gps_.due();
-    if (new_gps_(gps_)) {
-      if (gps_.sample().step <= due_before) {
-        ++late_gps_;  // it was due at the previous step already: one EKF period late or more, dropped (above)
-      } else if (!started_) {
-        ekf_.reset(pose_of(gps_));
-        started_ = true;
-      } else {
-        const bool updated = ekf_.update(pose_of(gps_));
-        if (checking_ > 0 && updated && shadow_.update(pose_of(gps_))) check_prior();
-      }
+    const bool fresh = new_gps_(gps_);
+    const bool late = fresh && gps_.sample().step <= due_before;
+    if (late) ++late_gps_;  // it was due at the previous step already: one EKF period late or more, dropped (above)
+    const alg::Pose2 z = pose_of(gps_);
+    if (filter_.started()) {
+      const alg::TrackSpeeds u{wheels_.valid() ? wheels_[0] : 0.0, wheels_.valid() ? wheels_[1] : 0.0};
+      filter_.step(wheels_.valid() ? &u : nullptr, dt_, fresh && !late ? &z : nullptr);
+    } else if (fresh && !late) {
+      filter_.start(z);
     }
     // One decision per classifier window: a new `windows` count (the classifier publishes
     // at every one of its steps, holding its last decision in between).
     if (classes_ && classes_->valid() && (*classes_)[1] != last_window_ && (*classes_)[0] >= 0.0) {
       last_window_ = (*classes_)[1];
       if (detector_.observe(static_cast<int>(std::lround((*classes_)[0])))) {
-        const alg::TerrainIcrPrior* prior = prior_ ? library_.find(detector_.current()) : nullptr;
-        if (prior) {
-          shadow_ = ekf_;
-          shadow_.reset_covariance_to_p_b();  // the paper's hypothesis, run beside the prior
-          ekf_.reset_to_prior(prior->mean, prior->sd);
-          checking_ = check_updates_;
-          nis_prior_ = nis_paper_ = 0.0;
-        } else {
-          ekf_.reset_covariance_to_p_b();  // paper 001 eq. (22)
-          checking_ = 0;
-        }
-        ++resets_;
+        filter_.terrain_changed(prior_ ? library_.find(detector_.current()) : nullptr);
       }
     }
     write();
@@ -165,41 +170,19 @@ class IcrEkfComponent final : public Component {
 
  private:
   void write() {
-    // During a prior check the output is the prior's estimate until the paper's hypothesis
-    // is more likely by a factor e (summed -2 log likelihoods 2 apart), then the paper's:
-    // a wrong prior is not published for longer than the evidence needs.
-    constexpr double kLead = 2.0;
-    const alg::IcrEkf& f = checking_ > 0 && nis_paper_ + kLead < nis_prior_ ? shadow_ : ekf_;
+    const alg::IcrEkf& f = filter_.published();
     const alg::IcrVector& x = f.state();
     for (int i = 0; i < 6; ++i) out_[static_cast<std::size_t>(i)] = x(i);
-    out_[6] = static_cast<double>(resets_);
+    out_[6] = static_cast<double>(filter_.resets());
     for (int i = 0; i < 3; ++i) out_[static_cast<std::size_t>(7 + i)] = std::sqrt(f.covariance()(3 + i, 3 + i));
+    out_[10] = static_cast<double>(filter_.published_model_steps()) * dt_;
   }
 
-  /// After a prior reset: -2 log likelihood of the GPS innovations (NIS + log det S, summed
-  /// over the same updates) under the prior and under the paper's covariance reset; the
-  /// worse-fitting hypothesis is dropped. (NIS alone favours the looser filter, whose larger
-  /// S shrinks every innovation.) Sequential: it ends early once the sums differ by more
-  /// than kDecisive (half the difference is the log-likelihood ratio: 10 is a ratio of e^5).
-  void check_prior() {
-    constexpr double kDecisive = 10.0;
-    nis_prior_ += ekf_.last_neg2_log_likelihood();
-    nis_paper_ += shadow_.last_neg2_log_likelihood();
-    const double d = nis_prior_ - nis_paper_;
-    if (--checking_ > 0 && std::abs(d) < kDecisive) return;
-    checking_ = 0;
-    if (d > 0.0) {
-      ekf_ = shadow_;
-      ++fallbacks_;
-    }
-  }
-
-  alg::IcrEkf ekf_;
+  bool prior_;
+  alg::IcrTerrainResetFilter filter_;
   bool adaptive_;
   alg::TerrainChangeDetector detector_;
   double dt_;
-  bool started_ = false;
-  long resets_ = 0;
   double last_window_ = 0.0;
   NewSample new_gps_;
   int64_t gps_due_ = -1;   ///< the GPS step due at the previous step
@@ -208,14 +191,7 @@ class IcrEkfComponent final : public Component {
   InputPort& gps_;
   InputPort* classes_;
   OutputPort& out_;
-  bool prior_;
   alg::TerrainIcrLibrary library_;
-  int check_updates_;
-  alg::IcrEkf shadow_;  ///< the paper's covariance reset, run beside a prior reset during its check
-  int checking_ = 0;    ///< updates left in the check of the last prior reset
-  double nis_prior_ = 0.0;
-  double nis_paper_ = 0.0;
-  long fallbacks_ = 0;
 };
 
 const ComponentRegistration kEkf{"icr_ekf",

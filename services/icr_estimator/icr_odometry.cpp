@@ -4,9 +4,17 @@
 // output names its IDL type (docs/topics.md).
 //
 //   in wheels {v_l, v_r} (TrackSpeeds), truth/state {x, y, theta} (SkidSteerTruth; read
-//     once, at `start`), with model estimated: icr {y_l, y_r, x_G} (IcrEstimate);
+//     once, at `start`), with model estimated: icr {y_l, y_r, x_G, model_age} (IcrEstimate);
 //   out <service name> {x, y, theta} (Pose2D)
-//   model: no_slip (track_width 0.4) | fixed (y_l, y_r, x_G) | estimated; start (0 s)
+//   model: no_slip (track_width 0.4) | fixed (y_l, y_r, x_G) | estimated; start (0 s);
+//   with estimated: revise_s (3 s; 0: never)
+//
+// With model estimated, the estimate's model_age says since when its ICRs apply (data time
+// minus model_age). When that time moves (a reset of the ICR EKF that placed the new ICRs at
+// the terrain switch it re-estimated, up to rewind_s before the reset), the steps from then
+// on are integrated again with the new ICRs, as far back as revise_s: the odometry does not
+// keep the heading error the old terrain's ICRs made between the switch and its detection.
+#include <cmath>
 #include <memory>
 #include <string>
 
@@ -28,8 +36,11 @@ class IcrOdometryComponent final : public Component {
         h_(c.period()),
         wheels_(add_input("wheels", {"v_l", "v_r"}, "TrackSpeeds")),
         truth_(add_input("truth/state", {"x", "y", "theta"}, "SkidSteerTruth")),
-        estimate_(model_ == Model::kEstimated ? &add_input("icr", {"y_l", "y_r", "x_G"}, "IcrEstimate") : nullptr),
-        out_(add_output(c.key, {"x", "y", "theta"}, "Pose2D")) {
+        estimate_(model_ == Model::kEstimated ? &add_input("icr", {"y_l", "y_r", "x_G", "model_age"}, "IcrEstimate")
+                                              : nullptr),
+        out_(add_output(c.key, {"x", "y", "theta"}, "Pose2D")),
+        base_step_(c.base_step),
+        odo_(revision_steps(c, model_ == Model::kEstimated)) {
     const YamlMap& p = c.params();
     if (!(start_ >= 0.0)) p.fail("start", "must be >= 0 s");
     if (model_ == Model::kNoSlip) fixed_ = alg::no_slip_icr(p.optional<double>("track_width", 0.4));
@@ -47,7 +58,17 @@ class IcrOdometryComponent final : public Component {
       }
     } else if (wheels_.valid()) {
       const alg::IcrParams icr = estimate_ ? alg::IcrParams{(*estimate_)[0], (*estimate_)[1], (*estimate_)[2]} : fixed_;
-      odo_.step({wheels_[0], wheels_[1]}, icr, h_);
+      if (estimate_ && estimate_->valid()) {
+        // Since when the estimate's ICRs apply (its data time minus model_age): when that
+        // moves, the kept steps from then on are integrated again with them.
+        const double since = static_cast<double>(estimate_->sample().step) * base_step_ - (*estimate_)[3];
+        if (!have_since_ || std::abs(since - model_since_) > 0.5 * h_) {
+          if (have_since_) odo_.revise(since, icr);
+          model_since_ = since;
+          have_since_ = true;
+        }
+      }
+      odo_.step({wheels_[0], wheels_[1]}, icr, h_, t);
     }
     out_[0] = odo_.pose().x;
     out_[1] = odo_.pose().y;
@@ -56,6 +77,17 @@ class IcrOdometryComponent final : public Component {
 
  private:
   enum class Model { kNoSlip, kFixed, kEstimated };
+  static int revision_steps(const ComponentConfig& c, bool estimated) {
+    const YamlMap& p = c.params();
+    if (!estimated) {
+      if (p.has("revise_s")) p.fail("revise_s", "only used with model: estimated");
+      return 0;
+    }
+    const double s = p.optional<double>("revise_s", 3.0);
+    if (!(s >= 0.0 && s <= 60.0)) p.fail("revise_s", "must be in [0, 60] s");
+    return static_cast<int>(std::lround(s / c.period()));
+  }
+
   static Model model(const YamlMap& p) {
     const auto m = p.required<std::string>("model");
     if (m == "no_slip") return Model::kNoSlip;
@@ -68,12 +100,15 @@ class IcrOdometryComponent final : public Component {
   double start_;
   double h_;
   alg::IcrParams fixed_{};
-  alg::IcrOdometry odo_;
   bool started_ = false;
   InputPort& wheels_;
   InputPort& truth_;
   InputPort* estimate_;
   OutputPort& out_;
+  double base_step_;
+  alg::RevisableIcrOdometry odo_;
+  double model_since_ = 0.0;  ///< data time since which the estimate's ICRs apply, as last read
+  bool have_since_ = false;
 };
 
 const ComponentRegistration kIcrOdometry{

@@ -3,6 +3,8 @@
 //   BM_IcrEkfStep       one ICR EKF period: predict (dt 0.01 s) + update with a GPS pose
 //   BM_TerrainFeatures  PSD features of one 100-sample window (FFTW3 r2c, 50 bins)
 //   BM_TerrainClassify  kNN (k 5, standardised) of one window against 45 training samples
+//   BM_IcrPriorResetRewind  one prior reset with the default 3 s rewind (300 steps, GPS 20 Hz:
+//                       24 change times tried for the prior and for the paper's hypothesis)
 #include <benchmark/benchmark.h>
 
 #include <vector>
@@ -10,6 +12,7 @@
 #include "plexus/algorithms/core/random.hpp"
 #include "plexus/algorithms/skid_steer/driving_pattern.hpp"
 #include "plexus/algorithms/skid_steer/icr_ekf.hpp"
+#include "plexus/algorithms/skid_steer/icr_terrain_reset.hpp"
 #include "plexus/algorithms/skid_steer/knn_classifier.hpp"
 #include "plexus/algorithms/skid_steer/skid_steer_plant.hpp"
 #include "plexus/algorithms/skid_steer/skid_steer_sensors.hpp"
@@ -51,6 +54,34 @@ void BM_IcrEkfStep(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_IcrEkfStep);
+
+void BM_IcrPriorResetRewind(benchmark::State& state) {
+  IcrTerrainResetOptions o;
+  o.rewind_steps = 300;
+  IcrTerrainResetFilter f({}, o);
+  const PoseSensor gps({});
+  Rng rng(1);
+  Pose2 truth{};
+  f.start(truth);
+  for (int k = 1; k <= 400; ++k) {  // fill the history on a turn
+    const TrackSpeeds u{0.2, 0.6};
+    truth = icr_pose_step(truth, icr_body_velocity({0.3, -0.5, -0.1}, u), 0.01);
+    const Pose2 z = gps.measure(truth, rng);
+    f.step(&u, 0.01, k % 5 == 0 ? &z : nullptr);
+  }
+  TerrainIcrPrior prior;
+  prior.mean = {0.5, -0.7, -0.3};
+  prior.sd = Eigen::Vector3d::Constant(0.015);
+  const IcrTerrainResetFilter filled = f;
+  for (auto _ : state) {
+    state.PauseTiming();
+    f = filled;
+    state.ResumeTiming();
+    f.terrain_changed(&prior);
+    benchmark::DoNotOptimize(f.published().state());
+  }
+}
+BENCHMARK(BM_IcrPriorResetRewind)->Unit(benchmark::kMicrosecond);
 
 void BM_TerrainFeatures(benchmark::State& state) {
   PsdFeatureExtractor e({});

@@ -116,42 +116,15 @@ TEST(ReportPanels, MetricUnitFromTheNameSuffix) {
 /// The units of the messages of four_robots.yaml, as wire_types.cpp declares them (this
 /// test does not link the DDS layer).
 std::optional<std::string> test_units(const std::string& message, const std::string& field) {
-  static const std::map<std::string, std::string> units = {{"x", "m"},
-                                                           {"y", "m"},
-                                                           {"theta", "rad"},
-                                                           {"y_l", "m"},
-                                                           {"y_r", "m"},
-                                                           {"x_G", "m"},
-                                                           {"sd_y_l", "m"},
-                                                           {"sd_y_r", "m"},
-                                                           {"sd_x_G", "m"},
-                                                           {"resets", ""},
-                                                           {"terrain", ""},
-                                                           {"a_z", "m/s^2"},
-                                                           {"v_l", "m/s"},
-                                                           {"v_r", "m/s"},
-                                                           {"v", "m/s"},
-                                                           {"omega", "rad/s"},
-                                                           {"theta_dot", "rad/s"},
-                                                           {"drift", "rad/s"},
-                                                           {"theta_std", "rad"},
-                                                           {"torque", "N m"},
-                                                           {"x_ddot", "m/s^2"},
-                                                           {"theta_ddot", "rad/s^2"},
-                                                           {"gyro", "rad/s"},
-                                                           {"acc_x", "m/s^2"},
-                                                           {"acc_z", "m/s^2"},
-                                                           {"class", ""},
-                                                           {"confidence", ""},
-                                                           {"windows", ""},
-                                                           {"votes", ""},
-                                                           {"dx", "m/s"},
-                                                           {"dy", "m/s"},
-                                                           {"ddx", "m/s^2"},
-                                                           {"ddy", "m/s^2"},
-                                                           {"z3", ""},
-                                                           {"z4", ""},
-                                                           {"L", "1/s"}};
+  static const std::map<std::string, std::string> units = {
+      {"x", "m"},         {"y", "m"},          {"theta", "rad"},          {"y_l", "m"},       {"y_r", "m"},
+      {"x_G", "m"},       {"sd_y_l", "m"},     {"sd_y_r", "m"},           {"sd_x_G", "m"},    {"resets", ""},
+      {"model_age", "s"}, {"terrain", ""},     {"a_z", "m/s^2"},          {"v_l", "m/s"},     {"v_r", "m/s"},
+      {"v", "m/s"},       {"omega", "rad/s"},  {"theta_dot", "rad/s"},    {"drift", "rad/s"}, {"theta_std", "rad"},
+      {"torque", "N m"},  {"x_ddot", "m/s^2"}, {"theta_ddot", "rad/s^2"}, {"gyro", "rad/s"},  {"acc_x", "m/s^2"},
+      {"acc_z", "m/s^2"}, {"class", ""},       {"confidence", ""},        {"windows", ""},    {"votes", ""},
+      {"dx", "m/s"},      {"dy", "m/s"},       {"ddx", "m/s^2"},          {"ddy", "m/s^2"},   {"z3", ""},
+      {"z4", ""},         {"L", "1/s"}};
   if (message.empty()) return std::nullopt;
   if (auto it = units.find(field); it != units.end()) return it->second;
   static const std::vector<std::pair<std::string, std::string>> joints = {
@@ -216,6 +189,7 @@ TEST_F(MainJobFolder, IcrEstimatePanelsHoldOneQuantityEach) {
       {"length [m]", {"y_l", "y_l (truth)", "y_r", "y_r (truth)", "x_G", "x_G (truth)"}},
       {"resets [-]", {"resets"}},
       {"standard deviation [m]", {"sd_y_l", "sd_y_r", "sd_x_G"}},
+      {"time [s]", {"model_age"}},
   };
   EXPECT_EQ(panels, expected);
 }

@@ -202,7 +202,8 @@ TEST(IcrEkf, PriorResetStartsFromTheLearnedIcrsOfTheConfirmedTerrain) {
   const alg::TerrainIcrPrior tile = *alg::load_terrain_icr_library(library).find(1);
   ServiceUnderTest s(
       kEkf, {},
-      {"services.ekf.adaptive_reset=true", "services.ekf.reset_mode=prior", "services.ekf.icr_library=" + library});
+      {"services.ekf.adaptive_reset=true", "services.ekf.reset_mode=prior", "services.ekf.icr_library=" + library,
+       "services.ekf.rewind_s=0"});  // at the confirmation: the library's values exactly
   int64_t k = 0;
   auto run = [&](int steps) {
     for (int i = 0; i < steps; ++i, ++k) {
@@ -236,6 +237,14 @@ TEST(IcrEkf, PriorResetParametersAreConfigurationErrors) {
   EXPECT_NE(config_error(kEkf, {"services.ekf.adaptive_reset=true", "services.ekf.reset_mode=prior",
                                 "services.ekf.icr_library=/nonexistent/lib.txt"})
                 .find("icr_library: /nonexistent/lib.txt: cannot open"),
+            std::string::npos);
+  EXPECT_NE(config_error(kEkf, {"services.ekf.adaptive_reset=true", "services.ekf.rewind_s=-1"})
+                .find("rewind_s: must be in [0, 30] s"),
+            std::string::npos);
+  EXPECT_NE(config_error(kEkf, {"services.ekf.rewind_s=1"}).find("rewind_s: only used with adaptive_reset: true"),
+            std::string::npos);
+  EXPECT_NE(config_error(kEkf, {"services.ekf.adaptive_reset=true", "services.ekf.rewind_candidates=0"})
+                .find("rewind_candidates: must be >= 1"),
             std::string::npos);
 }
 
@@ -347,6 +356,52 @@ services:
   EXPECT_NE(s.out("r2/odo", "y"), -1.0);
 }
 
+TEST(IcrOdometry, ARewoundModelIsIntegratedAgainFromItsSwitch) {
+  // The estimate says (model_age) since when its ICRs apply. Until step 9 model A applies
+  // since 0; at step 10 model B arrives, applying since 0.05 s (a rewound reset): steps 5-9
+  // are integrated again with B, as if B had been known from 0.05 s on.
+  ServiceUnderTest s(R"(name: odo_part
+step: 0.01
+services:
+  odo: {type: icr_odometry, robot: r2, model: estimated}
+)");
+  const alg::IcrParams a{0.3, -0.3, 0.0}, b{0.5, -0.45, 0.1};
+  alg::IcrOdometry ref;
+  ref.reset({1.0, 2.0, 0.3});
+  for (int64_t k = 0; k <= 12; ++k) {
+    const double t = 0.01 * static_cast<double>(k);
+    const alg::TrackSpeeds u{0.2, 0.3 + 0.05 * t};
+    s.deliver("r2/truth/state", truth(s, k, 1.0, 2.0, 0.3));
+    s.deliver("r2/wheels", wheels(s, k, u.v_l, u.v_r));
+    const alg::IcrParams m = k < 10 ? a : b;
+    auto e = icr_estimate(s, k, m.y_l, m.y_r, m.x_G);
+    e.model_age(k < 10 ? t : t - 0.05);
+    s.deliver("r2/icr", e);
+    s.step(k);
+    if (k > 0) ref.step(u, k < 5 ? a : b, 0.01);
+  }
+  EXPECT_NEAR(s.out("r2/odo", "x"), ref.pose().x, 1e-12);
+  EXPECT_NEAR(s.out("r2/odo", "y"), ref.pose().y, 1e-12);
+  EXPECT_NEAR(s.out("r2/odo", "theta"), ref.pose().theta, 1e-12);
+  // Without revision (revise_s 0) the steps before the model's arrival keep model A.
+  ServiceUnderTest plain(R"(name: odo_part
+step: 0.01
+services:
+  odo: {type: icr_odometry, robot: r2, model: estimated, revise_s: 0}
+)");
+  for (int64_t k = 0; k <= 12; ++k) {
+    const double t = 0.01 * static_cast<double>(k);
+    plain.deliver("r2/truth/state", truth(plain, k, 1.0, 2.0, 0.3));
+    plain.deliver("r2/wheels", wheels(plain, k, 0.2, 0.3 + 0.05 * t));
+    const alg::IcrParams m = k < 10 ? a : b;
+    auto e = icr_estimate(plain, k, m.y_l, m.y_r, m.x_G);
+    e.model_age(k < 10 ? t : t - 0.05);
+    plain.deliver("r2/icr", e);
+    plain.step(k);
+  }
+  EXPECT_GT(std::abs(plain.out("r2/odo", "theta") - ref.pose().theta), 1e-6);
+}
+
 TEST(IcrOdometry, BadSamplesAreRefusedAndLeaveThePoseAlone) {
   const std::string doc = R"(name: odo_part
 step: 0.01
@@ -378,6 +433,7 @@ TEST(IcrOdometry, BadParametersAreConfigurationErrors) {
                                       {"services.odo.start=-1", {"services.odo.start"}},
                                       {"services.odo.y_l=-0.5", {"services.odo", "y_l"}},
                                       {"services.odo.x_G=[0]", {"services.odo.x_G"}},
+                                      {"services.odo.revise_s=1", {"services.odo.revise_s", "model: estimated"}},
                                   });
   EXPECT_NE(config_error(R"(name: p
 step: 0.01

@@ -78,12 +78,20 @@ void IcrEkf::reset(const Pose2& pose) {
 void IcrEkf::reset_covariance_to_p_b() { ekf_.reset_covariance(p_b_); }
 
 void IcrEkf::reset_to_prior(const IcrParams& icr, const Eigen::Vector3d& sd) {
+  set_icrs(icr, sd, p_b_.topLeftCorner<3, 3>());
+}
+
+void IcrEkf::replace_icrs(const IcrParams& icr, const Eigen::Vector3d& sd) {
+  set_icrs(icr, sd, ekf_.covariance().topLeftCorner<3, 3>());
+}
+
+void IcrEkf::set_icrs(const IcrParams& icr, const Eigen::Vector3d& sd, const Eigen::Matrix3d& pose_covariance) {
   IcrVector x = ekf_.state();
   x(3) = icr.y_l;
   x(4) = icr.y_r;
   x(5) = icr.x_G;
   IcrMatrix p = IcrMatrix::Zero();
-  p.topLeftCorner<3, 3>() = p_b_.topLeftCorner<3, 3>();
+  p.topLeftCorner<3, 3>() = pose_covariance;
   p.bottomRightCorner<3, 3>() = sd.cwiseProduct(sd).asDiagonal();
   ekf_.reset(x, p);
 }

@@ -13,6 +13,7 @@
 #include "plexus/algorithms/skid_steer/driving_pattern.hpp"
 #include "plexus/algorithms/skid_steer/icr_ekf.hpp"
 #include "plexus/algorithms/skid_steer/icr_odometry.hpp"
+#include "plexus/algorithms/skid_steer/icr_terrain_reset.hpp"
 #include "plexus/algorithms/skid_steer/knn_classifier.hpp"
 #include "plexus/algorithms/skid_steer/skid_steer_plant.hpp"
 #include "plexus/algorithms/skid_steer/skid_steer_sensors.hpp"
@@ -68,6 +69,33 @@ TEST(NoAllocation, HotPathsDoNotAllocate) {
   const long after = plexus::test::allocations();
   EXPECT_EQ(after - before, 0);
   EXPECT_TRUE(std::isfinite(sink + odo.pose().x));
+}
+
+TEST(NoAllocation, TerrainResetWithRewindDoesNotAllocate) {
+  SkidSteerPlantParams pp;
+  pp.schedule = {{0.0, 0}, {1.0, 1}};
+  SkidSteerPlant plant(pp);
+  const DrivingPattern drive({});
+  const PoseSensor gps({});
+  IcrTerrainResetOptions rewind;
+  rewind.rewind_steps = 300;
+  IcrTerrainResetFilter f({}, rewind);  // its history is allocated here
+  TerrainIcrPrior prior;
+  prior.mean = {0.5, -0.7, -0.3};
+  prior.sd = Eigen::Vector3d::Constant(0.01);
+  Rng rng(1);
+  f.start(plant.state().pose);
+  const long before = plexus::test::allocations();
+  for (int k = 0; k < 400; ++k) {
+    const double t = 0.01 * k;
+    const TrackSpeeds u = drive.at(t);
+    const Pose2 z = gps.measure(plant.step(t, u, rng).pose, rng);
+    f.step(&u, 0.01, k % 5 == 0 ? &z : nullptr);
+    if (k == 150) f.terrain_changed(&prior);   // rewind over the kept steps, check begins
+    if (k == 300) f.terrain_changed(nullptr);  // the paper's reset, rewound
+  }
+  EXPECT_EQ(plexus::test::allocations() - before, 0);
+  EXPECT_TRUE(std::isfinite(f.published().icr().y_l));
 }
 
 }  // namespace

@@ -80,6 +80,11 @@ class IcrEkf {
   /// values `icr`, their covariance to diag(sd^2); the pose and its covariance (P_B's pose
   /// block) as in the covariance reset; no cross-covariance. sd > 0, finite.
   void reset_to_prior(const IcrParams& icr, const Eigen::Vector3d& sd);
+  /// The ICRs replaced by `icr` with covariance diag(sd^2), uncorrelated with the pose; the
+  /// pose and its covariance kept (the prior applied to a saved state). sd > 0, finite.
+  void replace_icrs(const IcrParams& icr, const Eigen::Vector3d& sd);
+  /// Sets the state and covariance, e.g. to a saved copy; P symmetric positive definite.
+  void restore(const IcrVector& x, const IcrMatrix& p) { ekf_.reset(x, p); }
 
   /// Prediction over dt > 0 with track speeds u. Returns false (estimate unchanged) if the
   /// step is not finite or the ICR estimate is singular. No allocation.
@@ -104,6 +109,8 @@ class IcrEkf {
   static IcrMatrix jacobian(const IcrVector& x, const TrackSpeeds& u, double dt);
 
  private:
+  void set_icrs(const IcrParams& icr, const Eigen::Vector3d& sd, const Eigen::Matrix3d& pose_covariance);
+
   IcrEkfParams params_;
   ExtendedKalmanFilter<6> ekf_;
   IcrMatrix p0_, p_b_;
