@@ -14,6 +14,8 @@
 // the terrain switch it re-estimated, up to rewind_s before the reset), the steps from then
 // on are integrated again with the new ICRs, as far back as revise_s: the odometry does not
 // keep the heading error the old terrain's ICRs made between the switch and its detection.
+// For revise_s after the model's start, every step integrates the steps since it again with
+// the newest estimate (the ICRs are constant per terrain and the filter refines them).
 #include <cmath>
 #include <memory>
 #include <string>
@@ -40,7 +42,8 @@ class IcrOdometryComponent final : public Component {
                                               : nullptr),
         out_(add_output(c.key, {"x", "y", "theta"}, "Pose2D")),
         base_step_(c.base_step),
-        odo_(revision_steps(c, model_ == Model::kEstimated)) {
+        revise_s_(revision_seconds(c, model_ == Model::kEstimated)),
+        odo_(static_cast<int>(std::lround(revise_s_ / c.period()))) {
     const YamlMap& p = c.params();
     if (!(start_ >= 0.0)) p.fail("start", "must be >= 0 s");
     if (model_ == Model::kNoSlip) fixed_ = alg::no_slip_icr(p.optional<double>("track_width", 0.4));
@@ -61,12 +64,13 @@ class IcrOdometryComponent final : public Component {
       if (estimate_ && estimate_->valid()) {
         // Since when the estimate's ICRs apply (its data time minus model_age): when that
         // moves, the kept steps from then on are integrated again with them.
+        // While they are kept, the steps since then are integrated with the newest estimate
+        // of that model (the ICRs are constant per terrain; the estimate refines them).
         const double since = static_cast<double>(estimate_->sample().step) * base_step_ - (*estimate_)[3];
-        if (!have_since_ || std::abs(since - model_since_) > 0.5 * h_) {
-          if (have_since_) odo_.revise(since, icr);
-          model_since_ = since;
-          have_since_ = true;
-        }
+        const bool moved = have_since_ && std::abs(since - model_since_) > 0.5 * h_;
+        if (!have_since_ || moved) model_since_ = since;
+        have_since_ = true;
+        if (moved || (revise_s_ > 0.0 && t - model_since_ <= revise_s_)) odo_.revise(model_since_, icr);
       }
       odo_.step({wheels_[0], wheels_[1]}, icr, h_, t);
     }
@@ -77,15 +81,15 @@ class IcrOdometryComponent final : public Component {
 
  private:
   enum class Model { kNoSlip, kFixed, kEstimated };
-  static int revision_steps(const ComponentConfig& c, bool estimated) {
+  static double revision_seconds(const ComponentConfig& c, bool estimated) {
     const YamlMap& p = c.params();
     if (!estimated) {
       if (p.has("revise_s")) p.fail("revise_s", "only used with model: estimated");
-      return 0;
+      return 0.0;
     }
     const double s = p.optional<double>("revise_s", 3.0);
     if (!(s >= 0.0 && s <= 60.0)) p.fail("revise_s", "must be in [0, 60] s");
-    return static_cast<int>(std::lround(s / c.period()));
+    return s;
   }
 
   static Model model(const YamlMap& p) {
@@ -106,6 +110,7 @@ class IcrOdometryComponent final : public Component {
   InputPort* estimate_;
   OutputPort& out_;
   double base_step_;
+  double revise_s_;
   alg::RevisableIcrOdometry odo_;
   double model_since_ = 0.0;  ///< data time since which the estimate's ICRs apply, as last read
   bool have_since_ = false;
