@@ -71,7 +71,7 @@ TEST(NoAllocation, HotPathsDoNotAllocate) {
   EXPECT_TRUE(std::isfinite(sink + odo.pose().x));
 }
 
-TEST(NoAllocation, TerrainResetWithRewindDoesNotAllocate) {
+TEST(NoAllocation, TerrainResetWithRewindAndRevisedOdometryDoNotAllocate) {
   SkidSteerPlantParams pp;
   pp.schedule = {{0.0, 0}, {1.0, 1}};
   SkidSteerPlant plant(pp);
@@ -80,6 +80,7 @@ TEST(NoAllocation, TerrainResetWithRewindDoesNotAllocate) {
   IcrTerrainResetOptions rewind;
   rewind.rewind_steps = 300;
   IcrTerrainResetFilter f({}, rewind);  // its history is allocated here
+  RevisableIcrOdometry odo(300);        // and this one's
   TerrainIcrPrior prior;
   prior.mean = {0.5, -0.7, -0.3};
   prior.sd = Eigen::Vector3d::Constant(0.01);
@@ -91,11 +92,13 @@ TEST(NoAllocation, TerrainResetWithRewindDoesNotAllocate) {
     const TrackSpeeds u = drive.at(t);
     const Pose2 z = gps.measure(plant.step(t, u, rng).pose, rng);
     f.step(&u, 0.01, k % 5 == 0 ? &z : nullptr);
+    odo.step(u, f.published().icr(), 0.01, t);
+    odo.revise(t - 0.01 * static_cast<double>(f.published_model_steps()), f.published().icr());
     if (k == 150) f.terrain_changed(&prior);   // rewind over the kept steps, check begins
     if (k == 300) f.terrain_changed(nullptr);  // the paper's reset, rewound
   }
   EXPECT_EQ(plexus::test::allocations() - before, 0);
-  EXPECT_TRUE(std::isfinite(f.published().icr().y_l));
+  EXPECT_TRUE(std::isfinite(f.published().icr().y_l) && std::isfinite(odo.pose().x));
 }
 
 }  // namespace
