@@ -25,7 +25,6 @@
 #include <limits>
 #include <mutex>
 #include <numbers>
-#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
@@ -40,6 +39,7 @@
 #include "plexus/algorithms/arm/sine_reference.hpp"
 #include "plexus/algorithms/arm/vdc_controller.hpp"
 #include "plexus/algorithms/core/random.hpp"
+#include "plexus/base/comma_list.hpp"
 
 namespace alg = plexus::algorithms;
 
@@ -238,17 +238,9 @@ Figures figures(const Trace& t, double step, double T, double hold) {
   return out;
 }
 
-std::vector<std::string> split(const std::string& s) {
-  std::vector<std::string> v;
-  std::stringstream ss(s);
-  for (std::string x; std::getline(ss, x, ',');)
-    if (!x.empty()) v.push_back(x);
-  return v;
-}
-
 std::vector<double> numbers(const std::string& what, const std::string& s) {
   std::vector<double> v;
-  for (const std::string& x : split(s)) {
+  for (const std::string& x : plexus::split_comma_list(s)) {
     std::size_t used = 0;
     double d = 0;
     try {
@@ -264,7 +256,7 @@ std::vector<double> numbers(const std::string& what, const std::string& s) {
 }
 
 std::vector<std::string> words(const std::string& what, const std::string& s, const std::vector<std::string>& allowed) {
-  std::vector<std::string> v = split(s);
+  std::vector<std::string> v = plexus::split_comma_list(s);
   for (const std::string& x : v)
     if (std::find(allowed.begin(), allowed.end(), x) == allowed.end())
       throw CLI::ValidationError(what, "unknown value " + x);
@@ -351,16 +343,16 @@ int main(int argc, char** argv) {
         for (double a : numbers("--q0", q0))
           for (double b : numbers("--dq0", dq0))
             for (double h : numbers("--step", step))
-              for (const std::string& e : split(ekf_init))
+              for (const std::string& e : plexus::split_comma_list(ekf_init))
                 for (double l : numbers("--limit", limit)) setups.push_back({g, i, a, b, h, e, l});
-    for (const std::string& a : split(vdc_accel))
+    for (const std::string& a : plexus::split_comma_list(vdc_accel))
       if (a != "model" && (a.rfind("diff", 0) != 0 || numbers("--vdc-accel", a.substr(4)).front() <= 0))
         throw CLI::ValidationError("--vdc-accel", "unknown value " + a);
     const std::vector<double> thetas = numbers("--vdc-theta", theta);
     for (double th : thetas)
       if (th < 0.6 || th > 1.8)
         throw CLI::ValidationError("--vdc-theta", "must be in [0.6, 1.8] (the P-function's bounds)");
-    readings = vdc_readings(split(vdc_accel), thetas);
+    readings = vdc_readings(plexus::split_comma_list(vdc_accel), thetas);
     const std::vector<Reading> ct = ct_readings(words("--ct-velocity", ct_vel, {"motor", "link"}),
                                                 words("--ct-inertia", ct_inertia, {"links", "motors"}),
                                                 words("--ct-accel", ct_accel, {"desired", "estimated"}));

@@ -328,7 +328,7 @@ int run_pipeline(const PipeOpts& o) {
     std::map<int64_t, int64_t> publish_by_origin, publish_by_data, receive_by_data;
   };
   std::map<int64_t, T> topics;
-  const auto wanted = split_list(o.topics);
+  const auto wanted = split_comma_list(o.topics);
   for (const auto& t : rec.topics())
     if (o.live || wanted.empty() || std::find(wanted.begin(), wanted.end(), t.name) != wanted.end())
       topics[t.id].name = t.name;

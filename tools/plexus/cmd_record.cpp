@@ -73,7 +73,7 @@ int run_record(const RecordOpts& o) {
 
   // Which topics: the given ones (waiting for their writers), or every topic with a writer,
   // including topics that appear while recording (discovery is polled, as rosbag2 does).
-  const std::vector<std::string> wanted = split_list(o.topics);
+  const std::vector<std::string> wanted = split_comma_list(o.topics);
   auto writers_now = [&] {
     std::map<std::string, std::vector<rt::DiscoveredEndpoint>> w;
     for (const auto& e : p->discovered_endpoints())

@@ -84,7 +84,7 @@ int run_replay(const ReplayOpts& o) {
 
   const auto profiles = rt::QosProfiles::load(o.qos_file.empty() ? rt::default_qos_file() : o.qos_file);
   const rt::QosProfile* fixed = o.profile.empty() ? nullptr : &profiles.get(o.profile);
-  const auto plan = plan_replay_topics(rec, o.file, split_list(o.topics), fixed, o.restamp);
+  const auto plan = plan_replay_topics(rec, o.file, split_comma_list(o.topics), fixed, o.restamp);
   auto p = make_participant(o.dds, "plexus_replay", "plexus_replay");
   struct Out {
     const msg::TypeSupport* ts = nullptr;

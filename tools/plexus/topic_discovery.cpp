@@ -4,7 +4,6 @@
 #include <cctype>
 #include <csignal>
 #include <set>
-#include <sstream>
 #include <stdexcept>
 #include <thread>
 
@@ -52,10 +51,7 @@ std::unique_ptr<rt::Participant> make_participant(const DdsOptions& o, const std
   po.network.transport = rt::parse_transport(o.transport);
   po.network.max_participants_per_host = o.max_participants;
   po.naming = rt::parse_naming(o.naming);
-  po.network.peers.clear();
-  std::stringstream ss(o.peers);
-  for (std::string peer; std::getline(ss, peer, ',');)
-    if (!peer.empty()) po.network.peers.push_back(peer);
+  po.network.peers = split_comma_list(o.peers);
   po.security = rt::security_from_options(o.security, o.identity, o.governance, identity);
   init_logging(name, "", "warn");  // tools print their own output; only problems are logged
   return rt::Participant::create(po);
@@ -137,14 +133,6 @@ nlohmann::ordered_json qos_to_json(const rt::EndpointQos& q) {
   j["ownership"] = q.exclusive_ownership ? "exclusive" : "shared";
   j["data_representation"] = q.data_representation;
   return j;
-}
-
-std::vector<std::string> split_list(const std::string& s) {
-  std::vector<std::string> out;
-  std::istringstream in(s);
-  for (std::string item; std::getline(in, item, ',');)
-    if (!item.empty()) out.push_back(item);
-  return out;
 }
 
 }  // namespace plexus::cli

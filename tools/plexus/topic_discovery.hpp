@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "plexus/base/comma_list.hpp"
 #include "plexus/runtime/discovery.hpp"
 #include "plexus/runtime/participant.hpp"
 
@@ -54,8 +55,5 @@ rt::QosProfile subscriber_qos(const std::string& qos_file, const std::string& pr
 /// A discovered endpoint's QoS as plexus record stores it (read back by replay_plan.cpp's
 /// recorded_qos).
 nlohmann::ordered_json qos_to_json(const rt::EndpointQos& q);
-
-/// Comma-separated list "a,b" -> {"a", "b"} (empty items dropped).
-std::vector<std::string> split_list(const std::string& s);
 
 }  // namespace plexus::cli

@@ -2,7 +2,7 @@
 
 #include <set>
 
-#include <sstream>
+#include "plexus/base/comma_list.hpp"
 #include "plexus/runtime/security_cli.hpp"
 
 namespace plexus::scenario {
@@ -39,10 +39,8 @@ rt::ParticipantOptions ServiceDdsOptions::participant(const std::string& default
   po.network.transport = rt::parse_transport(transport);
   po.network.max_participants_per_host = max_participants;
   po.naming = rt::parse_naming(naming);
-  std::set<std::string> unique;
-  std::stringstream ss(peers);
-  for (std::string item; std::getline(ss, item, ',');)
-    if (!item.empty()) unique.insert(item);
+  const std::vector<std::string> listed = split_comma_list(peers);
+  const std::set<std::string> unique(listed.begin(), listed.end());
   po.network.peers.assign(unique.begin(), unique.end());
   po.security = rt::security_from_options(security, identity, governance, default_identity);
   return po;
