@@ -100,11 +100,7 @@ alg::TerrainIcrLibrary library_of(const ComponentConfig& c, bool prior) {
   }
 }
 
-bool prior_mode(const YamlMap& p) {
-  const auto mode = p.optional<std::string>("reset_mode", "covariance");
-  if (mode != "covariance" && mode != "prior") p.fail("reset_mode", "expected covariance or prior, got '" + mode + "'");
-  return mode == "prior";
-}
+bool prior_mode(const YamlMap& p) { return choice(p, "reset_mode", "covariance", {"covariance", "prior"}) == "prior"; }
 
 alg::IcrTerrainResetOptions reset_options(const ComponentConfig& c, bool prior) {
   const YamlMap& p = c.params();

@@ -31,9 +31,8 @@ alg::CtPdParams read_ct_pd(const YamlMap& p) {
   read_into(p, "k_p", v.k_p);
   read_into(p, "k_v", v.k_v);
   read_into(p, "k_d", v.k_d);
-  const std::string vel = p.optional<std::string>("velocity", "motor");
-  if (vel != "motor" && vel != "link") p.fail("velocity", "must be motor or link");
-  v.velocity = vel == "motor" ? alg::CtPdVelocity::kMotor : alg::CtPdVelocity::kLink;
+  v.velocity = choice(p, "velocity", "motor", {"motor", "link"}) == "motor" ? alg::CtPdVelocity::kMotor
+                                                                            : alg::CtPdVelocity::kLink;
   v.inertia = choice(p, "inertia", "links", {"links", "with_motors"}) == "links" ? alg::CtPdInertia::kLinks
                                                                                  : alg::CtPdInertia::kWithMotors;
   v.acceleration = choice(p, "acceleration", "desired", {"desired", "estimated"}) == "desired"

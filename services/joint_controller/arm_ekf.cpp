@@ -24,6 +24,7 @@
 #include "plexus/base/clock.hpp"
 #include "plexus/base/logging.hpp"
 #include "plexus/scenario/output_range.hpp"
+#include "plexus/scenario/params.hpp"
 #include "plexus/scenario/registry.hpp"
 #include "services/common/arm_fields.hpp"
 #include "services/common/arm_model_params.hpp"
@@ -35,8 +36,7 @@ namespace alg = plexus::algorithms;
 
 alg::FlexibleJointEkfParams read_ekf(const ComponentConfig& c) {
   const YamlMap& p = c.params();
-  const std::string tuning = p.optional<std::string>("tuning", "robust");
-  if (tuning != "robust" && tuning != "paper") p.fail("tuning", "must be robust or paper");
+  const std::string tuning = choice(p, "tuning", "robust", {"robust", "paper"});
   alg::FlexibleJointEkfParams e =
       tuning == "robust" ? alg::FlexibleJointEkfParams::robust() : alg::FlexibleJointEkfParams::paper();
   e.model = read_model(p);
@@ -52,12 +52,11 @@ alg::FlexibleJointEkfParams read_ekf(const ComponentConfig& c) {
   e.substeps = p.optional<int>("substeps", 1);
   e.step = c.period();
   e.accel_filter_hz = p.optional<double>("accel_filter_hz", e.accel_filter_hz);
-  const std::string jac = p.optional<std::string>("jacobian", "full");
-  if (jac != "full" && jac != "paper") p.fail("jacobian", "must be full or paper");
-  e.jacobian = jac == "full" ? alg::EkfJacobian::kFull : alg::EkfJacobian::kPaper;
-  const std::string acc = p.optional<std::string>("acceleration", "model");
-  if (acc != "model" && acc != "differentiator") p.fail("acceleration", "must be model or differentiator");
-  e.acceleration = acc == "model" ? alg::LinkAcceleration::kModel : alg::LinkAcceleration::kDifferentiator;
+  e.jacobian =
+      choice(p, "jacobian", "full", {"full", "paper"}) == "full" ? alg::EkfJacobian::kFull : alg::EkfJacobian::kPaper;
+  e.acceleration = choice(p, "acceleration", "model", {"model", "differentiator"}) == "model"
+                       ? alg::LinkAcceleration::kModel
+                       : alg::LinkAcceleration::kDifferentiator;
   return e;
 }
 

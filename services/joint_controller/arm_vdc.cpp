@@ -14,6 +14,7 @@
 #include <utility>
 
 #include "plexus/algorithms/arm/vdc_controller.hpp"
+#include "plexus/scenario/params.hpp"
 #include "plexus/scenario/registry.hpp"
 #include "services/common/arm_model_params.hpp"
 #include "services/joint_controller/arm_controller_base.hpp"
@@ -31,8 +32,7 @@ alg::VdcParams read_vdc(const ComponentConfig& c) {
   v.model = model;
   // tuning: robust (default; docs/algorithms/arm.md "Model error") feeds half of the
   // observer's model residual forward; paper is eqs. (18)-(23) as printed.
-  const std::string tuning = p.optional<std::string>("tuning", "robust");
-  if (tuning != "robust" && tuning != "paper") p.fail("tuning", "must be robust or paper");
+  const std::string tuning = choice(p, "tuning", "robust", {"robust", "paper"});
   v.disturbance_compensation = tuning == "robust" ? alg::VdcParams::kRobustDisturbanceCompensation : 0.0;
   for (auto [key, vec] : {std::pair{"k_b", &v.k_b},
                           {"rho", &v.rho},

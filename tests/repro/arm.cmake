@@ -39,7 +39,7 @@ add_test(NAME cli.arm_bad_link_mass
          COMMAND ${EXPECT} 2 "arm_vdc_ekf.yaml:[0-9]+: robots.arm.plant: arm_model: links\\[1\\].mass must be finite and > 0 \\(got 0\\)"
                  $<TARGET_FILE:plexus> sim ${ARM_SCENARIO} --quiet --set robots.arm.plant.mass=[10,0])
 add_test(NAME cli.arm_bad_jacobian
-         COMMAND ${EXPECT} 2 "services.observer.jacobian: must be full or paper"
+         COMMAND ${EXPECT} 2 "services.observer.jacobian: expected one of full, paper, got 'exact'"
                  $<TARGET_FILE:plexus> sim ${ARM_SCENARIO} --quiet --set services.observer.jacobian=exact)
 add_test(NAME cli.arm_too_many_joints
          COMMAND ${EXPECT} 2 "robots.arm.plant.dof: must be in 1..16"

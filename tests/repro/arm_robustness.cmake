@@ -17,10 +17,10 @@ set_tests_properties(repro.arm_robustness_sweep PROPERTIES LABELS "repro;slow" T
 # Bad parameters of the issue 18 keys: one line naming the key, exit 2.
 set(ARM_ROBUST ${PROJECT_SOURCE_DIR}/deploy/scenarios/arm_robustness.yaml)
 add_test(NAME cli.arm_bad_observer_tuning
-         COMMAND ${EXPECT} 2 "services.observer.tuning: must be robust or paper"
+         COMMAND ${EXPECT} 2 "services.observer.tuning: expected one of robust, paper, got 'fast'"
                  $<TARGET_FILE:plexus> sim ${ARM_ROBUST} --quiet --set services.observer.tuning=fast)
 add_test(NAME cli.arm_bad_controller_tuning
-         COMMAND ${EXPECT} 2 "services.controller.tuning: must be robust or paper"
+         COMMAND ${EXPECT} 2 "services.controller.tuning: expected one of robust, paper, got 'Paper'"
                  $<TARGET_FILE:plexus> sim ${ARM_ROBUST} --quiet --set services.controller.tuning=Paper)
 add_test(NAME cli.arm_bad_plant_torque_limit
          COMMAND ${EXPECT} 2 "arm_robustness.yaml:[0-9]+: robots.arm.plant: flexible_joint_arm: torque_limit\\[1\\] must be finite and > 0 \\(got -1\\)"

@@ -232,7 +232,7 @@ TEST(IcrEkf, PriorResetParametersAreConfigurationErrors) {
                 .find("icr_library: required with reset_mode: prior"),
             std::string::npos);
   EXPECT_NE(config_error(kEkf, {"services.ekf.adaptive_reset=true", "services.ekf.reset_mode=learned"})
-                .find("reset_mode: expected covariance or prior, got 'learned'"),
+                .find("reset_mode: expected one of covariance, prior, got 'learned'"),
             std::string::npos);
   EXPECT_NE(config_error(kEkf, {"services.ekf.adaptive_reset=true", "services.ekf.reset_mode=prior",
                                 "services.ekf.icr_library=/nonexistent/lib.txt"})
