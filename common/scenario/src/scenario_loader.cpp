@@ -618,7 +618,10 @@ struct Loader {
       bool found = false;
       for (Expectation& e : sc.expectations)
         if (e.metric == metric) e.inconsistent = evidence, found = true;
-      if (!found) pi.fail(metric, "no expectation on '" + metric + "' in expectations");
+      if (!found)
+        pi.fail(metric, "no expectation on '" + metric +
+                            "' in expectations (an entry here marks one; one removed from expectations, with "
+                            "--set say, goes from paper_inconsistent too: --set paper_inconsistent={})");
     }
   }
 

@@ -235,7 +235,10 @@ INSTANTIATE_TEST_SUITE_P(
             "t.yaml:25: expectations.final_x: expected '<op> <number>' with op one of <=, >=, <, >, ==; got '<= two'"},
         BadCase{"inconsistent_without_expectation",
                 with("  final_x: \"<= 2\"\n", "  final_x: \"<= 2\"\npaper_inconsistent:\n  final_y: docs/x.md\n"),
-                "t.yaml:27: paper_inconsistent.final_y: no expectation on 'final_y' in expectations"},
+                "t.yaml:27: paper_inconsistent.final_y: no expectation on 'final_y' in expectations (an entry here "
+                "marks one; "
+                "one removed from expectations, with --set say, goes from paper_inconsistent too: --set "
+                "paper_inconsistent={})"},
         BadCase{"inconsistent_without_evidence",
                 with("  final_x: \"<= 2\"\n", "  final_x: \"<= 2\"\npaper_inconsistent:\n  final_x: \"\"\n"),
                 "t.yaml:27: paper_inconsistent.final_x: must name the evidence (a docs page and section)"},
