@@ -63,9 +63,8 @@ class IcrOdometryComponent final : public Component {
       const alg::IcrParams icr = estimate_ ? alg::IcrParams{(*estimate_)[0], (*estimate_)[1], (*estimate_)[2]} : fixed_;
       if (estimate_ && estimate_->valid()) {
         // Since when the estimate's ICRs apply (its data time minus model_age): when that
-        // moves, the kept steps from then on are integrated again with them.
-        // While they are kept, the steps since then are integrated with the newest estimate
-        // of that model (the ICRs are constant per terrain; the estimate refines them).
+        // moves, and for revise_s after it, the kept steps since then are integrated again
+        // with the newest estimate (the ICRs are constant per terrain; the filter refines them).
         const double since = static_cast<double>(estimate_->sample().step) * base_step_ - (*estimate_)[3];
         const bool moved = have_since_ && std::abs(since - model_since_) > 0.5 * h_;
         if (!have_since_ || moved) model_since_ = since;
