@@ -27,13 +27,13 @@ IcrTerrainResetFilter::IcrTerrainResetFilter(const IcrEkfParams& ekf, const IcrT
       shadow_(ekf_),
       trial_(ekf_),
       best_(ekf_),
-      history_(static_cast<std::size_t>(options.rewind_steps)),
+      history_(options.rewind_steps, "icr_terrain_reset"),
       older_(static_cast<std::size_t>(options.rewind_steps)) {}
 
 void IcrTerrainResetFilter::start(const Pose2& z) {
   ekf_.reset(z);
   started_ = true;
-  kept_ = 0;
+  history_.clear();
   checking_ = 0;
   steps_ = since_prior_ = since_paper_ = 0;
 }
@@ -42,10 +42,8 @@ bool IcrTerrainResetFilter::step(const TrackSpeeds* u, double dt, const Pose2* z
   if (!started_) return false;
   ++steps_;
   Record* r = nullptr;
-  if (!history_.empty()) {
-    head_ = (head_ + 1) % static_cast<int>(history_.size());
-    kept_ = std::min(kept_ + 1, static_cast<int>(history_.size()));
-    r = &history_[static_cast<std::size_t>(head_)];
+  if (history_.capacity() > 0) {
+    r = &history_.push();
     r->x = ekf_.state();
     r->p = ekf_.covariance();
     r->predicted = u != nullptr;
@@ -105,15 +103,10 @@ void IcrTerrainResetFilter::terrain_changed(const TerrainIcrPrior* prior) {
   checking_ = options_.check_updates;
 }
 
-const IcrTerrainResetFilter::Record& IcrTerrainResetFilter::record(int age) const {
-  const int n = static_cast<int>(history_.size());
-  return history_[static_cast<std::size_t>((head_ - age + n) % n)];
-}
-
 double IcrTerrainResetFilter::refilter(IcrEkf& f, int age) const {
   double sum = 0.0;
   for (int a = age; a >= 0; --a) {
-    const Record& r = record(a);
+    const Record& r = history_.at(a);
     if (r.predicted) f.predict(r.u, r.dt);
     if (r.updated && f.update(r.z)) sum += f.last_neg2_log_likelihood();
   }
@@ -122,7 +115,7 @@ double IcrTerrainResetFilter::refilter(IcrEkf& f, int age) const {
 
 int IcrTerrainResetFilter::kept_updates() const {
   int updates = 0;
-  for (int a = 0; a < kept_; ++a) updates += record(a).updated ? 1 : 0;
+  for (int a = 0; a < history_.size(); ++a) updates += history_.at(a).updated ? 1 : 0;
   return updates;
 }
 
@@ -138,13 +131,13 @@ IcrTerrainResetFilter::Change IcrTerrainResetFilter::best_change(Hypothesis h, c
                                                                  IcrEkf& out) {
   // older_[a]: the recorded -2 log likelihoods of the kept updates older than step age a.
   double sum = 0.0;
-  for (int a = kept_ - 1; a >= 0; --a) {
+  for (int a = history_.size() - 1; a >= 0; --a) {
     older_[static_cast<std::size_t>(a)] = sum;
-    if (record(a).updated) sum += record(a).neg2ll;
+    if (history_.at(a).updated) sum += history_.at(a).neg2ll;
   }
   Change best{0, std::numeric_limits<double>::infinity()};
   const auto try_at = [&](int a) {
-    const Record& r = record(a);
+    const Record& r = history_.at(a);
     trial_.restore(r.x, r.p);
     apply(trial_, h, prior);
     const double score = older_[static_cast<std::size_t>(a)] + refilter(trial_, a);
@@ -158,13 +151,13 @@ IcrTerrainResetFilter::Change IcrTerrainResetFilter::best_change(Hypothesis h, c
   // (a switch between two GPS samples changes the prediction of the next one).
   const int stride = (kept_updates() + options_.max_candidates - 1) / options_.max_candidates;
   int seen = 0;
-  for (int a = kept_ - 1; a >= 0; --a)
-    if (record(a).updated && seen++ % stride == 0) try_at(a);
+  for (int a = history_.size() - 1; a >= 0; --a)
+    if (history_.at(a).updated && seen++ % stride == 0) try_at(a);
   const int coarse = best.age - 1;
   int older = coarse + 1, newer = coarse - 1;
-  while (older < kept_ - 1 && !record(older).updated) ++older;
-  while (newer > 0 && !record(newer).updated) --newer;
-  for (int a = std::min(older, kept_ - 1); a >= std::max(newer, 0); --a)
+  while (older < history_.size() - 1 && !history_.at(older).updated) ++older;
+  while (newer > 0 && !history_.at(newer).updated) --newer;
+  for (int a = std::min(older, history_.size() - 1); a >= std::max(newer, 0); --a)
     if (a != coarse) try_at(a);
   out = best_;
   return best;

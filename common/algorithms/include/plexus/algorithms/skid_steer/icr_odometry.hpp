@@ -13,8 +13,7 @@
 // second keeps its heading error for good (docs/algorithms/skid_steer.md, "Odometry").
 #pragma once
 
-#include <vector>
-
+#include "plexus/algorithms/core/history_ring.hpp"
 #include "plexus/algorithms/skid_steer/icr_kinematics.hpp"
 
 namespace plexus::algorithms {
@@ -60,9 +59,7 @@ class RevisableIcrOdometry {
     double t = 0.0;
   };
   IcrOdometry odo_;
-  std::vector<Record> history_;
-  int head_ = -1;
-  int kept_ = 0;
+  HistoryRing<Record> history_;
 };
 
 }  // namespace plexus::algorithms

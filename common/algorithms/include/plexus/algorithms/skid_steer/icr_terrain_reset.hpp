@@ -32,6 +32,7 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "plexus/algorithms/core/history_ring.hpp"
 #include "plexus/algorithms/skid_steer/icr_ekf.hpp"
 #include "plexus/algorithms/skid_steer/terrain_icr_library.hpp"
 
@@ -87,7 +88,6 @@ class IcrTerrainResetFilter {
     Pose2 z;
     double neg2ll = 0.0;  ///< of this step's update
   };
-  const Record& record(int age) const;  ///< age 0: the newest step
   enum class Hypothesis { kPrior, kPaper, kPaperIcrs };
   struct Change {
     int age = 0;         ///< steps back from the newest (0: none)
@@ -111,13 +111,11 @@ class IcrTerrainResetFilter {
   IcrEkf shadow_;
   IcrEkf trial_;
   IcrEkf best_;
-  std::vector<Record> history_;
+  HistoryRing<Record> history_;
   std::vector<double> older_;  ///< best_change's scratch: recorded -2 log likelihoods older than each age
   long steps_ = 0;             ///< steps since start()
   long since_prior_ = 0;       ///< step from which ekf_'s model applies
   long since_paper_ = 0;       ///< step from which shadow_'s model applies
-  int head_ = -1;              ///< index of the newest record
-  int kept_ = 0;
   bool started_ = false;
   long resets_ = 0;
   long fallbacks_ = 0;
