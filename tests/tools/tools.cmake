@@ -127,8 +127,8 @@ add_test(NAME tools.bad_loop_rate COMMAND ${EXPECT} 2 "--rate: must be in \\(0, 
          ${PLEXUS_CLI} latency loop --rate 0)
 add_test(NAME tools.bad_loop_rounds COMMAND ${EXPECT} 2 "--rounds: must be in 1..100 and at most rate x duration \\(10\\)"
          ${PLEXUS_CLI} latency loop --rate 100 --duration 0.1 --rounds 20)
-add_test(NAME tools.bad_pingpong_size COMMAND ${EXPECT} 2 "--size: must be in 0..65536 bytes"
-         ${PLEXUS_CLI} latency pingpong --size 70000)
+add_test(NAME tools.bad_pingpong_size COMMAND ${EXPECT} 2 "--size: must be in 0..1048576 bytes"
+         ${PLEXUS_CLI} latency pingpong --size 2000000)
 add_test(NAME tools.bad_pingpong_pin COMMAND ${EXPECT} 2 "--pin: must be auto, split, same or none, got 'fast'"
          ${PLEXUS_CLI} latency pingpong --pin fast)
 add_test(NAME tools.unknown_profile COMMAND ${EXPECT} 2 "unknown QoS profile 'fastest'"

@@ -20,6 +20,9 @@
 
 namespace plexus::latency {
 
+/// The largest payload: LatencyProbe's bound (idl/plexus/msg/latency_probe.idl).
+constexpr int kMaxPayload = 1 << 20;
+
 struct PingPongOptions {
   std::string role;
   int domain = 180;
@@ -28,19 +31,20 @@ struct PingPongOptions {
   int count = 2000;
   int warmup = 100;
   double timeout = 15;  ///< seconds to wait for the peer to match
-  double duration = 0;  ///< pong: seconds to run (0: until SIGTERM)
+  double duration = 0;  ///< pong: seconds to run (0: until SIGTERM); ping: at most (0: none)
   std::string samples;  ///< ping: write every round trip (us), one per line
 };
 
 inline void add_pingpong_options(CLI::App& app, PingPongOptions& o) {
   app.add_option("role", o.role, "ping or pong")->required()->check(CLI::IsMember({"ping", "pong"}));
   app.add_option("--domain", o.domain, "DDS domain id")->check(CLI::Range(0, 232));
-  app.add_option("--size", o.size, "payload bytes")->check(CLI::Range(0, 65536));
+  app.add_option("--size", o.size, "payload bytes")->check(CLI::Range(0, kMaxPayload));
   app.add_option("--rate", o.rate, "pings per second (0: back to back)")->check(CLI::Range(0.0, 100000.0));
   app.add_option("--count", o.count, "measured round trips")->check(CLI::Range(1, 10'000'000));
   app.add_option("--warmup", o.warmup, "unmeasured round trips first")->check(CLI::Range(0, 1'000'000));
   app.add_option("--timeout", o.timeout, "seconds to wait for the peer");
-  app.add_option("--duration", o.duration, "pong: seconds to run (0: until SIGTERM)");
+  app.add_option("--duration", o.duration,
+                 "pong: seconds to run (0: until SIGTERM); ping: seconds at most (0: until --count)");
   app.add_option("--samples", o.samples, "ping: file for every round trip in microseconds");
 }
 
@@ -134,7 +138,9 @@ int run_ping(const char* implementation, const PingPongOptions& o, Send&& send, 
   const int64_t period = o.rate > 0 ? static_cast<int64_t>(1e9 / o.rate) : 0;
   int sent = 0;
   int64_t next = mono_ns(), t_start = 0;
-  for (int k = 0; k < total; ++k) {
+  // A lost pong costs its 1 s wait: a lossy run ends at --duration rather than after count s.
+  const int64_t stop_at = o.duration > 0 ? next + static_cast<int64_t>(o.duration * 1e9) : INT64_MAX;
+  for (int k = 0; k < total && mono_ns() < stop_at; ++k) {
     if (period > 0) {
       sleep_until_ns(next);
       next += period;
@@ -145,7 +151,7 @@ int run_ping(const char* implementation, const PingPongOptions& o, Send&& send, 
     const int64_t t0 = mono_ns();
     if (!send(k)) break;
     if (k >= o.warmup) ++sent;
-    const int64_t arrival = pongs.wait_for(k, t0 + 1'000'000'000);
+    const int64_t arrival = pongs.wait_for(k, std::min(t0 + 1'000'000'000, stop_at));
     if (arrival >= 0 && k >= o.warmup) rtt.push_back(arrival - t0);
   }
   const double elapsed = static_cast<double>(mono_ns() - t_start) * 1e-9;

@@ -33,7 +33,7 @@ int run_pong(rt::Participant& p, const rt::QosProfile& qos, const latency::PingP
   auto pub = p.publisher<msg::LatencyProbe>("latency/pong", qos);
   auto sub = p.subscriber<msg::LatencyProbe>("latency/ping", qos);
   msg::LatencyProbe buffer;
-  buffer.payload().reserve(65536);
+  buffer.payload().reserve(latency::kMaxPayload);
   // data_time (the ping index) and origin time travel back. Only this callback touches pub.
   sub.on_sample([&pub](msg::LatencyProbe& m, const rt::SampleMeta&) { pub.publish(m); }, std::move(buffer));
   const int64_t end = o.duration > 0 ? mono_ns() + static_cast<int64_t>(o.duration * 1e9) : INT64_MAX;
@@ -56,7 +56,7 @@ int run_ping(rt::Participant& p, const rt::QosProfile& qos, const latency::PingP
   std::this_thread::sleep_for(std::chrono::milliseconds(300));  // both directions matched
   msg::LatencyProbe out, in;
   out.payload().assign(static_cast<std::size_t>(o.size), 0x5a);
-  in.payload().reserve(65536);
+  in.payload().reserve(latency::kMaxPayload);
   // Each pong is stamped on the receive thread (Subscriber::on_sample), as ddsperf's ping does.
   sub.on_sample([&pongs](msg::LatencyProbe& m, const rt::SampleMeta&) { pongs.arrived(m.header().data_time_ns()); },
                 std::move(in));

@@ -135,11 +135,11 @@ int main(int argc, char** argv) {
   DataWriter* w = pub->create_datawriter(ping ? tping : tpong, wq);
   Echo echo;
   echo.writer = w;
-  echo.in.payload().reserve(65536);
+  echo.in.payload().reserve(plexus::latency::kMaxPayload);
   plexus::latency::PongArrivals pongs;
   PongStamp stamp;
   stamp.pongs = &pongs;
-  stamp.in.payload().reserve(65536);
+  stamp.in.payload().reserve(plexus::latency::kMaxPayload);
   DataReader* r = ping ? sub->create_datareader(tpong, rq, &stamp, StatusMask::data_available())
                        : sub->create_datareader(tping, rq, &echo, StatusMask::data_available());
   if (!w || !r) {

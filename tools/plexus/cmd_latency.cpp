@@ -11,13 +11,13 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <regex>
 #include <set>
 #include <sstream>
 
 #include "child_process.hpp"
 #include "command.hpp"
 #include "cpu_affinity.hpp"
+#include "ddsperf.hpp"
 #include "external_program.hpp"
 #include "latency_loop.hpp"
 #include "latency_stats.hpp"
@@ -73,36 +73,6 @@ Percentiles pct_of_result(const Json& r) {
   return p;
 }
 
-// ddsperf ping prints, per second: "... size N mean Xus min Xus 50% Xus 90% Xus 99% Xus max Xus cnt N"
-// (half round trips). Percentiles: count-weighted mean of the per-second values; max: max.
-Json parse_ddsperf(const std::string& out) {
-  static const std::regex line_re(
-      R"(size (\d+) mean ([0-9.]+)us min ([0-9.]+)us 50% ([0-9.]+)us 90% ([0-9.]+)us 99% ([0-9.]+)us max ([0-9.]+)us cnt (\d+))");
-  double n = 0, mean = 0, p50 = 0, p90 = 0, p99 = 0, mx = 0;
-  std::istringstream in(out);
-  for (std::string line; std::getline(in, line);) {
-    std::smatch m;
-    if (!std::regex_search(line, m, line_re)) continue;
-    const double c = std::stod(m[8]);
-    n += c;
-    mean += c * std::stod(m[2]);
-    p50 += c * std::stod(m[4]);
-    p90 += c * std::stod(m[5]);
-    p99 += c * std::stod(m[6]);
-    mx = std::max(mx, std::stod(m[7]));
-  }
-  if (n <= 0) throw std::runtime_error("ddsperf printed no latency lines");
-  // Half round trips -> round trips (x2), to compare like with like.
-  return {{"implementation", "ddsperf"},
-          {"received", static_cast<int>(n)},
-          {"rtt_mean_us", 2 * mean / n},
-          {"rtt_p50_us", 2 * p50 / n},
-          {"rtt_p90_us", 2 * p90 / n},
-          {"rtt_p99_us", 2 * p99 / n},
-          {"rtt_max_us", 2 * mx},
-          {"note", "ddsperf reports half round trips per second; shown x2, count-weighted over its 1 s intervals"}};
-}
-
 /// Where the ping and the pong run (--pin), the same for plexus and the vendor's baseline.
 /// On this 2-vCPU virtual machine the round trip is decided by where the kernel puts the two
 /// processes' receiving threads: a wake-up across CPUs costs about 30 us more per hop than
@@ -134,8 +104,8 @@ int run_pingpong(const PingOpts& o) {
   const bool shm = rt::fast_shared_memory(transport) && vendor == rt::Vendor::fast && peer_vendor == rt::Vendor::fast;
   const std::string qos_file = o.qos_file.empty() ? rt::default_qos_file() : o.qos_file;
   const auto qos = rt::QosProfiles::load(qos_file).get(o.profile);
-  if (o.size < 0 || o.size > 65536)
-    throw InputError("--size: must be in 0..65536 bytes, got " + std::to_string(o.size));
+  if (o.size < 0 || o.size > (1 << 20))
+    throw InputError("--size: must be in 0..1048576 bytes, got " + std::to_string(o.size));
   if (!(o.rate >= 0 && o.rate <= 100000)) throw InputError("--rate: must be in 0..100000 Hz (0: back to back)");
   if (o.count < 1 || o.count > 10'000'000) throw InputError("--count: must be in 1..10000000");
   if (o.domain < 0 || o.domain > 231) throw InputError("--domain: must be in 0..231 (the baseline uses domain + 1)");
@@ -198,15 +168,7 @@ int run_pingpong(const PingOpts& o) {
       vendor_name = "ddsperf";
       const std::string ddsperf = find_program("ddsperf");
       if (ddsperf.empty()) throw std::runtime_error("ddsperf not found (install cyclonedds-tools)");
-      const std::string uri =
-          "CYCLONEDDS_URI=" +
-          std::string(
-              "<CycloneDDS><Domain Id=\"any\"><General><Interfaces><NetworkInterface "
-              "address=\"127.0.0.1\"/></Interfaces>"
-              "<AllowMulticast>false</AllowMulticast></General><Discovery><ParticipantIndex>auto</ParticipantIndex>"
-              "<MaxAutoParticipantIndex>31</MaxAutoParticipantIndex><Peers><Peer "
-              "address=\"127.0.0.1\"/></Peers></Discovery>"
-              "</Domain></CycloneDDS>");
+      const std::string uri = ddsperf_uri();
       std::vector<std::string> base = {"-i", d2};
       if (qos.reliability == rt::QosProfile::Reliability::best_effort) base.push_back("-u");
       const int dur = static_cast<int>(std::ceil(expected_s)) + 1;
@@ -224,7 +186,7 @@ int run_pingpong(const PingOpts& o) {
       kill(dpong, SIGTERM);
       wait_program(dpong);
       fs::remove(pong_log);
-      vendor_r = parse_ddsperf(dout);
+      vendor_r = parse_ddsperf_ping(dout);
     }
   }
 
@@ -469,7 +431,7 @@ Command add_latency_command(CLI::App& root) {
   ping->add_option("--peer-dds", po->peer_dds, "vendor of the pong side (default: --dds)");
   ping->add_option("--profile", po->profile, "QoS profile")->capture_default_str();
   ping->add_option("--qos-file", po->qos_file, "QoS profiles file (default: deploy/qos.yaml)");
-  ping->add_option("--size", po->size, "payload bytes (0..65536)")->capture_default_str();
+  ping->add_option("--size", po->size, "payload bytes (0..1048576)")->capture_default_str();
   ping->add_option("--rate", po->rate, "pings per second (0: back to back)")->capture_default_str();
   ping->add_option("--count", po->count, "measured round trips")->capture_default_str();
   ping->add_option("--domain", po->domain, "DDS domain (the baseline uses domain + 1)")->capture_default_str();

@@ -26,6 +26,7 @@ Command add_topic_command(CLI::App& root);
 Command add_record_command(CLI::App& root);
 Command add_replay_command(CLI::App& root);
 Command add_latency_command(CLI::App& root);
+Command add_bench_command(CLI::App& root);
 Command add_deploy_command(CLI::App& root);
 Command add_service_command(CLI::App& root);
 Command add_param_command(CLI::App& root);

@@ -34,6 +34,7 @@ int main(int argc, char** argv) {
   commands.push_back(plexus::cli::add_record_command(app));
   commands.push_back(plexus::cli::add_replay_command(app));
   commands.push_back(plexus::cli::add_latency_command(app));
+  commands.push_back(plexus::cli::add_bench_command(app));
   commands.push_back(plexus::cli::add_deploy_command(app));
   commands.push_back(plexus::cli::add_service_command(app));
   commands.push_back(plexus::cli::add_param_command(app));

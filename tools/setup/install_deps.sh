@@ -25,6 +25,8 @@ PACKAGES=(
   chromium chromium-driver
   # plexus launch over ssh (and its tests: an sshd per namespace), systemd-analyze for the units, jq in the tests
   openssh-client openssh-server systemd jq
+  # test scripts that read JSON and open sockets (tests/bench, tests/first_hour, tests/ecosystem)
+  python3
   # DDS Security (docs/security.md): the test PKI script, OpenSSL for the checks, captures
   openssl libssl-dev tcpdump
   # fault tests (tests/fault): packet loss and partitions inside network namespaces

@@ -6,23 +6,14 @@
 #include <cstdlib>
 #include <sstream>
 
+#include "plexus/base/html_escape.hpp"
 #include "plexus/base/yaml_reader.hpp"
 #include "plexus/scenario/expectation.hpp"
 
 namespace plexus::scenario {
 namespace {
 
-std::string esc(const std::string& s) {
-  std::string out;
-  for (char c : s) switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  return out;
-}
+std::string esc(const std::string& s) { return html_escape(s); }
 
 std::string anchor(const std::string& file) {
   std::string id = "fig-";
