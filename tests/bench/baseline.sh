@@ -14,7 +14,7 @@ common=(bench --pairs fast-cyclone,cyclone-cyclone --profiles latency --sizes 64
         --topologies one_host --no-vendor-tools --domain "$domain" --threshold 0.9 --threshold-us 1000)
 rm -rf "$out"
 mkdir -p "$out"
-"$plexus" "${common[@]}" -o "$out/old" > "$out/old.log" 2>&1 || { cat "$out/old.log"; echo "FAIL: first run exited $?"; exit 1; }
+"$plexus" "${common[@]}" -o "$out/old" > "$out/old.log" 2>&1 || { cat "$out/old.log"; echo "FAIL: the first run failed"; exit 1; }
 "$plexus" "${common[@]}" -o "$out/new" --baseline "$out/old" --plant-delay "$cell=5000" > "$out/new.log" 2>&1
 rc=$?
 cat "$out/new.log"

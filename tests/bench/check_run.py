@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""check_run.py RUN_JSON [--loss-cell ID --loss PERCENT] [--baseline-flags ID]
+"""check_run.py RUN_JSON [--loss-cell ID --loss PERCENT] [--delay-ms D] [--baseline-flags ID]
 
 Checks a `plexus bench` run.json (docs/qos-bench.md) the way a user's CI would read it:
   * every cell of the matrix is present (pairs x transports x profiles x sizes x topologies),
@@ -9,6 +9,8 @@ Checks a `plexus bench` run.json (docs/qos-bench.md) the way a user's CI would r
     ratio to it;
   * --loss-cell ID --loss P: that cell's one-way loss at the headline rate is the link's P %
     within four binomial standard deviations (best effort: a lost packet is a lost sample);
+  * --delay-ms D: every ok two_ns cell's one-way p50 at the headline rate is D ms plus at
+    most 3 ms, its round-trip p50 at least 2 D (the relay delays each way);
   * --baseline-flags ID: the run's baseline comparison found regressions, all of them in ID.
 Prints one line per failure; exits 1 on any.
 """
@@ -91,6 +93,18 @@ def main():
                   f"expected {lo:.0f}..{hi:.0f}")
             if not lo <= lost <= hi:
                 fail(f"{cid}: lost {lost} of {n}, outside {lo:.0f}..{hi:.0f} for {100 * p:g} % loss")
+    if "--delay-ms" in opts:
+        d_us = float(opts["--delay-ms"]) * 1000
+        for c in cells:
+            if c["status"] != "ok" or c["topology"] != "two_ns":
+                continue
+            e = next((e for e in c["latency"] if e["rate_hz"] == headline), None)
+            ow, rt = e["one_way_us"]["p50"], e["round_trip_us"]["p50"]
+            print(f"{c['id']}: one-way p50 {ow:.0f} us, round trip p50 {rt:.0f} us, link delay {d_us:.0f} us")
+            if not d_us <= ow <= d_us + 3000:
+                fail(f"{c['id']}: one-way p50 {ow:.0f} us, expected {d_us:.0f}..{d_us + 3000:.0f}")
+            if rt < 2 * d_us:
+                fail(f"{c['id']}: round trip p50 {rt:.0f} us, below twice the delay")
     if "--baseline-flags" in opts:
         want = opts["--baseline-flags"]
         regs = (run.get("baseline") or {}).get("regressions", [])

@@ -9,9 +9,11 @@ set -u
 plexus=$1 out=$2 domain=$3
 here=$(cd "$(dirname "$0")" && pwd)
 rm -rf "$out"
-"$plexus" bench --preset quick --domain "$domain" -o "$out/run" > "$out.log" 2>&1 || {
+"$plexus" bench --preset quick --domain "$domain" -o "$out/run" > "$out.log" 2>&1
+rc=$?
+[ "$rc" -eq 0 ] || {
   tail -20 "$out.log"
-  echo "FAIL: plexus bench --preset quick exited $?"
+  echo "FAIL: plexus bench --preset quick exited $rc"
   exit 1
 }
 cat "$out.log"

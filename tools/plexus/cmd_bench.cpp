@@ -24,7 +24,7 @@ using Json = nlohmann::ordered_json;
 struct BenchOpts {
   std::string preset = "quick", matrix, out = "bench_out", baseline, plant;
   std::string pairs, transports, profiles, sizes, rates, topologies, qos_file;
-  double loss = -1, seconds = -1, threshold = 0.25, threshold_us = 20, noise_factor = 3;
+  double loss = -1, delay_ms = -1, seconds = -1, threshold = 0.25, threshold_us = 20, noise_factor = 3;
   int repeats = 0, domain = -1;
   bool no_vendor_tools = false;
   std::string command;
@@ -58,6 +58,7 @@ bench::Matrix matrix_of(const BenchOpts& o) {
   if (!o.rates.empty()) m.rates_hz = parse_list<double>(o.rates, "--rates");
   if (!o.topologies.empty()) m.topologies = split_comma_list(o.topologies);
   if (o.loss >= 0) m.loss_percent = o.loss;
+  if (o.delay_ms >= 0) m.delay_ms = o.delay_ms;
   if (o.seconds > 0) m.seconds_per_phase = m.throughput_seconds = o.seconds;
   if (o.repeats > 0) m.repeats = o.repeats;
   if (o.no_vendor_tools) m.vendor_tools = false;
@@ -144,6 +145,14 @@ int run(const BenchOpts& o) {
   }
   std::printf("report: %s/report.html (run.json, cells.csv) in %.0f s\n", o.out.c_str(),
               run["duration_s"].get<double>());
+  // A cell that could not be measured (its processes did not start or match) fails the run
+  // as a regression does: a user's CI must not read a missing figure as a pass.
+  int failed = 0;
+  for (const auto& c : run["cells"]) failed += c["status"] == "failed";
+  if (failed > 0) {
+    std::printf("%d cells failed to run (their reasons above and in the report)\n", failed);
+    rc = 1;
+  }
   return rc;
 }
 
@@ -167,6 +176,7 @@ Command add_bench_command(CLI::App& root) {
   a->add_option("--rates", o->rates, "ping rates in Hz (0: unpaced); the first > 0 is the summary's");
   a->add_option("--topologies", o->topologies, "one_host,two_ns (two network namespaces, root)");
   a->add_option("--loss", o->loss, "percent of packets dropped on the two_ns link");
+  a->add_option("--delay-ms", o->delay_ms, "delay each way on the two_ns link, ms (a userspace relay)");
   a->add_option("--seconds", o->seconds, "seconds per latency and throughput phase");
   a->add_option("--repeats", o->repeats, "run every group this many times (the spread between them is the noise)");
   a->add_option("--domain", o->domain, "DDS domain of every cell (default 200)");

@@ -107,6 +107,7 @@ Matrix load_matrix(const std::string& path, Matrix m, const std::string& out_dir
   if (y.has("rates_hz")) m.rates_hz = numbers<double>(y, "rates_hz");
   if (y.has("topologies")) m.topologies = strings(y, "topologies");
   m.loss_percent = y.optional<double>("loss_percent", m.loss_percent);
+  m.delay_ms = y.optional<double>("delay_ms", m.delay_ms);
   m.outage_s = y.optional<double>("outage_s", m.outage_s);
   m.seconds_per_phase = y.optional<double>("seconds_per_phase", m.seconds_per_phase);
   m.throughput_seconds = y.optional<double>("throughput_seconds", m.throughput_seconds);
@@ -175,6 +176,7 @@ void validate(const Matrix& m, const std::string& origin) {
   check_distinct(m.rates_hz, origin + ": rates_hz");
   check_distinct(m.topologies, origin + ": topologies");
   need(m.loss_percent >= 0 && m.loss_percent <= 50, "loss_percent", "must be in 0..50");
+  need(m.delay_ms >= 0 && m.delay_ms <= 1000, "delay_ms", "must be in 0..1000 ms");
   need(m.outage_s >= 0.01 && m.outage_s <= 5, "outage_s", "must be in 0.01..5 s");
   need(m.seconds_per_phase >= 0.1 && m.seconds_per_phase <= 30, "seconds_per_phase", "must be in 0.1..30 s");
   need(m.throughput_seconds >= 0 && m.throughput_seconds <= 30, "throughput_seconds", "must be in 0..30 s");

@@ -24,6 +24,7 @@ struct Matrix {
   std::vector<double> rates_hz;         ///< ping rates; 0 = unpaced; the first > 0 is the headline
   std::vector<std::string> topologies;  ///< "one_host", "two_ns"
   double loss_percent = 1;              ///< packet loss on the two_ns link
+  double delay_ms = 0;                  ///< delay each way on the two_ns link (link_delay; 0: none)
   double outage_s = 0.2;                ///< the burst phase's cut (two_ns)
   double seconds_per_phase = 1.0;       ///< each latency phase
   double throughput_seconds = 1.0;      ///< each throughput phase (0: none)

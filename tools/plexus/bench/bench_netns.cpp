@@ -11,6 +11,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "child_process.hpp"
 #include "external_program.hpp"
 
 namespace plexus::cli::bench {
@@ -34,7 +35,7 @@ void remove_stale() {
   std::istringstream list(run({"ip", "netns", "list"}, false));
   for (std::string line; std::getline(list, line);) {
     const std::string name = line.substr(0, line.find(' '));
-    if (name.rfind(kPrefix, 0) != 0 || name.size() < 7 || name[5] != '_') continue;
+    if (name.rfind(kPrefix, 0) != 0 || name.size() < 7 || name[5] != '_') continue;  // plxb1_, plxb2_, plxbm_
     const long pid = std::strtol(name.c_str() + 6, nullptr, 10);
     if (pid > 0 && kill(static_cast<pid_t>(pid), 0) != 0) run({"ip", "netns", "delete", name}, false);
   }
@@ -61,7 +62,7 @@ bool NetnsPair::possible(std::string& why) {
   return true;
 }
 
-NetnsPair::NetnsPair() {
+NetnsPair::NetnsPair(double delay_ms) {
   remove_stale();
   const std::string tag = std::to_string(getpid());
   ns1_ = std::string(kPrefix) + "1_" + tag;
@@ -71,7 +72,24 @@ NetnsPair::NetnsPair() {
   run({"ip", "netns", "add", ns1_});
   created_ = true;
   run({"ip", "netns", "add", ns2_});
-  run({"ip", "link", "add", veth1_, "type", "veth", "peer", "name", veth2_});
+  if (delay_ms > 0) {
+    // ns1 -- veth -- middle -- veth -- ns2; the middle has no address: link_delay relays
+    // every frame (ARP too) from one of its ends to the other.
+    mid_ = std::string(kPrefix) + "m_" + tag;
+    const std::string m1 = std::string(kPrefix) + "c" + tag, m2 = std::string(kPrefix) + "d" + tag;
+    run({"ip", "netns", "add", mid_});
+    run({"ip", "link", "add", veth1_, "type", "veth", "peer", "name", m1});
+    run({"ip", "link", "add", veth2_, "type", "veth", "peer", "name", m2});
+    run({"ip", "link", "set", m1, "netns", mid_});
+    run({"ip", "link", "set", m2, "netns", mid_});
+    for (const auto& m : {m1, m2}) run({"ip", "-n", mid_, "link", "set", m, "promisc", "on", "up"});
+    relay_ = spawn_program(find_program("ip"),
+                           {"netns", "exec", mid_, program_path("link_delay"), "--a", m1, "--b", m2, "--delay-ms",
+                            std::to_string(delay_ms)},
+                           {}, {.file = "/dev/null", .fd = -1});
+  } else {
+    run({"ip", "link", "add", veth1_, "type", "veth", "peer", "name", veth2_});
+  }
   run({"ip", "link", "set", veth1_, "netns", ns1_});
   run({"ip", "link", "set", veth2_, "netns", ns2_});
   run({"ip", "-n", ns1_, "addr", "add", std::string(address(1)) + "/24", "dev", veth1_});
@@ -84,9 +102,13 @@ NetnsPair::NetnsPair() {
 
 NetnsPair::~NetnsPair() {
   if (!created_) return;
+  if (relay_ > 0) {
+    kill(relay_, SIGTERM);
+    wait_program(relay_);
+  }
   // Deleting a namespace removes its end of the veth, the other end, and the rules in it.
-  run({"ip", "netns", "delete", ns1_}, false);
-  run({"ip", "netns", "delete", ns2_}, false);
+  for (const auto* ns : {&ns1_, &ns2_, &mid_})
+    if (!ns->empty()) run({"ip", "netns", "delete", *ns}, false);
 }
 
 void NetnsPair::nft(const std::string& ns, const std::string& rules) const {

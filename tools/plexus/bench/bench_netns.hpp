@@ -1,9 +1,13 @@
 // `plexus bench`'s two-host topology on one machine: two network namespaces joined by a veth
 // pair (10.233.0.1 and 10.233.0.2, addresses that exist only inside them), with nftables
 // rules inside the namespaces that drop a share of the packets arriving on each end, and a
-// chain that cuts the link for the burst phase. The host's own network and ruleset are never
-// touched; the namespaces (and their rules) go when this object does. Needs root.
+// chain that cuts the link for the burst phase. With a delay, the link goes through a third
+// namespace where link_delay relays every frame after it (tools/latency/link_delay.cpp).
+// The host's own network and ruleset are never touched; the namespaces (their rules, the
+// relay) go when this object does. Needs root.
 #pragma once
+
+#include <sys/types.h>
 
 #include <string>
 #include <vector>
@@ -14,7 +18,7 @@ class NetnsPair {
  public:
   /// Creates the pair (names carry this process's id); throws std::runtime_error naming the
   /// command that failed. Namespaces of an earlier bench whose process is gone are removed first.
-  NetnsPair();
+  explicit NetnsPair(double delay_ms = 0);
   ~NetnsPair();
   NetnsPair(const NetnsPair&) = delete;
   NetnsPair& operator=(const NetnsPair&) = delete;
@@ -37,8 +41,9 @@ class NetnsPair {
 
  private:
   void nft(const std::string& ns, const std::string& rules) const;
-  std::string ns1_, ns2_, veth1_, veth2_;
+  std::string ns1_, ns2_, mid_, veth1_, veth2_;
   bool created_ = false;
+  pid_t relay_ = -1;  ///< link_delay in the middle namespace, if there is a delay
 };
 
 }  // namespace plexus::cli::bench

@@ -183,12 +183,14 @@ std::vector<Measure> summary_measures(const std::string& at) {
       {lat, "one-way p99", false, entry_value({"one_way_us", "p99"})},
       {lat, "one-way p99.9", false, entry_value({"one_way_us", "p999"})},
       {lat, "round-trip p50", false, entry_value({"round_trip_us", "p50"})},
+      // The noise the cell measured of itself (docs/qos-bench.md): what --baseline allows for.
+      {lat, "one-way p50 spread", false, cell_value({"spread", "one_way_p50_us"})},
       {"pings at " + at, "lost %", false, [](const json&, const json* e) { return lost_percent(e); }},
       {"pings at " + at, "late", false, entry_value({"late"})},
       {"throughput", "samples/s", true, cell_value({"throughput", "samples_per_s"})},
       {"throughput", "MB/s", true, cell_value({"throughput", "mb_per_s"})},
-      {"CPU (% of a core)", "writer", false, cell_value({"cpu_percent", "writer"})},
-      {"CPU (% of a core)", "reader", false, cell_value({"cpu_percent", "reader"})},
+      {"CPU at " + at + " (% of a core)", "writer", false, cell_value({"cpu_percent", "writer"})},
+      {"CPU at " + at + " (% of a core)", "reader", false, cell_value({"cpu_percent", "reader"})},
       {"vs vendor tool", "round-trip p50 ratio", false, cell_value({"ratio", "round_trip_p50"})},
   };
 }
@@ -292,8 +294,9 @@ void write_summary(std::ostream& html, const json& run) {
   const auto best = best_marks(rows, values, measures);
 
   html << "<p>One row per cell that ran. Latencies, lost and late pings at " << esc(at)
-       << ", the matrix's first paced rate; throughput: what arrived in the cell's throughput phase; CPU over all its "
-          "phases. "
+       << ", the matrix's first paced rate, and the CPU of each end at that rate (% of one core); throughput: what "
+          "arrived in the cell's throughput phase; spread: the range of the one-way p50 between chunks of the phase "
+          "and between repeats (the noise the cell measured of itself). "
           "<span class=\"best\">Bold on green</span>: the best value of its column among the cells of the same "
           "payload size (lowest latency, loss, late, CPU and ratio; highest throughput); ties are all marked, and a "
           "column in which every cell of a size has the same value has no mark for that size. A thick line starts "
@@ -400,7 +403,8 @@ void write_faults(std::ostream& html, const json& run) {
           "missed deadline or the lost liveliness took to be detected.</p>\n"
        << "<table class=\"bench\" id=\"faults\">\n<thead><tr><th>cell</th><th>link loss %</th><th>lost pings</th>"
           "<th>lost in throughput phase</th><th>outage s</th><th>recovery s</th><th>repaired / lost</th>"
-          "<th>deadline period / detected after</th><th>liveliness lease / detected after</th></tr></thead>\n"
+          "<th>deadline period / detected after</th><th>liveliness lease / detected after</th>"
+          "<th>clock offset us</th></tr></thead>\n"
           "<tbody>\n";
   for (const json* c : rows) {
     const auto cell = [&](const std::string& v) {
@@ -420,8 +424,42 @@ void write_faults(std::ostream& html, const json& run) {
     cell(repaired && lost ? shown(*repaired) + " / " + shown(*lost) : "-");
     cell(event_text(*c, "deadline", "period_s"));
     cell(event_text(*c, "liveliness", "lease_s"));
+    const auto offset = number(*c, {"clock_offset_us"});
+    const json* applied = member(*c, {"clock_offset_applied"});
+    cell(offset ? shown(*offset) + (applied && applied->is_boolean() && applied->get<bool>() ? " (applied)" : "")
+                : "-");
     html << "</tr>\n";
   }
+  html << "</tbody>\n</table>\n";
+  // What the link's loss rules did, per group (nftables counters).
+  if (const json* counters = member(run, {"link_counters"}); counters && counters->is_object() && !counters->empty()) {
+    html << "<p>The link's loss rules, per group (nftables counters in the two namespaces):</p>\n<ul id=\"link\">\n";
+    for (const auto& [group, what] : counters->items())
+      html << "<li>" << esc(group) << ": " << esc(what.is_string() ? what.get<std::string>() : what.dump())
+           << "</li>\n";
+    html << "</ul>\n";
+  }
+}
+
+/// --baseline's comparison, when the run has one.
+void write_baseline(std::ostream& html, const json& run) {
+  const json* b = member(run, {"baseline"});
+  if (!b || !b->is_object()) return;
+  const json* regs = member(*b, {"regressions"});
+  const std::size_t n = regs && regs->is_array() ? regs->size() : 0;
+  html << "<h2 id=\"baseline-section\">Against the baseline</h2>\n<p>Compared with " << esc(text(*b, {"run"})) << ": "
+       << esc(shown(number(*b, {"compared"}).value_or(0))) << " measures of the cells that ran in both; "
+       << (n == 0 ? std::string("no regression.") : std::to_string(n) + " regressions (the command exits 1).")
+       << " A measure regresses when it is worse by more than the largest of the relative threshold, the absolute "
+          "floor (latencies) and the noise factor times the old cell's spread.</p>\n";
+  if (n == 0) return;
+  html << "<table class=\"bench\" id=\"regressions\">\n<thead><tr><th>cell</th><th>measure</th><th>old</th><th>new</th>"
+          "<th>allowed change</th></tr></thead>\n<tbody>\n";
+  for (const auto& r : *regs)
+    html << "<tr data-cell=\"" << esc(text(r, {"cell"})) << "\"><td class=\"key\">" << esc(text(r, {"cell"}))
+         << "</td><td>" << esc(text(r, {"measure"})) << "</td><td>" << esc(shown(number(r, {"old"}).value_or(0)))
+         << "</td><td>" << esc(shown(number(r, {"new"}).value_or(0))) << "</td><td>"
+         << esc(shown(number(r, {"allowed_change"}).value_or(0))) << "</td></tr>\n";
   html << "</tbody>\n</table>\n";
 }
 
@@ -696,6 +734,7 @@ std::string report_html(const json& run, const std::vector<Figure>& figures) {
           "<li><a href=\"#throughput-section\">Throughput against payload size</a></li>\n"
           "<li><a href=\"#rate-section\">Latency against rate</a></li>\n"
           "<li><a href=\"#faults-section\">Loss and recovery</a></li>\n</ul></nav>\n";
+  write_baseline(html, run);
   html << "<h2 id=\"summary-section\">Summary</h2>\n";
   write_summary(html, run);
   html << "<h2 id=\"skipped-section\">Cells that did not run</h2>\n";

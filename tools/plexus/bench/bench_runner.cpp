@@ -136,7 +136,12 @@ struct SizeResult {
   std::map<double, long> sent, received;
   long flood_sent = 0, flood_received = 0;
   double flood_bytes = 0, flood_window_s = 0, flood_wall_s = 0;
-  double writer_cpu_s = 0, reader_cpu_s = 0, wall_s = 0;
+  /// CPU seconds of each end and the writer's phase time: per rate, and of the flood.
+  struct Cpu {
+    double writer_s = 0, reader_s = 0, wall_s = 0;
+  };
+  std::map<double, Cpu> cpu;
+  Cpu flood_cpu;
 };
 
 /// The CPUs of the writer and the reader (-1: not pinned), from Matrix::pin.
@@ -241,9 +246,7 @@ GroupRun run_group(const Group& g, const Matrix& m, const NetnsPair* ns, const P
     s.rtt_us[rate] = read_samples_us(w.value("rtt_file", ""));
     s.sent[rate] = w["sent"].get<long>();
     s.received[rate] = reader_phase.value("received", 0L);
-    s.writer_cpu_s += w["cpu_s"].get<double>();
-    s.reader_cpu_s += reader_phase.value("cpu_s", 0.0);
-    s.wall_s += w["wall_s"].get<double>();
+    s.cpu[rate] = {w["cpu_s"].get<double>(), reader_phase.value("cpu_s", 0.0), w["wall_s"].get<double>()};
     if (size < offset_size && w["pongs"].get<long>() > 0) {
       offset_size = size;
       r.offset_us = static_cast<double>(w["offset_ns"].get<long long>()) * 1e-3;
@@ -260,9 +263,7 @@ GroupRun run_group(const Group& g, const Matrix& m, const NetnsPair* ns, const P
       s.flood_bytes = reader_phase.value("bytes", 0.0);
       s.flood_window_s = reader_phase.value("window_s", 0.0);
       s.flood_wall_s = w["wall_s"].get<double>();
-      s.writer_cpu_s += w["cpu_s"].get<double>();
-      s.reader_cpu_s += reader_phase.value("cpu_s", 0.0);
-      s.wall_s += w["wall_s"].get<double>();
+      s.flood_cpu = {w["cpu_s"].get<double>(), reader_phase.value("cpu_s", 0.0), w["wall_s"].get<double>()};
     } else if (kind == "burst" && w.contains("recovery")) {
       r.recovery = w["recovery"];
     }
@@ -384,7 +385,7 @@ VendorResult ddsperf(const Group& g, int size, double rate, const Matrix& m) {
 // ---------------------------------------------------------------------------------------
 // Cells
 
-Json cell_keys(const Group& g, int size, double loss) {
+Json cell_keys(const Group& g, int size, double loss, double delay_ms) {
   return {{"id", cell_id(g.pair_name(), g.transport, g.profile, size, g.topology)},
           {"pair", g.pair_name()},
           {"writer_dds", rt::to_string(g.pair.writer)},
@@ -394,7 +395,8 @@ Json cell_keys(const Group& g, int size, double loss) {
           {"reliability", rt::to_string(g.qos.reliability)},
           {"size", size},
           {"topology", g.topology},
-          {"loss_percent", g.topology == "two_ns" ? loss : 0.0}};
+          {"loss_percent", g.topology == "two_ns" ? loss : 0.0},
+          {"delay_ms", g.topology == "two_ns" ? delay_ms : 0.0}};
 }
 
 /// Why a group cannot run, or "".
@@ -410,7 +412,7 @@ std::string not_applicable(const Group& g, const std::string& topology_problem) 
 }
 
 Json cell_of(const Group& g, int size, const std::vector<GroupRun>& runs, const Matrix& m, bool first_size) {
-  Json c = cell_keys(g, size, m.loss_percent);
+  Json c = cell_keys(g, size, m.loss_percent, m.delay_ms);
   c["status"] = "ok";
   c["reason"] = "";
   // On one host both ends read one clock: the measured offset is shown, not applied (it is
@@ -419,10 +421,20 @@ Json cell_of(const Group& g, int size, const std::vector<GroupRun>& runs, const 
   for (const auto& r : runs) offset += r.offset_us / static_cast<double>(runs.size());
   const double applied = g.topology == "two_ns" ? offset : 0.0;
   Json latency = Json::array();
-  double oneway_spread = 0, rtt_spread = 0, writer_cpu = 0, reader_cpu = 0, wall = 0;
+  auto percent = [](const SizeResult::Cpu& used) {
+    return Json{{"writer", used.wall_s > 0 ? 100 * used.writer_s / used.wall_s : 0.0},
+                {"reader", used.wall_s > 0 ? 100 * used.reader_s / used.wall_s : 0.0}};
+  };
+  auto range = [](const std::vector<double>& v) {
+    return v.size() > 1 ? *std::max_element(v.begin(), v.end()) - *std::min_element(v.begin(), v.end()) : 0.0;
+  };
+  const double headline = m.headline_rate();
+  Json cpu_at_headline, spread_at_headline;
   for (double rate : m.rates_hz) {
     std::vector<double> oneway, rtt;
     long sent = 0, received = 0;
+    double oneway_spread = 0, rtt_spread = 0;
+    SizeResult::Cpu cpu;
     std::vector<double> p50s_oneway, p50s_rtt;
     for (const auto& r : runs) {
       const SizeResult& s = r.sizes.at(size);
@@ -437,13 +449,14 @@ Json cell_of(const Group& g, int size, const std::vector<GroupRun>& runs, const 
       rtt.insert(rtt.end(), rt_us.begin(), rt_us.end());
       sent += s.sent.count(rate) ? s.sent.at(rate) : 0;
       received += s.received.count(rate) ? s.received.at(rate) : 0;
+      if (s.cpu.count(rate)) {
+        const auto& c1 = s.cpu.at(rate);
+        cpu = {cpu.writer_s + c1.writer_s, cpu.reader_s + c1.reader_s, cpu.wall_s + c1.wall_s};
+      }
     }
-    if (runs.size() > 1) {
-      oneway_spread = std::max(oneway_spread, *std::max_element(p50s_oneway.begin(), p50s_oneway.end()) -
-                                                  *std::min_element(p50s_oneway.begin(), p50s_oneway.end()));
-      rtt_spread = std::max(rtt_spread, *std::max_element(p50s_rtt.begin(), p50s_rtt.end()) -
-                                            *std::min_element(p50s_rtt.begin(), p50s_rtt.end()));
-    }
+    // Between chunks of each run, and between the runs.
+    oneway_spread = std::max(oneway_spread, range(p50s_oneway));
+    rtt_spread = std::max(rtt_spread, range(p50s_rtt));
     // Late: a sample that arrives after the next one is due (one-way latency over the period).
     long late = 0;
     if (rate > 0)
@@ -454,12 +467,19 @@ Json cell_of(const Group& g, int size, const std::vector<GroupRun>& runs, const 
                        {"sent", sent},
                        {"received", received},
                        {"lost", std::max(0L, sent - received)},
-                       {"late", late}});
+                       {"late", late},
+                       {"cpu_percent", percent(cpu)},
+                       {"spread", {{"one_way_p50_us", oneway_spread}, {"round_trip_p50_us", rtt_spread}}}});
+    if (rate == headline || cpu_at_headline.is_null()) {
+      cpu_at_headline = latency.back()["cpu_percent"];
+      spread_at_headline = latency.back()["spread"];
+    }
   }
   c["latency"] = latency;
   long f_sent = 0, f_recv = 0;
   double f_bytes = 0, f_window = 0, f_wall = 0;
   std::vector<double> rates_per_run;
+  SizeResult::Cpu flood_cpu;
   for (const auto& r : runs) {
     const SizeResult& s = r.sizes.at(size);
     f_sent += s.flood_sent;
@@ -468,9 +488,8 @@ Json cell_of(const Group& g, int size, const std::vector<GroupRun>& runs, const 
     f_window += s.flood_window_s;
     f_wall += s.flood_wall_s;
     if (s.flood_window_s > 0) rates_per_run.push_back(static_cast<double>(s.flood_received) / s.flood_window_s);
-    writer_cpu += s.writer_cpu_s;
-    reader_cpu += s.reader_cpu_s;
-    wall += s.wall_s;
+    flood_cpu = {flood_cpu.writer_s + s.flood_cpu.writer_s, flood_cpu.reader_s + s.flood_cpu.reader_s,
+                 flood_cpu.wall_s + s.flood_cpu.wall_s};
   }
   c["throughput"] = m.throughput_seconds > 0 && f_window > 0
                         ? Json{{"samples_per_s", static_cast<double>(f_recv) / f_window},
@@ -478,10 +497,12 @@ Json cell_of(const Group& g, int size, const std::vector<GroupRun>& runs, const 
                                {"sent", f_sent},
                                {"received", f_recv},
                                {"lost", std::max(0L, f_sent - f_recv)},
-                               {"seconds", f_wall}}
+                               {"seconds", f_wall},
+                               {"cpu_percent", percent(flood_cpu)}}
                         : Json(nullptr);
-  c["cpu_percent"] = {{"writer", wall > 0 ? 100 * writer_cpu / wall : 0.0},
-                      {"reader", wall > 0 ? 100 * reader_cpu / wall : 0.0}};
+  // What the loop costs: the CPU at the summary's rate (each rate's is in its entry, the
+  // saturation's in throughput).
+  c["cpu_percent"] = cpu_at_headline;
   c["clock_offset_us"] = offset;
   c["clock_offset_applied"] = applied != 0.0;
   // Recovery and the QoS events are measured once per group: on its first size's cell.
@@ -492,13 +513,9 @@ Json cell_of(const Group& g, int size, const std::vector<GroupRun>& runs, const 
   if (first_size && g.qos.liveliness_lease_s > 0)
     events["liveliness"] = {{"lease_s", g.qos.liveliness_lease_s}, {"detected_after_s", runs.front().liveliness_after}};
   c["events"] = events;
-  double tp_spread = 0;
-  if (rates_per_run.size() > 1)
-    tp_spread = *std::max_element(rates_per_run.begin(), rates_per_run.end()) -
-                *std::min_element(rates_per_run.begin(), rates_per_run.end());
-  // The headline rate's spreads (the first rate's entry is where the summary reads).
-  c["spread"] = {
-      {"one_way_p50_us", oneway_spread}, {"round_trip_p50_us", rtt_spread}, {"throughput_samples_per_s", tp_spread}};
+  // The summary's rate's spreads (what --baseline compares), and the throughput's between runs.
+  c["spread"] = spread_at_headline;
+  c["spread"]["throughput_samples_per_s"] = range(rates_per_run);
   c["vendor_tool"] = nullptr;
   c["ratio"] = nullptr;
   return c;
@@ -534,6 +551,7 @@ Json run_bench(const RunOptions& o) {
                    {"rates_hz", m.rates_hz},
                    {"topologies", m.topologies},
                    {"loss_percent", m.loss_percent},
+                   {"delay_ms", m.delay_ms},
                    {"outage_s", m.outage_s},
                    {"seconds_per_phase", m.seconds_per_phase},
                    {"throughput_seconds", m.throughput_seconds},
@@ -553,7 +571,7 @@ Json run_bench(const RunOptions& o) {
     std::string topology_problem;
     if (topology == "two_ns") {
       if (NetnsPair::possible(topology_problem)) try {
-          ns = std::make_unique<NetnsPair>();
+          ns = std::make_unique<NetnsPair>(m.delay_ms);
           ns->set_loss(m.loss_percent);
         } catch (const std::exception& e) {
           topology_problem = e.what();
@@ -567,7 +585,7 @@ Json run_bench(const RunOptions& o) {
           const std::string why = not_applicable(g, topology_problem);
           if (!why.empty()) {
             for (int size : m.sizes) {
-              Json c = cell_keys(g, size, m.loss_percent);
+              Json c = cell_keys(g, size, m.loss_percent, m.delay_ms);
               c["status"] = "not_applicable";
               c["reason"] = why;
               cells.push_back(c);
@@ -597,7 +615,7 @@ Json run_bench(const RunOptions& o) {
           for (std::size_t i = 0; i < m.sizes.size(); ++i) {
             const int size = m.sizes[i];
             if (!failure.empty()) {
-              Json c = cell_keys(g, size, m.loss_percent);
+              Json c = cell_keys(g, size, m.loss_percent, m.delay_ms);
               c["status"] = "failed";
               c["reason"] = failure;
               cells.push_back(c);
