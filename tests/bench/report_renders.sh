@@ -26,26 +26,13 @@ give_up() {
   exit 1
 }
 
-chromium_bin=$(command -v chromium || command -v chromium-browser || true)
+. "$(dirname "$0")/../scripts/headless_chrome.sh"
 [ -n "$chromium_bin" ] || give_up "chromium is not installed (tools/setup/install_deps.sh)"
 command -v python3 >/dev/null || give_up "python3 is not installed"
 [ -s "$report/report.html" ] || give_up "no $report/report.html"
 [ -s "$report/run.json" ] || give_up "no $report/run.json"
 
-profiles=()
-cleanup() { for p in "${profiles[@]}"; do rm -rf "$p"; done; }
-trap cleanup EXIT
 mkdir -p "$out" || give_up "cannot create $out"
-chrome() {  # chrome ARGS... URL: one headless run with a fresh profile
-  local profile
-  profile=$(mktemp -d "${TMPDIR:-/tmp}/plexus-bench-chromium.XXXXXX")
-  profiles+=("$profile")
-  timeout 120 "$chromium_bin" --headless --no-sandbox --disable-gpu --disable-quic --no-first-run \
-    --disable-background-networking --disable-component-update --disable-sync --disable-extensions \
-    --disable-default-apps --no-default-browser-check --mute-audio --no-proxy-server \
-    --host-resolver-rules="MAP * ~NOTFOUND" --user-data-dir="$profile" \
-    --virtual-time-budget=10000 "$@" 2>>"$out/chromium.log"
-}
 
 # What the page should show, from run.json.
 counts=$(python3 -c '

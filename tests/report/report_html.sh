@@ -19,21 +19,8 @@ plexus=$1 scenario=$2 out=$3 expect_rows=$4 paper_figures=$5
 shift 5
 fail() { echo "FAIL: $*"; exit 1; }
 
-chromium_bin=$(command -v chromium || true)
+. "$(dirname "$0")/../scripts/headless_chrome.sh"
 [ -n "$chromium_bin" ] || fail "chromium is not installed (tools/setup/install_deps.sh)"
-profiles=()
-cleanup() { for p in "${profiles[@]}"; do rm -rf "$p"; done; }
-trap cleanup EXIT
-chrome() {  # chrome ARGS... URL: one headless run with a fresh profile
-  local profile
-  profile=$(mktemp -d "${TMPDIR:-/tmp}/plexus-report-chromium.XXXXXX")
-  profiles+=("$profile")
-  timeout 120 "$chromium_bin" --headless --no-sandbox --disable-gpu --disable-quic --no-first-run \
-    --disable-background-networking --disable-component-update --disable-sync --disable-extensions \
-    --disable-default-apps --no-default-browser-check --mute-audio --no-proxy-server \
-    --host-resolver-rules="MAP * ~NOTFOUND" --user-data-dir="$profile" \
-    --virtual-time-budget=10000 "$@" 2>>"$out/chromium.log"
-}
 
 rm -rf "$out"
 mkdir -p "$out"
