@@ -72,6 +72,17 @@ def main():
                 fail(f"{cid}: no {key}")
         if c["topology"] == "two_ns" and c["size"] == m["sizes"][0] and not c.get("recovery"):
             fail(f"{cid}: no recovery figure across the namespaces")
+        # The QoS events, where the profile sets them (on the group's first size): the time from
+        # the writer's last sample to the event, between the period and a loose upper bound.
+        for event, limit in (("deadline", "period_s"), ("liveliness", "lease_s")):
+            e = (c.get("events") or {}).get(event)
+            if not e:
+                continue
+            after, bound = e.get("detected_after_s"), e[limit]
+            if after is None:
+                fail(f"{cid}: no {event} event within its wait")
+            elif not 0.9 * bound <= after <= 2 * bound + 1.0:
+                fail(f"{cid}: {event} detected after {after:.3f} s, {limit} {bound} s")
         same = c["writer_dds"] == c["reader_dds"]
         if m["vendor_tools"] and same and c["topology"] == "one_host":
             v = c.get("vendor_tool") or {}

@@ -9,7 +9,8 @@ set -u
 plexus=$1 out=$2 domain=$3
 here=$(cd "$(dirname "$0")" && pwd)
 [ "$(id -u)" -eq 0 ] || { echo "needs root for network namespaces"; exit 77; }
-rm -rf "$out"
+rm -rf "$out" "$out.log"
+mkdir -p "$(dirname "$out")"
 "$plexus" bench --pairs fast-cyclone --transports udp --profiles sensor --sizes 64 --rates 1000 --seconds 1 \
   --topologies two_ns --loss 10 --delay-ms 5 --no-vendor-tools --domain "$domain" -o "$out" > "$out.log" 2>&1
 rc=$?

@@ -9,14 +9,15 @@ set -u
 plexus=$1 out=$2 domain=$3
 here=$(cd "$(dirname "$0")" && pwd)
 rm -rf "$out"
-"$plexus" bench --preset quick --domain "$domain" -o "$out/run" > "$out.log" 2>&1
+mkdir -p "$out"
+"$plexus" bench --preset quick --domain "$domain" -o "$out/run" > "$out/bench.log" 2>&1
 rc=$?
 [ "$rc" -eq 0 ] || {
-  tail -20 "$out.log"
+  tail -20 "$out/bench.log"
   echo "FAIL: plexus bench --preset quick exited $rc"
   exit 1
 }
-cat "$out.log"
+cat "$out/bench.log"
 python3 "$here/check_run.py" "$out/run/run.json" || exit 1
 "$here/report_renders.sh" "$out/run" "$out/render" || exit 1
 rows=$(($(wc -l < "$out/run/cells.csv") - 1))

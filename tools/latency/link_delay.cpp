@@ -85,6 +85,7 @@ struct Ring {
 
 int main(int argc, char** argv) {
   CLI::App app{"link_delay: relays frames between two interfaces after a fixed delay (docs/qos-bench.md)"};
+  app.set_version_flag("--version", std::string("link_delay") + " " + PLEXUS_VERSION);
   std::string a, b;
   double delay_ms = 5;
   std::size_t slots = 8192;

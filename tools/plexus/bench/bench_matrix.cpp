@@ -77,7 +77,7 @@ Matrix preset(const std::string& name) {
   if (name == "quick") {
     m.pairs = parse_pairs({"fast-fast", "cyclone-cyclone"}, "--preset");
     m.transports = {"udp"};
-    m.profiles = {"latency"};
+    m.profiles = {"command", "health"};  // a deadline and a liveliness lease: both events measured
     m.sizes = {64, 4096};
     m.rates_hz = {1000};
     m.topologies = {"one_host"};
@@ -88,7 +88,7 @@ Matrix preset(const std::string& name) {
   if (name == "full") {
     m.pairs = parse_pairs({"fast-fast", "cyclone-cyclone", "fast-cyclone"}, "--preset");
     m.transports = {"udp", "shm"};
-    m.profiles = {"sensor", "latency", "command"};
+    m.profiles = {"sensor", "latency", "command", "health"};  // health: a liveliness lease
     m.sizes = {64, 4096, 65536, 1048576};
     m.rates_hz = {1000, 100, 0};
     m.topologies = {"one_host", "two_ns"};
