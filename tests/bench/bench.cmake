@@ -5,7 +5,9 @@ set(BENCH_RUNS ${CMAKE_BINARY_DIR}/test-runs/bench)
 add_test(NAME bench.quick COMMAND ${CMAKE_CURRENT_LIST_DIR}/quick.sh $<TARGET_FILE:plexus> ${BENCH_RUNS}/quick 21)
 add_test(NAME bench.baseline_flags_planted_delay
          COMMAND ${CMAKE_CURRENT_LIST_DIR}/baseline.sh $<TARGET_FILE:plexus> ${BENCH_RUNS}/baseline 22)
-set_tests_properties(bench.quick bench.baseline_flags_planted_delay PROPERTIES LABELS "bench;multiprocess" TIMEOUT 300)
+# Not beside each other: each is the other's load.
+set_tests_properties(bench.quick bench.baseline_flags_planted_delay PROPERTIES LABELS "bench;multiprocess" TIMEOUT 300
+                     RESOURCE_LOCK plexus_bench)
 add_test(NAME bench.loss_two_ns COMMAND ${CMAKE_CURRENT_LIST_DIR}/loss.sh $<TARGET_FILE:plexus> ${BENCH_RUNS}/loss 23)
 set_tests_properties(bench.loss_two_ns PROPERTIES LABELS "bench;netns;multiprocess" TIMEOUT 300 RUN_SERIAL TRUE
                      SKIP_RETURN_CODE 77)

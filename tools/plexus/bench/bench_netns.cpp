@@ -63,6 +63,15 @@ bool NetnsPair::possible(std::string& why) {
 }
 
 NetnsPair::NetnsPair(double delay_ms) {
+  try {
+    build(delay_ms);
+  } catch (...) {
+    remove();  // a half-built pair: no destructor runs for it
+    throw;
+  }
+}
+
+void NetnsPair::build(double delay_ms) {
   remove_stale();
   const std::string tag = std::to_string(getpid());
   ns1_ = std::string(kPrefix) + "1_" + tag;
@@ -100,8 +109,11 @@ NetnsPair::NetnsPair(double delay_ms) {
   set_loss(0);
 }
 
-NetnsPair::~NetnsPair() {
+NetnsPair::~NetnsPair() { remove(); }
+
+void NetnsPair::remove() {
   if (!created_) return;
+  created_ = false;
   if (relay_ > 0) {
     kill(relay_, SIGTERM);
     wait_program(relay_);

@@ -40,6 +40,8 @@ class NetnsPair {
   std::vector<std::string> exec_prefix(int end) const;
 
  private:
+  void build(double delay_ms);
+  void remove();  ///< the relay and the namespaces, once
   void nft(const std::string& ns, const std::string& rules) const;
   std::string ns1_, ns2_, mid_, veth1_, veth2_;
   bool created_ = false;
