@@ -16,10 +16,12 @@
 #include "bridge_routes.hpp"
 #include "plexus/base/clock.hpp"
 #include "plexus/base/logging.hpp"
+#include "plexus/distributed/lockstep.hpp"
 #include "plexus/distributed/realtime.hpp"
 #include "plexus/link/device_clock.hpp"
 #include "plexus/link/frame.hpp"
 #include "plexus/link/protocol.hpp"
+#include "plexus/runtime/periodic_loop.hpp"
 
 namespace plexus::bridge {
 namespace {
@@ -44,7 +46,7 @@ struct SharedCounters {
   std::atomic<uint64_t> frames_in{0}, frames_out{0}, crc_errors{0}, framing_errors{0}, oversize{0}, resyncs{0},
       bytes_discarded{0}, rejected_frames{0}, reconnects{0}, disconnects{0}, stale_commands{0}, stop_frames{0},
       tx_errors{0}, commands_forwarded{0}, commands_refused{0}, unsynced_frames{0}, clock_exchanges{0},
-      clock_restarts{0};
+      clock_restarts{0}, cycle_syncs{0};
   std::atomic<double> latency_p50_us{0}, latency_p99_us{0}, latency_max_us{0}, clock_offset_s{0}, clock_drift_ppm{0},
       clock_uncertainty_us{0};
 };
@@ -75,12 +77,21 @@ struct Bridge::Impl {
   link::DeviceClock clock;
   const int64_t epoch_wall = wall_time_ns();
 
+  // Cycle sync (docs/bridges.md, "Cycle sync"): the run's grid, step k at grid_t0 + k
+  // grid_step (CLOCK_REALTIME ns). Set once (the command thread, from the start signal), then read.
+  std::atomic<int64_t> grid_t0{0};
+  const int64_t grid_step_ns;
+  rt::Subscriber<msg::ClockStep> start;  // the launcher's start signal (cycle_sync with start_signal)
+
   // Command thread only.
   scenario::SignalSample command;
 
   Impl(scenario::Scenario& sc, rt::Participant& p, const rt::QosProfiles& profiles, std::unique_ptr<DeviceLink> l,
        BridgeOptions o)
-      : routes(make_routes(sc, p, profiles)), link(std::move(l)), opt(std::move(o)) {
+      : routes(make_routes(sc, p, profiles)),
+        link(std::move(l)),
+        opt(std::move(o)),
+        grid_step_ns(std::llround(sc.step * 1e9)) {
     if (routes.command.layout->fields.size() > kMaxCommandFields)
       throw InputError(routes.command.spec->name + ": more command fields than a frame carries");
     if (opt.device_time)
@@ -91,6 +102,13 @@ struct Bridge::Impl {
                            " bytes at most, the time included)");
     heartbeat = p.publisher<msg::Heartbeat>(distributed::health_topic(opt.service), profiles.get("health"));
     hb = distributed::heartbeat_of(opt.service, routes.robot);
+    if (opt.cycle_sync && !opt.device_time) throw InputError(opt.service + ": cycle_sync needs device_time");
+    // The grid: the launcher's start, or (started by hand) whole seconds of the wall clock, as
+    // a realtime service started by hand steps (distributed/realtime.cpp).
+    if (opt.cycle_sync && opt.start_signal)
+      start = p.subscriber<msg::ClockStep>(distributed::kClockTopic, profiles.get("lockstep"));
+    else if (opt.cycle_sync)
+      grid_t0.store((wall_time_ns() / kSecond + 1) * kSecond, std::memory_order_relaxed);
     int fds[2];
     if (pipe2(fds, O_NONBLOCK | O_CLOEXEC) != 0)
       throw std::runtime_error(std::string("pipe2: ") + std::strerror(errno));
@@ -166,6 +184,21 @@ struct Bridge::Impl {
     }
     data_time = epoch_wall + static_cast<int64_t>(std::llround(host_s * 1e9));
     return true;
+  }
+
+  /// Cycle sync: the run's step nearest now (negative before the start) and its time in the
+  /// device's clock, and the step's length in it (the host's step times the device clock's
+  /// rate). Requires a valid clock map.
+  void send_cycle(int64_t t0) {
+    const int64_t since = wall_time_ns() - t0;
+    const int64_t k =
+        since >= 0 ? (since + grid_step_ns / 2) / grid_step_ns : -((-since + grid_step_ns / 2) / grid_step_ns);
+    const double host_s = static_cast<double>(t0 - epoch_wall + k * grid_step_ns) * 1e-9;
+    uint8_t payload[link::kCyclePayload];
+    link::put_f64_le(payload, clock.to_device(host_s));
+    link::put_f64_le(payload + 8, static_cast<double>(grid_step_ns) * 1e-9 * (1.0 + clock.drift_ppm() * 1e-6));
+    link::put_f64_le(payload + 16, static_cast<double>(k));
+    if (send_frame(link::kCycleId, payload, sizeof payload)) c.cycle_syncs.fetch_add(1, std::memory_order_relaxed);
   }
 
   void send_stop() {
@@ -281,7 +314,8 @@ struct Bridge::Impl {
     const int64_t timeout = ns_of(opt.link_timeout_s), retry = ns_of(opt.retry_s);
     int64_t expires = INT64_MIN;  // of the command held; none yet
     int64_t now = monotonic_ns();
-    int64_t next_stop_check = now + period, next_open = now, next_stats = now + kSecond, next_sync = now;
+    int64_t next_stop_check = now + period, next_open = now, next_stats = now + kSecond, next_sync = now,
+            next_cycle = now;
     const int64_t sync_period = ns_of(1.0 / opt.time_sync_hz);
     bool opened_before = false;
     std::string error;
@@ -302,6 +336,8 @@ struct Bridge::Impl {
       pollfd fds[2] = {{pipe_r, POLLIN, 0}, {link->fd(), POLLIN, 0}};
       int64_t wake = std::min(next_stop_check, next_stats);
       if (opt.device_time && link->is_open()) wake = std::min(wake, next_sync);
+      const bool cycle_known = opt.cycle_sync && link->is_open() && clock.valid() && grid_t0.load() > 0;
+      if (cycle_known) wake = std::min(wake, next_cycle);
       if (!link->is_open()) wake = std::min(wake, next_open);
       const int wait_ms = static_cast<int>(std::clamp<int64_t>((wake - now + 999'999) / 1'000'000, 0, 100));
       const int ready = ::poll(fds, link->is_open() ? 2 : 1, wait_ms);
@@ -320,6 +356,13 @@ struct Bridge::Impl {
       if (opt.device_time && link->is_open() && now >= next_sync) {
         send_time_request();
         next_sync = std::max(next_sync + sync_period, now);
+      }
+      // The cycle, as soon as the clock is mapped and the run's start is known (before the
+      // start: the device holds its plant until step 0), then twice a second (a device
+      // re-phases on each: its clock drifts, and the map improves with every exchange).
+      if (cycle_known && link->is_open() && now >= next_cycle) {
+        send_cycle(grid_t0.load(std::memory_order_relaxed));
+        next_cycle = now + kSecond / 2;
       }
       if (now >= next_stop_check) {
         next_stop_check = std::max(next_stop_check + period, now - period + 1);
@@ -388,6 +431,7 @@ struct Bridge::Impl {
     s.clock_offset_s(c.clock_offset_s.load(std::memory_order_relaxed));
     s.clock_drift_ppm(c.clock_drift_ppm.load(std::memory_order_relaxed));
     s.clock_uncertainty_us(c.clock_uncertainty_us.load(std::memory_order_relaxed));
+    s.cycle_syncs(get(c.cycle_syncs));
     return s;
   }
 
@@ -417,15 +461,31 @@ Bridge::~Bridge() = default;
 BridgeReport Bridge::run(const std::atomic<bool>& stop) {
   Impl& m = *impl_;
   const int64_t start = monotonic_ns();
+  // This thread forwards the commands; the I/O thread, started below, inherits its settings.
+  rt::LoopOptions threads;
+  threads.priority = m.opt.priority;
+  threads.cpu = m.opt.cpu;
+  (void)rt::apply_thread_settings(threads);  // a refusal is warned, and the bridge runs without it
   std::atomic<bool> io_stop{false};
   std::thread io([&] { m.io_loop(io_stop); });
   int64_t next_beat = 0;
+  // CONFIGURING until the device first answers (with device time: its clock is mapped), so
+  // that plexus launch starts the run with the device there; then RUNNING while valid frames
+  // arrive, DEGRADED while the device is absent or silent. A change is announced at once.
+  bool was_up = false, ever_up = false;
   while (!stop.load(std::memory_order_relaxed)) {
     m.routes.command.subscriber->wait(50'000'000);
     m.forward_commands();
-    if (const int64_t now = monotonic_ns(); now >= next_beat) {
-      m.beat(m.c.up.load(std::memory_order_relaxed) ? msg::SERVICE_RUNNING : msg::SERVICE_DEGRADED);
+    if (m.start && m.grid_t0.load(std::memory_order_relaxed) == 0) {
+      msg::ClockStep go;
+      if (m.start.take(go) && go.sim_time_ns() > 0) m.grid_t0.store(go.sim_time_ns(), std::memory_order_relaxed);
+    }
+    const bool up = m.c.up.load(std::memory_order_relaxed);
+    ever_up = ever_up || up;
+    if (const int64_t now = monotonic_ns(); now >= next_beat || up != was_up) {
+      m.beat(up ? msg::SERVICE_RUNNING : ever_up ? msg::SERVICE_DEGRADED : msg::SERVICE_CONFIGURING);
       next_beat = now + kSecond;
+      was_up = up;
     }
   }
   io_stop = true;

@@ -37,6 +37,16 @@ struct BridgeOptions {
   double retry_s = 0.5;         ///< between attempts to open an absent device
   bool device_time = false;     ///< the device stamps its samples (docs/bridges.md, "Device time")
   double time_sync_hz = 50.0;   ///< time exchanges per second, with device_time
+  /// With device_time: send the run's cycle in the device's clock (docs/bridges.md, "Cycle
+  /// sync"). The cycle is the scenario's base step on the run's grid: from the launcher's
+  /// start signal with `start_signal`, else on whole wall-clock seconds, as a service started
+  /// by hand steps.
+  bool cycle_sync = false;
+  bool start_signal = false;  ///< started by plexus launch: the grid's origin is its start signal
+  /// Its I/O and command threads: SCHED_FIFO priority (0: normal scheduling) and CPU (-1: any),
+  /// the robot's `priority` and `cpu` (a bridge on a 1 kHz loop is part of the loop).
+  int priority = 0;
+  int cpu = -1;
 };
 
 /// What the bridge did, for its exit line.

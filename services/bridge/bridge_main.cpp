@@ -58,8 +58,9 @@ int main(int argc, char** argv) {
   scenario::ServiceDdsOptions net;
   std::string device, bind, peer;
   long baud = 0;
+  int priority = 0, cpu = -1;
   double link_timeout = 0, retry = 0, timeout = 0, time_sync_hz = 0;
-  bool device_time = false;
+  bool device_time = false, cycle_sync = false;
   std::vector<std::string> sets;
   bool start_signal = false;
   scenario::StandaloneSpec alone;
@@ -84,11 +85,17 @@ int main(int argc, char** argv) {
   app.add_flag("--device-time", device_time,
                "The device stamps its samples: map its clock to the host's by two-way exchanges (docs/bridges.md)");
   app.add_option("--time-sync-hz", time_sync_hz, "With --device-time: exchanges per second, 1 .. 200 (default 50)");
+  app.add_flag("--cycle-sync", cycle_sync,
+               "With --device-time: send the device the run's cycle in its clock, to step on (docs/bridges.md)");
   net.add_to(app);
   app.add_option("--mode", mode, "realtime only (a bridge follows its device's clock)")
       ->check(CLI::IsMember({"realtime", "lockstep"}));
-  app.add_flag("--start-signal", start_signal, "Accepted for plexus launch; a bridge starts at once");
+  app.add_flag("--start-signal", start_signal,
+               "Started by plexus launch: a bridge starts at once; the run's cycle (--cycle-sync) is its start's");
   app.add_option("--timeout", timeout, "Accepted for plexus launch (lockstep only)");
+  app.add_option("--priority", priority, "Realtime: SCHED_FIFO priority of its threads, 1 .. 99 (0: normal scheduling)")
+      ->check(CLI::Range(0, 99));
+  app.add_option("--cpu", cpu, "Realtime: pin its threads to this CPU");
   app.add_option("--log-level", log_level, "trace, debug, info, warn, error, critical or off");
   try {
     app.parse(argc, argv);
@@ -105,10 +112,10 @@ int main(int argc, char** argv) {
     scenario::Scenario sc;
     if (!part_file.empty()) {
       if (!device.empty() || baud || !bind.empty() || !peer.empty() || retry > 0 || link_timeout > 0 || device_time ||
-          time_sync_hz > 0)
+          time_sync_hz > 0 || cycle_sync)
         throw InputError(
             "--part: the link comes from the part's `source:`; drop "
-            "--device/--baud/--bind/--peer/--retry/--link-timeout/--device-time/--time-sync-hz");
+            "--device/--baud/--bind/--peer/--retry/--link-timeout/--device-time/--time-sync-hz/--cycle-sync");
       std::vector<scenario::Override> overrides;
       for (const auto& s : sets) overrides.push_back(scenario::parse_override(s));
       sc = scenario::load_scenario(part_file, overrides, {.partial = true});
@@ -140,13 +147,14 @@ int main(int argc, char** argv) {
       try {
         const YAML::Node own = alone.params_file.empty() ? YAML::Node() : YAML::LoadFile(alone.params_file)["source"];
         if (own && own.IsMap())
-          for (const char* key : {"frames", "device_time", "time_sync_hz"})
+          for (const char* key : {"frames", "device_time", "time_sync_hz", "cycle_sync"})
             if (own[key]) src[key] = own[key];
       } catch (const YAML::Exception&) {
         // load_standalone reports the file's error with its line
       }
       if (device_time) src["device_time"] = true;
       if (app.count("--time-sync-hz")) src["time_sync_hz"] = time_sync_hz;
+      if (cycle_sync) src["cycle_sync"] = true;
       alone.extra = YAML::Node(YAML::NodeType::Map);
       alone.extra["source"] = src;
       sc = scenario::load_standalone(alone, sets, true);
@@ -171,7 +179,11 @@ int main(int argc, char** argv) {
                       .link_timeout_s = src.link_timeout_s,
                       .retry_s = src.retry_s,
                       .device_time = src.device_time,
-                      .time_sync_hz = src.time_sync_hz});
+                      .time_sync_hz = src.time_sync_hz,
+                      .cycle_sync = src.cycle_sync,
+                      .start_signal = start_signal,
+                      .priority = priority,
+                      .cpu = cpu});
     const auto r = b.run(g_stop);
     nlohmann::ordered_json j{{"service", po.name},
                              {"run_s", r.run_s},

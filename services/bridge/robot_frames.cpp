@@ -63,7 +63,8 @@ std::shared_ptr<const link::FrameTable> frame_table(const std::vector<scenario::
     char hex[8];
     std::snprintf(hex, sizeof hex, "0x%02X", id);
     if (link::is_link_id(id))
-      throw InputError(d.where + ": id " + hex + " is the link's own (STOP 0x8F, time exchange 0x0E and 0x8E)");
+      throw InputError(d.where + ": id " + hex +
+                       " is the link's own (STOP 0x8F, time exchange 0x0E and 0x8E, cycle 0x8D)");
     if ((id >= 0x80) != d.to_device)
       throw InputError(d.where + ": id " + hex + ": " + (d.to_device ? "host -> device" : "device -> host") +
                        " ids are " + (d.to_device ? "0x80 .. 0xFF" : "0x00 .. 0x7F"));

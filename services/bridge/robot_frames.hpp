@@ -34,7 +34,7 @@ struct RobotFrames {
 RobotFrames robot_frames(const scenario::Scenario& sc, const scenario::StepExecutor& wiring, const std::string& who);
 
 /// A source's declared frames as a table: throws InputError naming the entry for an id of
-/// the link's own (STOP 0x8F, the time exchange 0x0E and 0x8E), a device -> host id at or
+/// the link's own (STOP 0x8F, the time exchange 0x0E and 0x8E, the cycle 0x8D), a device -> host id at or
 /// above 0x80 or a host -> device id below it, or a payload longer than a frame
 /// (`extra_bytes`: the device time, with device_time). Empty: the built-in table.
 std::shared_ptr<const link::FrameTable> frame_table(const std::vector<scenario::DeclaredFrame>& frames,

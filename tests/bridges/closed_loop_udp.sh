@@ -10,20 +10,21 @@
 #               one classifier decision and one GPS period (0.25 + 0.05 s, its resolution),
 #               and the classifier's accuracy within 10 %;
 #   arm         paper 004's arm at 1 kHz (arm_vdc_ekf.yaml as repro.realtime.arm_vdc_ekf_1khz_*
-#               runs it: reference, EKF and VDC in one process; the bridge with device time):
-#               the issue's targets, both joints settled within Table 4's band (<= 0.36 /
-#               0.37 s) and the RMS errors within 20 % of plant_simulator's, are MISSED and
-#               reported, not asserted (docs/bridges.md, "Closed loops": a link's two hops take
-#               0.5-0.7 ms of the 1 ms period, and the loop gets a period more delay than the
-#               simulator's, which this VDC does not tolerate). Asserted: the loop ran through
-#               the bridge (at least 90 % of the run's commands obeyed, no sample refused) and
-#               the arm stayed bounded (RMS < 100 mrad).
+#               runs it: reference, EKF and VDC in one process; the bridge with device time
+#               and the cycle sync, docs/bridges.md "Cycle sync"; every loop of both runs at
+#               SCHED_FIFO 60, the emulator's too, "Closed loops"): both joints settled within
+#               Table 4's band (<= 0.36 / 0.37 s) in both runs, and the RMS errors within 20 %
+#               of plant_simulator's; also the loop ran through the bridge (at least 90 % of
+#               the run's commands obeyed, no sample refused) and the emulator followed the
+#               cycle (a cycle frame every 0.5 s, none refused).
 # The robot's source is udp_bridge on loopback (ports 40000 + 10*DOMAIN + {0,1}); `plexus
 # launch` starts the bridge, and the emulator (unpaced, `--hold-until-command`: the plant holds
 # its initial state until the first command, as plant_simulator's starts with the run) runs
 # the robot's part of the scenario that the launch wrote. Both runs must exit 0 (or 1 with
 # only the paper's expectations failing) and the emulator must exit 0 having obeyed commands.
-# Prints both runs' figures and their ratios.
+# A run in which the machine stalled one of the loops (woke more than stall_us late) is run
+# again, three runs at most (the arm; the skid-steer's figures do not see a stall). Prints both
+# runs' figures and their ratios.
 set -u
 family=$1 plexus=$2 bin=$3 vendor=$4 domain=$5 out=$6 deploy=$7
 case $family in
@@ -36,17 +37,25 @@ case $family in
     # decision and one GPS period is the measurement's resolution, not a difference of the
     # sources (a clean-clone CI of 704d00e measured 0.99 s through the bridge against 1.25 s).
     checks="reconvergence_time_switch1_s:0.10:0.30 classifier_accuracy:0.10"
-    reported_only=0
     device_time=""
+    emulator_args=()
+    stall_us=""  # a loop of 20 Hz GPS and 4 Hz decisions: a stall does not show
     scenario=$deploy/scenarios/icr_terrain_switch_prior.yaml ;;
   arm)
     robot=arm
     args=(--set step=0.001 --set clock.input_deadline_periods=20 --set services.reference.process=control
           --set services.observer.process=control --set services.controller.process=control
-          --set services.observer.blind_after_s=0.01 --set "expectations={}")
+          --set services.observer.blind_after_s=0.01 --set "expectations={}"
+          --set services.reference.priority=60 --set services.observer.priority=60
+          --set services.controller.priority=60 --set robots.arm.priority=60)
+    emulator_args=(--priority 60)
     checks="rms_e1_mrad:0.20 rms_e2_mrad:0.20"
-    reported_only=1
-    device_time=", device_time: true"
+    device_time=", device_time: true, cycle_sync: true"
+    # A loop that woke 10 periods late has dropped steps (the realtime host and the emulator
+    # catch up at most 10): not a figure of the loop. Seen without SCHED_FIFO (the priorities
+    # above) in about 1 run of 4, once harmful: the controller's host 18.6 ms late at 3.8 s,
+    # the arm 17 mrad off for 0.3 s and the run's settling lost; with them, 1 in 8 (13 ms).
+    stall_us=10000
     scenario=$deploy/scenarios/arm_vdc_ekf.yaml ;;
   *) echo "closed_loop_udp.sh: FAMILY: skid_steer or arm"; exit 2 ;;
 esac
@@ -70,29 +79,54 @@ finish() {  # finish NAME: waits for the launch; exit 0 or 1 (an expectation) ac
   [ -s "$out/$1.json" ] || { echo "FAIL: the $1 run printed no metrics"; tail -5 "$out/$1.err"; exit 1; }
 }
 
-# 1. The reference: plant_simulator.
-run simulator
-finish simulator
+stalled() {  # stalled NAME: true if a loop of the run woke more than stall_us late (prints it)
+  [ -n "$stall_us" ] || return 1
+  local worst
+  worst=$({ jq -r '.services[] | .jitter_max_us' "$out/$1/launch.json"
+            [ "$1" = bridge ] && jq -r '.jitter_max_us' "$out/emulator.json" | tail -1; } 2> /dev/null |
+          awk 'BEGIN { m = 0 } $1 + 0 > m { m = $1 + 0 } END { print m }')
+  awk -v w="$worst" -v s="$stall_us" 'BEGIN { exit !(w > s) }' || return 1
+  echo "the $1 run: a loop woke $(awk -v w="$worst" 'BEGIN { printf "%.1f", w / 1000 }') ms late" \
+       "(more than $((stall_us / 1000)) ms: a machine stall, not the loop's figure); run again"
+}
 
-# 2. The same through udp_bridge and the emulator.
+# 1. The reference, plant_simulator, and 2. the same through udp_bridge and the emulator. A run
+# in which the machine stalled a loop (stall_us) is not a figure of the loop: it is run again,
+# at most three times in all; a stalled run is never judged.
 pe=$((40000 + 10 * domain)) pb=$((40000 + 10 * domain + 1))
-run bridge --set "robots.$robot.source={type: udp_bridge, bind: 127.0.0.1:$pb, peer: 127.0.0.1:$pe$device_time}"
 part="$out/bridge/parts/udp_bridge_$robot.yaml"
-for _ in $(seq 1 100); do [ -s "$part" ] && break; sleep 0.05; done
-[ -s "$part" ] || { echo "FAIL: the launcher wrote no part for udp_bridge $robot"; cat "$out/bridge.err"; exit 1; }
-"$bin/device_emulator" --part "$part" --udp-bind 127.0.0.1:$pe --udp-peer 127.0.0.1:$pb --baud 0 --hold-until-command \
-  > "$out/emulator.json" 2> "$out/emulator.err" &
-emu=$!
-finish bridge
-kill -TERM $emu
-wait $emu
-emu_rc=$?
-emu=""
-[ "$emu_rc" -eq 0 ] || { echo "FAIL: the emulator exited $emu_rc"; tail -5 "$out/emulator.err"; exit 1; }
+sim_done=0 bridge_done=0
+for attempt in 1 2 3; do
+  if [ $sim_done -eq 0 ]; then
+    rm -rf "$out/simulator"
+    run simulator
+    finish simulator
+    stalled simulator || sim_done=1
+  fi
+  if [ $bridge_done -eq 0 ]; then
+    rm -rf "$out/bridge"
+    run bridge --set "robots.$robot.source={type: udp_bridge, bind: 127.0.0.1:$pb, peer: 127.0.0.1:$pe$device_time}"
+    for _ in $(seq 1 100); do [ -s "$part" ] && break; sleep 0.05; done
+    [ -s "$part" ] || { echo "FAIL: the launcher wrote no part for udp_bridge $robot"; cat "$out/bridge.err"; exit 1; }
+    "$bin/device_emulator" --part "$part" --udp-bind 127.0.0.1:$pe --udp-peer 127.0.0.1:$pb --baud 0 \
+      --hold-until-command "${emulator_args[@]}" > "$out/emulator.json" 2> "$out/emulator.err" &
+    emu=$!
+    finish bridge
+    kill -TERM $emu
+    wait $emu
+    emu_rc=$?
+    emu=""
+    [ "$emu_rc" -eq 0 ] || { echo "FAIL: the emulator exited $emu_rc"; tail -5 "$out/emulator.err"; exit 1; }
+    stalled bridge || bridge_done=1
+  fi
+  [ $sim_done -eq 1 ] && [ $bridge_done -eq 1 ] && break
+done
+[ $sim_done -eq 1 ] && [ $bridge_done -eq 1 ] || { echo "FAIL: three stalled runs (the machine is too busy)"; exit 1; }
 commands=$(jq -r '.commands' "$out/emulator.json" 2> /dev/null | tail -1)
 [ "${commands:-0}" -gt 0 ] 2> /dev/null || { echo "FAIL: the emulator obeyed no command"; exit 1; }
 echo "emulator: $commands commands, $(jq -r '.frames_produced' "$out/emulator.json" | tail -1) frames," \
      "overruns $(jq -r '.overruns' "$out/emulator.json" | tail -1)"
+[ -n "$device_time" ] && echo "emulator: cycle $(jq -c '.cycle' "$out/emulator.json" | tail -1)"
 bridge_line=$(grep -ho "{\"service\":\"udp_bridge $robot\".*}" "$out/bridge/logs/"*.log 2> /dev/null | tail -1)
 [ -n "$bridge_line" ] && echo "bridge: frames in $(jq -r '.link.frames_in' <<< "$bridge_line"), out" \
   "$(jq -r '.link.frames_out' <<< "$bridge_line"), frame-to-topic latency p50 $(jq -r '.link.latency_p50_us' <<< "$bridge_line") us," \
@@ -126,17 +160,14 @@ if [ "$family" = arm ]; then
   done
   commands=$(jq -r '.commands' "$out/emulator.json" | tail -1)
   [ "$commands" -ge 4500 ] || { echo "FAIL: the emulator obeyed $commands commands (>= 4500 of the run's 5000)"; fail=1; }
+  syncs=$(jq -r '.cycle.syncs' "$out/emulator.json" | tail -1) refused=$(jq -r '.cycle.refused' "$out/emulator.json" | tail -1)
+  [ "$syncs" -ge 5 ] && [ "$refused" = 0 ] ||
+    { echo "FAIL: the emulator followed $syncs cycle frames and refused $refused (>= 5 and 0 expected)"; fail=1; }
   rejected=$(jq -r '[.services[] | .rejected_inputs] | add' "$out/bridge/launch.json")
   [ "$rejected" = 0 ] || { echo "FAIL: $rejected samples refused"; fail=1; }
   awk -v r="$(jq -r '.rms_norm_mrad' "$out/bridge.json")" 'BEGIN { exit !(r + 0 == r && r < 100) }' ||
     { echo "FAIL: the arm through the bridge left 100 mrad of RMS error"; fail=1; }
 fi
-if [ $missed -eq 1 ]; then
-  if [ "$reported_only" = 1 ]; then
-    echo "MISSED (reported, not asserted): the paper's figures through the bridge (docs/bridges.md, \"Closed loops\")"
-  else
-    fail=1
-  fi
-fi
+[ $missed -eq 0 ] || fail=1
 [ $fail -eq 0 ] && echo PASS || echo FAIL
 exit $fail

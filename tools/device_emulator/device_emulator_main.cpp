@@ -16,18 +16,22 @@
 #include <nlohmann/json.hpp>
 
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <memory>
+#include <thread>
 
+#include "cycle_follower.hpp"
 #include "emulated_device.hpp"
 #include "emulator_link.hpp"
 #include "fault_script.hpp"
 #include "plexus/base/clock.hpp"
 #include "plexus/base/input_error.hpp"
 #include "plexus/base/logging.hpp"
+#include "plexus/distributed/realtime.hpp"
 #include "plexus/link/protocol.hpp"
 #include "plexus/link/udp_socket.hpp"
 #include "plexus/runtime/periodic_loop.hpp"
@@ -103,11 +107,12 @@ int main(int argc, char** argv) {
   alone.robot_section = true;
   std::string part_file, pty, udp_bind, udp_peer, faults_file, truth_file, log_level = "info";
   bool device_time = false;
-  bool hold_until_command = false;
+  bool hold_until_command = false, ignore_cycle = false;
   double clock_offset = 0.0, clock_drift_ppm = 0.0, jitter_ms = 0.0;
   std::vector<std::string> sets, fault_specs;
   long baud = 1000000;
   int64_t watchdog_ms = 100;
+  int priority = 0, cpu = -1;
   double duration = 0.0;
   int64_t seed = 1;
   std::size_t tx_buffer = 64 * 1024;
@@ -128,6 +133,9 @@ int main(int argc, char** argv) {
   app.add_flag("--hold-until-command", hold_until_command,
                "The plant holds its initial state (sensors still report it) until the first valid command; its time "
                "starts then");
+  app.add_flag("--ignore-cycle", ignore_cycle,
+               "Do not follow the bridge's cycle frames (0x8D): a device whose steps keep their own phase (its "
+               "phase against the run's steps is still reported)");
   app.add_option("--watchdog-ms", watchdog_ms, "No valid command for this long: zero command (default 100)");
   app.add_option("--fault", fault_specs,
                  "KIND@T[:key=value,...] (flip, drop, garbage, oversize, poison, stall, unplug); repeatable");
@@ -144,6 +152,10 @@ int main(int argc, char** argv) {
   app.add_option("--truth-times", truth_file,
                  "CSV: per sample frame, id, seq, first field, device time (s), true host time (CLOCK_REALTIME ns), "
                  "every field's SI value before encoding");
+  app.add_option("--priority", priority,
+                 "SCHED_FIFO priority of its loop and link threads, 1 .. 99 (0: normal scheduling), as a device's "
+                 "firmware runs");
+  app.add_option("--cpu", cpu, "Pin its loop and link threads to this CPU");
   app.add_option("--log-level", log_level, "trace, debug, info, warn, error, critical or off");
   try {
     app.parse(argc, argv);
@@ -249,6 +261,8 @@ int main(int argc, char** argv) {
     // --- the link, the faults, the loop
     rt::LoopOptions loop_options;
     loop_options.rate_hz = 1.0 / sc.step;
+    loop_options.priority = priority;  // the timed UDP port's threads, made after, inherit it
+    loop_options.cpu = cpu;
     rt::PeriodicLoop loop(loop_options);
     lo.period_ns = loop.period_ns();
     emulator::EmulatorLink link(lo);
@@ -269,12 +283,67 @@ int main(int argc, char** argv) {
                  injector.faults().size(), seed);
 
     const int64_t period = loop.period_ns();
-    const int64_t first_deadline = monotonic_ns() + period;
-    const int64_t t0 = first_deadline;  // step 0, t = 0: faults' times count from here
+    // Step k's deadline is first_deadline + k periods: a cycle frame moves it onto the run's
+    // steps (phase and numbering).
+    int64_t first_deadline = monotonic_ns() + period;
+    const int64_t t0 = first_deadline;  // t = 0: faults' times count from here
+    emulator::CycleFollower cycle(period);
+    uint8_t cycle_payload[link::kCyclePayload] = {};
+    std::size_t cycle_bytes = SIZE_MAX;  // a cycle frame's payload size this tick; SIZE_MAX: none
     const auto end_ns = duration > 0.0 ? t0 + static_cast<int64_t>(std::llround(duration * 1e9)) : INT64_MAX;
     device.start(t0);
     int64_t steps = 0, last_k = -1;
     uint64_t reopens = 0;
+    // What arrives on the link: a time request answered (the pty's responder: at the tick; the
+    // timed UDP port answers on arrival), a cycle frame kept for the end of the tick, the rest
+    // to the device.
+    int64_t rx_now = 0;
+    const auto on_bytes = [&](const uint8_t* bytes, std::size_t n) {
+      decoder.feed(bytes, n, [&](const link::Frame& f) {
+        if (f.id == link::kTimeRequestId && f.payload_size == 24) {
+          uint8_t payload[24];
+          clock.answer(f.payload, wall_time_ns(), payload);
+          tx.send(link::kTimeResponseId, time_response_seq++, payload, sizeof payload);
+          return;
+        }
+        if (f.id == link::kCycleId) {
+          cycle_bytes = f.payload_size;
+          std::memcpy(cycle_payload, f.payload, std::min<std::size_t>(f.payload_size, sizeof cycle_payload));
+          return;
+        }
+        device.on_frame(f, rx_now);
+      });
+    };
+    const auto receive = [&](int64_t now) {
+      rx_now = now;
+      if (timed)
+        timed->poll(on_bytes);
+      else
+        link.poll(on_bytes);
+    };
+    // Following the run's cycle, the plant starts as plant_simulator's does
+    // (distributed::StartupWait): in the run's first steps each waits, two periods at most,
+    // for the command computed at the step before (a host's first DDS writes and deliveries
+    // take up to 2 ms); afterwards it never waits.
+    const int64_t startup_steps = distributed::StartupWait::ticks(sc.step);
+    uint64_t commands_at_0 = 0, start_waits = 0;
+    int64_t start_wait_ns = 0;
+    const auto wait_at_start = [&](int64_t j) {
+      if (!device.follows_run() || j < 0 || j >= startup_steps) return;
+      if (j == 0) {
+        commands_at_0 = device.counters().commands;
+        return;
+      }
+      const int64_t from = monotonic_ns(), until = from + distributed::StartupWait::kWaitPeriods * period;
+      if (device.counters().commands >= commands_at_0 + static_cast<uint64_t>(j)) return;
+      ++start_waits;
+      while (device.counters().commands < commands_at_0 + static_cast<uint64_t>(j) && monotonic_ns() < until &&
+             !g_stop.load(std::memory_order_relaxed)) {
+        std::this_thread::sleep_for(std::chrono::microseconds(20));
+        receive(monotonic_ns());
+      }
+      start_wait_ns += monotonic_ns() - from;
+    };
     loop.run(
         [&](const rt::PeriodicLoop::Tick& t) {
           const int64_t now = t.wake_ns;
@@ -283,30 +352,35 @@ int main(int argc, char** argv) {
             reopens = link.counters().reopens;
             decoder.reset();
           }
-          const auto on_bytes = [&](const uint8_t* bytes, std::size_t n) {
-            decoder.feed(bytes, n, [&](const link::Frame& f) {
-              if (f.id == link::kTimeRequestId && f.payload_size == 24) {
-                // The pty's time responder: at the tick (the timed UDP port answers on arrival).
-                uint8_t payload[24];
-                clock.answer(f.payload, wall_time_ns(), payload);
-                tx.send(link::kTimeResponseId, time_response_seq++, payload, sizeof payload);
-                return;
-              }
-              device.on_frame(f, now);
-            });
-          };
-          if (timed)
-            timed->poll(on_bytes);
-          else
-            link.poll(on_bytes);
+          receive(now);
           device.check_watchdog(now);
           injector.tick(static_cast<double>(t.deadline_ns - t0) * 1e-9, link);
           // The step is the grid's, from the deadline; steps missed in an overrun run first.
           const int64_t k = (t.deadline_ns - first_deadline) / period;
-          const int64_t wall = wall_time_ns();  // the samples of this tick are taken now
-          device.set_sample_time(wall, clock.at(wall));
-          for (int64_t j = std::max(last_k + 1, k - kMaxCatchUpSteps); j <= k; ++j, ++steps) device.step(j, tx);
+          // Each step's samples are the plant's state at the step's time, its deadline (also a
+          // catch-up step's: stamped with the time of the tick it ran in, every one of them
+          // mapped to the same step and was dropped as a repeat).
+          const int64_t wall_of_mono = wall_time_ns() - monotonic_ns();
+          for (int64_t j = std::max(last_k + 1, k - kMaxCatchUpSteps); j <= k; ++j, ++steps) {
+            const int64_t at = first_deadline + j * period + wall_of_mono;
+            wait_at_start(j);
+            device.set_sample_time(at, clock.at(at));
+            device.step(j, tx);
+          }
           last_k = k;
+          if (cycle_bytes != SIZE_MAX) {
+            // The next tick moves onto the run's cycle: its phase, and its step's number (a
+            // new numbering runs no catch-up steps across it).
+            const int64_t next_wall = t.deadline_ns + period + (wall_time_ns() - monotonic_ns());
+            int64_t shift = 0, run_step = 0;
+            if (cycle.shift_for(cycle_payload, cycle_bytes, clock, next_wall, shift, run_step) && !ignore_cycle) {
+              loop.shift(shift);
+              first_deadline = t.deadline_ns + period + shift - run_step * period;
+              if (run_step != last_k + 1) last_k = run_step - 1;
+              device.follow_run();
+            }
+            cycle_bytes = SIZE_MAX;
+          }
           if (!timed && injector.sending(link)) link.flush(now);
           return !g_stop.load(std::memory_order_relaxed) && t.deadline_ns + period < end_ns;
         },
@@ -338,7 +412,16 @@ int main(int argc, char** argv) {
                              {"run_s", static_cast<double>(monotonic_ns() - t0) * 1e-9},
                              {"overruns", ls.overruns},
                              {"jitter_p99_us", ls.jitter_p99_us},
-                             {"device_time", device_time}};
+                             {"jitter_max_us", ls.jitter_max_us},
+                             {"device_time", device_time},
+                             {"cycle",
+                              {{"followed", !ignore_cycle},
+                               {"syncs", cycle.syncs()},
+                               {"refused", cycle.refused()},
+                               {"first_shift_us", cycle.first_shift_us()},
+                               {"max_shift_us_after_first", cycle.max_shift_us()},
+                               {"start_waits", start_waits},
+                               {"start_wait_us", static_cast<double>(start_wait_ns) * 1e-3}}}};
     if (timed) {
       const auto tc = timed->counters();
       j["timed_port"] = {{"time_requests", tc.time_requests}, {"datagrams_in", tc.datagrams_in},

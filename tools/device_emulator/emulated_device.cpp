@@ -153,7 +153,9 @@ void EmulatedDevice::check_watchdog(int64_t now_ns) {
 
 void EmulatedDevice::step(int64_t k, FrameOutput& out) {
   out_ = &out;
-  if (hold_) {
+  if (run_steps_) {
+    k = std::max<int64_t>(k, 0);  // before the run: its initial state again
+  } else if (hold_) {
     if (!have_cmd_)
       k = 0;  // held: the initial state again
     else {

@@ -64,6 +64,11 @@ class EmulatedDevice {
   /// the first command arrived on. So a run's services, started apart from the device,
   /// meet the plant at its initial state whenever the device came up.
   void hold_until_command() { hold_ = true; }
+  /// The steps are the run's from now on (a cycle frame, docs/bridges.md "Cycle sync"): before
+  /// the run's step 0 the plant holds its initial state, then steps with the run, as
+  /// plant_simulator's; the first command no longer starts the plant's time.
+  void follow_run() { run_steps_ = true; }
+  bool follows_run() const { return run_steps_; }
   /// Device time (docs/bridges.md, "Device time"): from now on every device -> host frame
   /// carries one more f64 after its fields, the time set by set_sample_time().
   /// Throws InputError if a frame has no room for it (link::kMaxPayload bytes, the time included).
@@ -112,6 +117,7 @@ class EmulatedDevice {
   int64_t last_cmd_ns_ = 0;
 
   bool hold_ = false;
+  bool run_steps_ = false;
   int64_t first_k_ = -1;  // with hold_: the emulator's step of the first command (the plant's step 1)
 
   FrameOutput* out_ = nullptr;  // during step()

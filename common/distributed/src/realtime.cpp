@@ -37,22 +37,6 @@ constexpr int64_t kMaxCatchUpTicks = 10;
 /// late sample applies (docs/distributed.md, "Late samples").
 constexpr int64_t kEstimatorWaitPeriods = 1;
 
-/// The start of a run (docs/distributed.md, "Start-up"): in its first kStartupSeconds (at least
-/// kStartupMinTicks ticks) a host that starts with the run waits for the samples due at each
-/// step before it reads them, at most kStartupWaitPeriods of its periods each; afterwards it
-/// never waits. A host that joins a running loop (a restarted service) never waits: the loop's
-/// other members keep their deadlines and its consumers hold their safe output until it
-/// publishes, so a wait would only lengthen their hold. The first write of each DDS writer
-/// costs 0.3-0.5 ms on both vendors and the first deliveries up to 2 ms
-/// (measured at 1 kHz on loopback; 20-80 us later), so without the wait a 1 kHz loop's first
-/// hops arrive late: its controller's first steps hold and its plant integrates them with no
-/// command, a start `plexus sim` never has. The flexible-joint arm at 1 kHz with its plant in
-/// another process (repro.realtime.arm_vdc_ekf_1khz_*) then tracked 0.6-1.2 mrad RMS after 1 s
-/// in 3 of 6 runs (sim 0.03); with the wait 0.03-0.37 in 12 of 12.
-constexpr double kStartupSeconds = 0.05;
-constexpr int64_t kStartupMinTicks = 3;
-constexpr int64_t kStartupWaitPeriods = 2;
-
 /// History depth of a realtime input's reader (at least): samples received between two reads.
 constexpr int32_t kReaderDepth = 8;
 
@@ -498,12 +482,11 @@ RealtimeReport RealtimeHost::run(const std::atomic<bool>& stop) {
   // `plexus sim`), at most kEstimatorWaitPeriods of its periods behind the grid; then with
   // what has arrived (late reads, counted). Its output is that step's, published later.
   const auto arrived = [&m](std::size_t sig, int64_t due) { return m.arrived(sig, due); };
-  const int64_t startup_ticks = std::max<int64_t>(
-      kStartupMinTicks, static_cast<int64_t>(std::ceil(kStartupSeconds / (m.sc.step * static_cast<double>(stride)))));
+  const int64_t startup_ticks = StartupWait::ticks(m.sc.step * static_cast<double>(stride));
   const auto run_step = [&](int64_t j) {
     m.params->serve(j);  // between two ticks: a change takes effect at step j, acknowledged with it
     const bool starting = k0 == 0 && j < startup_ticks * stride;
-    const int64_t wait_until = starting ? monotonic_ns() + kStartupWaitPeriods * loop.period_ns() : 0;
+    const int64_t wait_until = starting ? monotonic_ns() + StartupWait::kWaitPeriods * loop.period_ns() : 0;
     for (std::size_t c = 0; c < m.sc.components.size(); ++c) {
       if (!m.exec.hosted(c)) continue;
       if (starting) {  // the run's start: wait for this step's samples, two periods at most for the step

@@ -57,6 +57,18 @@ TEST(DeviceClock, MapsWithin100usAfter10sUnderJitterAndDrift) {
   }
 }
 
+// The cycle sync (docs/bridges.md, "Cycle sync") sends host times in the device's clock.
+TEST(DeviceClock, ToDeviceInvertsToHost) {
+  DeviceClock c;
+  std::mt19937 rng(3);
+  const SimLink l;
+  const double end = run(c, l, rng, 100.0, 12.0);
+  for (double h : {end - 3.0, end - 0.5, end}) {
+    EXPECT_NEAR(c.to_host(c.to_device(h)), h, 1e-12);
+    EXPECT_NEAR(c.to_device(h), l.device(h), 100e-6);  // the map's own error, device side
+  }
+}
+
 TEST(DeviceClock, BeatsTheMeanOfPerExchangeOffsets) {
   // The design choice in the header, measured: the mean of the NTP offsets
   // ((t2 - t1) + (t3 - t4)) / 2 over the same exchanges, drift known, against the fit.

@@ -66,15 +66,55 @@ double percentile_us(const std::vector<uint32_t>& hist, std::size_t n, double q,
 
 }  // namespace
 
+namespace {
+// A refusal the system may lift: a warning, with the advice that fits why it was refused.
+void refuse(std::string& refused, const std::string& what, int err, const char* capability, const char* limit) {
+  const std::string msg = what + " refused (" + std::strerror(err) + ")";
+  refused += (refused.empty() ? "" : "; ") + msg;
+  if (err == EPERM || err == EACCES)
+    spdlog::warn("{}: the loop runs without it. Grant {} or raise {} in /etc/security/limits.conf to enable it.", msg,
+                 capability, limit);
+  else
+    spdlog::warn("{}: the loop runs without it.", msg);
+}
+}  // namespace
+
+std::string apply_thread_settings(const LoopOptions& o) {
+  if (o.priority < 0 || o.priority > 99)
+    throw InputError("loop priority must be in 0..99, got " + std::to_string(o.priority));
+  if (o.timer_slack_ns < 0)
+    throw InputError("loop timer_slack_ns must be >= 0 (0: keep), got " + std::to_string(o.timer_slack_ns));
+  // A CPU that does not exist is a wrong argument, not a missing permission.
+  const long cpus = sysconf(_SC_NPROCESSORS_CONF);
+  if (o.cpu >= 0 && cpus > 0 && o.cpu >= cpus)
+    throw InputError("loop CPU " + std::to_string(o.cpu) + ": no such CPU (this machine has CPUs 0.." +
+                     std::to_string(cpus - 1) + ")");
+  std::string refused;
+  if (o.lock_memory && mlockall(MCL_CURRENT | MCL_FUTURE) != 0)
+    refuse(refused, "mlockall", errno, "CAP_IPC_LOCK", "memlock");
+  if (o.timer_slack_ns > 0 && prctl(PR_SET_TIMERSLACK, static_cast<unsigned long>(o.timer_slack_ns), 0, 0, 0) != 0)
+    refuse(refused, "timer slack " + std::to_string(o.timer_slack_ns) + " ns", errno, "CAP_SYS_NICE", "rtprio");
+  if (o.cpu >= 0) {
+    cpu_set_t set;
+    CPU_ZERO(&set);
+    CPU_SET(o.cpu, &set);
+    if (sched_setaffinity(0, sizeof(set), &set) != 0)
+      refuse(refused, "CPU affinity to CPU " + std::to_string(o.cpu), errno, "CAP_SYS_NICE", "rtprio");
+  }
+  if (o.priority > 0) {
+    sched_param sp{};
+    sp.sched_priority = o.priority;
+    if (sched_setscheduler(0, SCHED_FIFO, &sp) != 0)
+      refuse(refused, "SCHED_FIFO priority " + std::to_string(o.priority), errno, "CAP_SYS_NICE", "rtprio");
+  }
+  return refused;
+}
+
 PeriodicLoop::PeriodicLoop(const LoopOptions& o) {
   if (!(o.rate_hz > 0.0 && o.rate_hz <= 100'000.0))
     throw InputError("loop rate must be in (0, 100000] Hz, got " + std::to_string(o.rate_hz));
-  if (o.priority < 0 || o.priority > 99)
-    throw InputError("loop priority must be in 0..99, got " + std::to_string(o.priority));
   if (o.stats_window < 16 || o.stats_window > (std::size_t{1} << 24))
     throw InputError("loop stats_window must be in 16..16777216, got " + std::to_string(o.stats_window));
-  if (o.timer_slack_ns < 0)
-    throw InputError("loop timer_slack_ns must be >= 0 (0: keep), got " + std::to_string(o.timer_slack_ns));
   if (o.cpu_dma_latency_us < -1 || o.cpu_dma_latency_us > 10'000'000)
     throw InputError("loop cpu_dma_latency_us must be -1 (none) or in 0..10000000, got " +
                      std::to_string(o.cpu_dma_latency_us));
@@ -83,48 +123,18 @@ PeriodicLoop::PeriodicLoop(const LoopOptions& o) {
   compute_.assign(o.stats_window, 0);
   lateness_hist_.assign(kBuckets, 0);
   compute_hist_.assign(kBuckets, 0);
-
-  // A refusal the system may lift: a warning, with the advice that fits why it was refused.
-  auto refuse = [this](const std::string& what, int err, const char* capability, const char* limit) {
-    const std::string msg = what + " refused (" + std::strerror(err) + ")";
-    refused_ += (refused_.empty() ? "" : "; ") + msg;
-    if (err == EPERM || err == EACCES)
-      spdlog::warn("{}: the loop runs without it. Grant {} or raise {} in /etc/security/limits.conf to enable it.", msg,
-                   capability, limit);
-    else
-      spdlog::warn("{}: the loop runs without it.", msg);
-  };
-  // A CPU that does not exist is a wrong argument, not a missing permission.
-  const long cpus = sysconf(_SC_NPROCESSORS_CONF);
-  if (o.cpu >= 0 && cpus > 0 && o.cpu >= cpus)
-    throw InputError("loop CPU " + std::to_string(o.cpu) + ": no such CPU (this machine has CPUs 0.." +
-                     std::to_string(cpus - 1) + ")");
-  if (o.lock_memory && mlockall(MCL_CURRENT | MCL_FUTURE) != 0) refuse("mlockall", errno, "CAP_IPC_LOCK", "memlock");
-  if (o.timer_slack_ns > 0 && prctl(PR_SET_TIMERSLACK, static_cast<unsigned long>(o.timer_slack_ns), 0, 0, 0) != 0)
-    refuse("timer slack " + std::to_string(o.timer_slack_ns) + " ns", errno, "CAP_SYS_NICE", "rtprio");
+  refused_ = apply_thread_settings(o);
   if (o.cpu_dma_latency_us >= 0) {
     // The kernel keeps the request while the file stays open (Documentation/power/pm_qos_interface).
     dma_latency_fd_ = open("/dev/cpu_dma_latency", O_RDWR | O_CLOEXEC);
     const auto value = static_cast<int32_t>(o.cpu_dma_latency_us);
     if (dma_latency_fd_ < 0 || write(dma_latency_fd_, &value, sizeof value) != static_cast<ssize_t>(sizeof value)) {
-      refuse("CPU wake-up latency request of " + std::to_string(o.cpu_dma_latency_us) + " us (/dev/cpu_dma_latency)",
+      refuse(refused_,
+             "CPU wake-up latency request of " + std::to_string(o.cpu_dma_latency_us) + " us (/dev/cpu_dma_latency)",
              errno, "root access to /dev/cpu_dma_latency", "nothing (the file is root's)");
       if (dma_latency_fd_ >= 0) close(dma_latency_fd_);
       dma_latency_fd_ = -1;
     }
-  }
-  if (o.cpu >= 0) {
-    cpu_set_t set;
-    CPU_ZERO(&set);
-    CPU_SET(o.cpu, &set);
-    if (sched_setaffinity(0, sizeof(set), &set) != 0)
-      refuse("CPU affinity to CPU " + std::to_string(o.cpu), errno, "CAP_SYS_NICE", "rtprio");
-  }
-  if (o.priority > 0) {
-    sched_param sp{};
-    sp.sched_priority = o.priority;
-    if (sched_setscheduler(0, SCHED_FIFO, &sp) != 0)
-      refuse("SCHED_FIFO priority " + std::to_string(o.priority), errno, "CAP_SYS_NICE", "rtprio");
   }
 }
 

@@ -2,11 +2,13 @@
 
 #include <fcntl.h>
 #include <gtest/gtest.h>
+#include <sched.h>
 #include <sys/prctl.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cstdint>
+#include <thread>
 #include <vector>
 
 #include "plexus/base/clock.hpp"
@@ -50,6 +52,27 @@ TEST(PeriodicLoop, StartsAtAGivenDeadlineAndKeepsItsPhase) {
     EXPECT_EQ((deadlines[i] - first) % 1'000'000, 0) << "tick " << i << " left the grid";
 }
 
+// A device following its host's cycle re-phases its loop (docs/bridges.md, "Cycle sync").
+TEST(PeriodicLoop, ShiftMovesTheScheduleAndKeepsThePeriod) {
+  PeriodicLoop loop({.rate_hz = 1000});
+  const int64_t first = monotonic_ns() + 20'000'000;
+  std::vector<int64_t> deadlines;
+  loop.run(
+      [&](const PeriodicLoop::Tick& t) {
+        deadlines.push_back(t.deadline_ns);
+        if (t.index == 1) loop.shift(-300'000);
+        if (t.index == 3) loop.shift(450'000);
+        return t.index < 5;
+      },
+      first);
+  ASSERT_EQ(deadlines.size(), 6u);
+  EXPECT_EQ(deadlines[1] - deadlines[0], 1'000'000);
+  EXPECT_EQ(deadlines[2] - deadlines[1], 700'000);
+  EXPECT_EQ(deadlines[3] - deadlines[2], 1'000'000);
+  EXPECT_EQ(deadlines[4] - deadlines[3], 1'450'000);
+  EXPECT_EQ(deadlines[5] - deadlines[4], 1'000'000);
+}
+
 TEST(PeriodicLoop, OverrunsAreCounted) {
   PeriodicLoop loop({.rate_hz = 1000});
   loop.run([&](const PeriodicLoop::Tick& t) {
@@ -68,6 +91,21 @@ TEST(PeriodicLoop, RejectsBadOptions) {
   EXPECT_THROW(PeriodicLoop({.rate_hz = 100, .timer_slack_ns = -1}), InputError);
   EXPECT_THROW(PeriodicLoop({.rate_hz = 100, .cpu_dma_latency_us = -2}), InputError);
   EXPECT_THROW(PeriodicLoop({.rate_hz = 100, .stats_window = 8}), InputError);
+}
+
+// A thread without a loop of its own (a bridge's I/O thread) takes the same settings.
+TEST(ApplyThreadSettings, RejectsBadOptionsAndAppliesTheCpu) {
+  EXPECT_THROW(apply_thread_settings({.priority = 120}), InputError);
+  EXPECT_THROW(apply_thread_settings({.cpu = 4096}), InputError);
+  EXPECT_THROW(apply_thread_settings({.timer_slack_ns = -1}), InputError);
+  std::thread t([] {
+    EXPECT_EQ(apply_thread_settings({.cpu = 0}), "");
+    cpu_set_t set;
+    ASSERT_EQ(sched_getaffinity(0, sizeof set, &set), 0);
+    EXPECT_TRUE(CPU_ISSET(0, &set));
+    EXPECT_EQ(CPU_COUNT(&set), 1);
+  });
+  t.join();
 }
 
 // The percentiles cover the last stats_window iterations (older ones leave the histogram)

@@ -328,13 +328,17 @@ struct Loader {
   }
 
   /// robots.<r>.source: a type name, or a map with `type` and that type's keys.
-  // A bridge's device time (docs/bridges.md, "Device time"): device_time, time_sync_hz.
+  // A bridge's device time (docs/bridges.md, "Device time"): device_time, time_sync_hz, cycle_sync.
   static void device_time(const YamlMap& m, RobotSource& src) {
     src.device_time = m.optional<bool>("device_time", src.device_time);
     src.time_sync_hz = m.optional<double>("time_sync_hz", src.time_sync_hz);
     if (!(src.time_sync_hz >= 1.0 && src.time_sync_hz <= 200.0))
       m.fail("time_sync_hz", "expected 1 .. 200 exchanges per second");
     if (m.has("time_sync_hz") && !src.device_time) m.fail("time_sync_hz", "only with device_time: true");
+    // The cycle sync (docs/bridges.md, "Cycle sync") is sent in the device's clock.
+    src.cycle_sync = m.optional<bool>("cycle_sync", src.cycle_sync);
+    if (src.cycle_sync && !src.device_time)
+      m.fail("cycle_sync", "only with device_time: true (the cycle is sent in the device's clock)");
   }
 
   // A device's own frame table (docs/bridges.md, "A device's own frames"): each entry's

@@ -202,6 +202,9 @@ TEST(RobotSource, BadSourcesAreRefusedWithTheirKey) {
       "robots.r1.source.time_sync_hz");
   bad("{type: udp_bridge, bind: 127.0.0.1:1, peer: 127.0.0.1:2, time_sync_hz: 20}", "only with device_time");
   bad("{type: serial_bridge, device: /dev/x, device_time: maybe}", "robots.r1.source.device_time");
+  // The cycle is sent in the device's clock (docs/bridges.md, "Cycle sync").
+  bad("{type: udp_bridge, bind: 127.0.0.1:1, peer: 127.0.0.1:2, cycle_sync: true}",
+      "robots.r1.source.cycle_sync: only with device_time: true");
 }
 
 // A device's own frame table (docs/bridges.md, "A device's own frames").
@@ -288,6 +291,9 @@ TEST(DeclaredFrames, BadTablesAreRefusedNamingTheEntry) {
   // The link's own ids, a direction against its id, an unknown wire type, a scale on a float.
   bad("        - {id: 0x0E, direction: to_host, topic: truth/state, type: Pose2D, fields: [{name: x}]}\n" + cmd,
       "id 0x0E is the link's own");
+  bad("        - {id: 0x11, direction: to_host, topic: truth/state, type: Pose2D, fields: [{name: x}]}\n"
+      "        - {id: 0x8D, direction: to_device, topic: cmd, type: UnicycleCommand, fields: [{name: v}]}\n",
+      "id 0x8D is the link's own");
   bad("        - {id: 0x91, direction: to_host, topic: truth/state, type: Pose2D, fields: [{name: x}]}\n" + cmd,
       "device -> host ids are 0x00 .. 0x7F");
   bad("        - {id: 0x11, direction: to_host, topic: truth/state, type: Pose2D, fields: [{name: x, wire: f16}]}\n" +

@@ -143,6 +143,11 @@ std::vector<Process> plan(const scenario::Scenario& sc, const std::string& host)
         p.components = robots_components(sc, {robot});
         p.name = p.service();
         p.vendor = c.dds;
+        if (src->second.type !=
+            scenario::RobotSource::Type::replay) {  // a bridge's threads: the robot's `priority`, `cpu`
+          p.priority = c.priority;
+          p.cpu = c.cpu;
+        }
         sources.push_back(p);
         continue;
       }

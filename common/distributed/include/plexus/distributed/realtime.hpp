@@ -39,7 +39,9 @@
 //    until their inputs arrive).
 #pragma once
 
+#include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -76,6 +78,29 @@ double heartbeat_uptime_s();
 /// host of an estimator and its controller (a `process` group) reads the sensors half a
 /// period after they were taken and leaves the command half a period to reach the plant.
 double stage_phase(const scenario::Scenario& sc, const std::vector<bool>& hosted);
+
+/// The start of a run (docs/distributed.md, "Start-up"): in its first kSeconds (at least
+/// kMinTicks ticks) a host that starts with the run waits for the samples due at each step
+/// before it reads them, at most kWaitPeriods of its periods each; afterwards it never waits.
+/// A host that joins a running loop (a restarted service) never waits: the loop's other
+/// members keep their deadlines and its consumers hold their safe output until it publishes,
+/// so a wait would only lengthen their hold. The first write of each DDS writer costs 0.3-0.5
+/// ms on both vendors and the first deliveries up to 2 ms (measured at 1 kHz on loopback;
+/// 20-80 us later), so without the wait a 1 kHz loop's first hops arrive late: its
+/// controller's first steps hold and its plant integrates them with no command, a start
+/// `plexus sim` never has. The flexible-joint arm at 1 kHz with its plant in another process
+/// (repro.realtime.arm_vdc_ekf_1khz_*) then tracked 0.6-1.2 mrad RMS after 1 s in 3 of 6 runs
+/// (sim 0.03); with the wait 0.03-0.37 in 12 of 12. The device emulator following the run's
+/// cycle starts its plant by the same rule (tools/device_emulator, docs/bridges.md).
+struct StartupWait {
+  static constexpr double kSeconds = 0.05;
+  static constexpr int64_t kMinTicks = 3;
+  static constexpr int64_t kWaitPeriods = 2;
+  /// The ticks of the start at this period (s).
+  static int64_t ticks(double period_s) {
+    return std::max<int64_t>(kMinTicks, static_cast<int64_t>(std::ceil(kSeconds / period_s)));
+  }
+};
 
 /// The QoS profile of a signal: its producer's `qos` key, else "state".
 const rt::QosProfile& signal_qos(const scenario::Scenario& sc, const std::string& producer,

@@ -45,6 +45,8 @@ class DeviceClock {
   bool valid() const { return count_ > 0; }
   /// g(d): the host time of device time d (s). Requires valid().
   double to_host(double device_s) const { return a_ + b_ * (device_s - d_ref_); }
+  /// g^-1(h): the device time of host time h (s). Requires valid().
+  double to_device(double host_s) const { return d_ref_ + (host_s - a_) / b_; }
   /// How far the device's clock is ahead of the host's at the last exchange, s.
   double offset_s() const { return offset_; }
   /// How much faster the device's clock runs than the host's, in parts per million.

@@ -82,8 +82,20 @@ inline constexpr uint8_t kStopId = 0x8F;
 inline constexpr uint8_t kTimeRequestId = 0x8E;
 inline constexpr uint8_t kTimeResponseId = 0x0E;
 
-/// Whether an id belongs to the link itself (STOP, the time exchange): never a table's.
-inline bool is_link_id(uint8_t id) { return id == kStopId || id == kTimeRequestId || id == kTimeResponseId; }
+/// Cycle sync (docs/bridges.md, "Cycle sync"), with device time: host -> device, the run's
+/// steps in the device's clock: `origin` (s, device clock) is when the run's step `step` (an
+/// integer, as an f64; negative before the run's start) falls, and `period` (s, device clock)
+/// the step's length. A device that follows it runs its steps at origin + n period and
+/// numbers them as the run does, so that its samples are taken where and when the run's
+/// plant steps fall, as a fieldbus's distributed clock does. No reply; a device that cannot
+/// follow ignores it. Three f64, as the time exchange's frames.
+inline constexpr uint8_t kCycleId = 0x8D;
+inline constexpr std::size_t kCyclePayload = 24;
+
+/// Whether an id belongs to the link itself (STOP, the time exchange, the cycle): never a table's.
+inline bool is_link_id(uint8_t id) {
+  return id == kStopId || id == kTimeRequestId || id == kTimeResponseId || id == kCycleId;
+}
 
 /// Every message of protocol version kProtocolVersion, by id: the default table.
 const FrameTable& message_layouts();

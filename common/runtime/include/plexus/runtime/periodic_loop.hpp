@@ -40,6 +40,14 @@ struct LoopStats {
   double compute_p50_us = 0, compute_p99_us = 0, compute_max_us = 0;  ///< body run time
 };
 
+/// Applies the thread settings of `o` (priority, cpu, lock_memory, timer_slack_ns; not the
+/// rate, nor the CPU wake-up latency request, which a loop holds) to the calling thread,
+/// warning for each one the system refuses; returns the refusals, "" if none. InputError for
+/// out-of-range values. PeriodicLoop does this at construction; a thread that serves a loop
+/// without one of its own (a bridge's I/O thread) calls it itself. Threads it creates after
+/// inherit the priority and the CPU.
+std::string apply_thread_settings(const LoopOptions& o);
+
 class PeriodicLoop {
  public:
   struct Tick {
@@ -73,6 +81,11 @@ class PeriodicLoop {
   void start(int64_t first_deadline_ns = 0);
   Tick wait_next();
   void end_compute();
+
+  /// From the loop's body: moves the schedule by `ns` (the next deadline and every one after
+  /// it), keeping the period. A loop that follows another's cycle (a device following its
+  /// host's, docs/bridges.md "Cycle sync") re-phases with it.
+  void shift(int64_t ns) { next_deadline_ns_ += ns; }
 
   /// Thread-safe: makes run() return after the current iteration.
   void stop() { stop_.store(true, std::memory_order_relaxed); }

@@ -91,14 +91,15 @@ struct DeclaredFrame {
 struct RobotSource {
   enum class Type { simulator, serial_bridge, udp_bridge, replay };
   Type type = Type::simulator;
-  std::string where;                  ///< "file:line: robots.r1.source", for errors
-  std::string device;                 ///< serial_bridge: tty path
-  long baud = 1000000;                ///< serial_bridge: 115200 .. 1000000
-  std::string bind, peer;             ///< udp_bridge: ADDR:PORT of the bridge and of the device
-  double link_timeout_s = 0.5;        ///< bridges: no valid frame for this long -> DEGRADED
-  double retry_s = 0.5;               ///< bridges: between attempts to open an absent device
-  bool device_time = false;           ///< bridges: the device stamps its samples (docs/bridges.md, "Device time")
-  double time_sync_hz = 50.0;         ///< bridges with device_time: time exchanges per second, 1 .. 200
+  std::string where;            ///< "file:line: robots.r1.source", for errors
+  std::string device;           ///< serial_bridge: tty path
+  long baud = 1000000;          ///< serial_bridge: 115200 .. 1000000
+  std::string bind, peer;       ///< udp_bridge: ADDR:PORT of the bridge and of the device
+  double link_timeout_s = 0.5;  ///< bridges: no valid frame for this long -> DEGRADED
+  double retry_s = 0.5;         ///< bridges: between attempts to open an absent device
+  bool device_time = false;     ///< bridges: the device stamps its samples (docs/bridges.md, "Device time")
+  double time_sync_hz = 50.0;   ///< bridges with device_time: time exchanges per second, 1 .. 200
+  bool cycle_sync = false;      ///< bridges with device_time: send the run's cycle (docs/bridges.md, "Cycle sync")
   std::vector<DeclaredFrame> frames;  ///< bridges: the device's own frame table; empty: the built-in one
   std::string recording;              ///< replay: the recording (plexus record), absolute
 };
