@@ -58,9 +58,12 @@ set_tests_properties(bridges.emulator_smoke PROPERTIES LABELS "bridges")
 # 002: IMU 100 Hz, odometry and truth 500 Hz) as before; the skid-steer robot (paper 001: GPS
 # 20 Hz, tracks, IMU, truth 100 Hz) and the flexible-joint arm (paper 004: joint states and truth
 # at 1 kHz; 500 Hz on the serial line, which 1 kHz of a 2-joint arm's frames would overfill)
-# from plant_simulator, and through both bridges on both vendors (issue 30). Domains: the
-# balancing robot's 138-139, the others' 88-95, 99, 152-153.
+# from plant_simulator, and through both bridges on both vendors (issue 30), as the balancing
+# robot now too. Domains: the balancing robot's 138-139, 24, 26-28, the others' 88-95, 99,
+# 152-153.
 foreach(variant "balancing;simulator;cyclone;138" "balancing;serial;fast;139"
+                "balancing;simulator;fast;24" "balancing;serial;cyclone;26" "balancing;udp;fast;27"
+                "balancing;udp;cyclone;28"
                 "skid_steer;simulator;cyclone;88" "skid_steer;udp;fast;89" "skid_steer;udp;cyclone;91"
                 "skid_steer;serial;fast;92" "skid_steer;serial;cyclone;93"
                 "arm;simulator;fast;94" "arm;udp;fast;95" "arm;udp;cyclone;99"
