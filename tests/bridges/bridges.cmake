@@ -86,11 +86,12 @@ endforeach()
 # Issue 30: paper 001's terrain switch and paper 004's 1 kHz arm closed through udp_bridge and
 # the device emulator, against the same scenario with plant_simulator in the same test, both in
 # realtime (tests/bridges/closed_loop_udp.sh): the skid-steer's re-convergence and classifier
-# accuracy within 10 %; the arm's settling within Table 4's band and its RMS within 20 %, its
+# accuracy within 10 %; paper 002's balancing robot's tilt-estimate errors and tilt within 20 %; the arm's settling within Table 4's band and its RMS within 20 %, its
 # device following the run's cycle (docs/bridges.md, "Closed loops", "Cycle sync").
 # Realtime and RUN_SERIAL (the figures are timing-sensitive):
-# about 36 s (skid-steer) and 15 s (arm) each. Domains 154, 228-230.
-foreach(variant "skid_steer;fast;154" "skid_steer;cyclone;228" "arm;fast;229" "arm;cyclone;230")
+# about 36 s (skid-steer), 15 s (arm) and 12 s (balancing) each. Domains 154, 228-230, 31-32.
+foreach(variant "skid_steer;fast;154" "skid_steer;cyclone;228" "arm;fast;229" "arm;cyclone;230"
+                "balancing;fast;31" "balancing;cyclone;32")
   list(POP_FRONT variant family vendor domain)
   add_test(NAME bridges.closed_loop_${family}_udp_${vendor}
            COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/closed_loop_udp.sh ${family} $<TARGET_FILE:plexus>

@@ -41,6 +41,16 @@ case $family in
     emulator_args=()
     stall_us=""  # a loop of 20 Hz GPS and 4 Hz decisions: a stall does not show
     scenario=$deploy/scenarios/icr_terrain_switch_prior.yaml ;;
+  balancing)
+    robot=r1
+    args=(--set "expectations={}")
+    # Paper 002's tilt estimates (Fig. 4's statistics) with the LQR balancing on the augmented
+    # UKF's, and how far the robot tilted.
+    checks="ukf_error_std_deg:0.20 ekf_error_std_deg:0.20 max_abs_tilt_deg:0.20"
+    device_time=""
+    emulator_args=()
+    stall_us=""
+    scenario=$deploy/scenarios/balance_ukf_ekf.yaml ;;
   arm)
     robot=arm
     args=(--set step=0.001 --set clock.input_deadline_periods=20 --set services.reference.process=control
@@ -57,7 +67,7 @@ case $family in
     # the arm 17 mrad off for 0.3 s and the run's settling lost; with them, 1 in 8 (13 ms).
     stall_us=10000
     scenario=$deploy/scenarios/arm_vdc_ekf.yaml ;;
-  *) echo "closed_loop_udp.sh: FAMILY: skid_steer or arm"; exit 2 ;;
+  *) echo "closed_loop_udp.sh: FAMILY: skid_steer, balancing or arm"; exit 2 ;;
 esac
 rm -rf "$out" && mkdir -p "$out"
 emu=""
