@@ -56,8 +56,9 @@ run cpu_1khz 1000000 0.001 1000
 
 # 3. The flexible-joint arm at 1 kHz through udp_bridge (issue 30), on each vendor: paper 004's
 #    loop (arm_vdc_ekf.yaml, reference, EKF and VDC in one process) under `plexus launch`, the
-#    emulator on the far end (unpaced, device time): 2000 frames/s in (joint states and truth,
-#    48 + 80 bytes), 1000 commands/s out. The bridge's CPU over seconds 2-10 of a 12 s run.
+#    emulator on the far end (unpaced, device time, the run's cycle; every loop at SCHED_FIFO 60
+#    as in bridges.closed_loop_arm_udp_*): 2000 frames/s in (joint states and truth, 48 + 80
+#    bytes), 1000 commands/s out. The bridge's CPU over seconds 2-10 of a 12 s run.
 deploy=$(cd "$(dirname "$0")/../../deploy" && pwd)
 run_arm() {  # run_arm VENDOR
   local vendor=$1 label=arm_1khz_udp_$1 pe=$((40000 + 10 * domain)) pb=$((40000 + 10 * domain + 1))
@@ -66,13 +67,15 @@ run_arm() {  # run_arm VENDOR
     --set clock.input_deadline_periods=20 --set services.reference.process=control \
     --set services.observer.process=control --set services.controller.process=control \
     --set services.observer.blind_after_s=0.01 --set "expectations={}" \
-    --set "robots.arm.source={type: udp_bridge, bind: 127.0.0.1:$pb, peer: 127.0.0.1:$pe, device_time: true}" \
+    --set services.reference.priority=60 --set services.observer.priority=60 \
+    --set services.controller.priority=60 --set robots.arm.priority=60 \
+    --set "robots.arm.source={type: udp_bridge, bind: 127.0.0.1:$pb, peer: 127.0.0.1:$pe, device_time: true, cycle_sync: true}" \
     --dds "$vendor" --domain $domain --json --quiet --out "$out/$label" > "$out/$label.json" 2> "$out/$label.err" &
   local launch=$!
   local part="$out/$label/parts/udp_bridge_arm.yaml"
   for _ in $(seq 1 100); do [ -s "$part" ] && break; sleep 0.05; done
   "$bin/device_emulator" --part "$part" --udp-bind 127.0.0.1:$pe --udp-peer 127.0.0.1:$pb --baud 0 --hold-until-command \
-    > "$out/$label.emulator.json" 2> "$out/$label.emulator.err" &
+    --priority 60 > "$out/$label.emulator.json" 2> "$out/$label.emulator.err" &
   local emu=$!
   pids=($launch $emu)
   local bridge=""
@@ -92,7 +95,8 @@ run_arm() {  # run_arm VENDOR
   local hz; hz=$(getconf CLK_TCK)
   local link; link=$(grep -ho '{"service":"udp_bridge arm".*}' "$out/$label/logs/"*.log | tail -1 | grep -o '"link":{[^}]*}')
   awk -v l="$label" -v b="$((b1 - b0))" -v e="$((e1 - e0))" -v t0="$t0" -v t1="$t1" -v hz="$hz" -v link="$link" \
-    'BEGIN { dt = t1 - t0; printf "{\"run\":\"%s\",\"seconds\":%.1f,\"bridge_cpu_percent\":%.2f,\"emulator_cpu_percent\":%.2f,%s}\n", l, dt, 100 * b / hz / dt, 100 * e / hz / dt, link }'
+    -v rms="$(jq -c '[.rms_e1_mrad, .rms_e2_mrad]' "$out/$label.json" 2> /dev/null)" \
+    'BEGIN { dt = t1 - t0; printf "{\"run\":\"%s\",\"seconds\":%.1f,\"bridge_cpu_percent\":%.2f,\"emulator_cpu_percent\":%.2f,\"rms_e_mrad\":%s,%s}\n", l, dt, 100 * b / hz / dt, 100 * e / hz / dt, rms, link }'
 }
 run_arm fast
 run_arm cyclone
