@@ -21,6 +21,8 @@
 #   DOMAIN=195               DDS domain of the runs (issue 15: 195-199 for this part)
 #   TRANSPORT=               auto | udp | shm, given to plexus launch --transport (empty: the
 #                            scenario's, auto)
+#   PRIORITY=                realtime: SCHED_FIFO priority 1..99 of every loop (each robot's
+#                            and each service's `priority`; empty: normal scheduling)
 #   BIN=build/bin            where plexus is
 #   KEEP=                    non-empty: keep the run folders (under OUT.csv's folder, runs-*)
 #
@@ -55,6 +57,10 @@ for vendor in $VENDORS; do
     for n in $NS; do
       scen=$work/fleet_${n}_${grouping}.yaml
       "$gen" "$n" "$grouping" "$DURATION" > "$scen" || exit 2
+      if [ -n "${PRIORITY:-}" ]; then  # every robot's and every service's loop
+        sed -i -E -e "s/^(  r[0-9]+:)$/\1\n    priority: $PRIORITY/" \
+          -e "/^services:/,/^metrics:/ s/^(  r[0-9]+_[a-z_]+: \{.*)\}$/\1, priority: $PRIORITY}/" "$scen"
+      fi
       run=$work/run
       [ -n "${KEEP:-}" ] && run=$outdir/runs-$mode-$vendor-$grouping-$n
       rm -rf "$run"

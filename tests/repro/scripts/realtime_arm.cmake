@@ -11,6 +11,11 @@
 #    wait of docs/distributed.md, "Start-up"; 0.6-1.2 in half the runs without it): a loop that
 #    holds, lags or oscillates fails this, whereas a whole-run RMS < 100 mrad (58x the
 #    sim's) would pass it.
+# Both processes' loops run at SCHED_FIFO 60 (the robot's and the services' `priority`), as a
+# 1 kHz loop should: on this 2-core machine under normal scheduling a loop of this run woke
+# 4-10 ms late in 3 of 6 runs (the launcher, its recorder and the DDS threads take the CPU),
+# and such a stall in the run's middle lost the band in CI (2026-11-29); with the priorities
+# 0.9-1.6 ms at most in 6 of 6 (docs/bridges.md, "Closed loops").
 # The input deadline is 20 periods: a hold (zero torque) answers a dead producer, not a few
 # milliseconds of scheduling delay on a shared machine; the EKF goes blind 10 ms after its
 # joint samples go stale (its blind_after_s; docs/distributed.md). RUN_SERIAL (realtime.cmake).
@@ -20,6 +25,8 @@ execute_process(COMMAND ${PLEXUS} launch ${SCENARIO} --json --quiet --domain ${D
                         --set services.reference.process=control
                         --set services.observer.process=control --set services.controller.process=control
                         --set services.observer.blind_after_s=0.01
+                        --set services.reference.priority=60 --set services.observer.priority=60
+                        --set services.controller.priority=60 --set robots.arm.priority=60
                 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT rc EQUAL 0 AND NOT rc EQUAL 1)
   message(FATAL_ERROR "launch exited ${rc}: ${err}")
