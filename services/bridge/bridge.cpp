@@ -21,7 +21,6 @@
 #include "plexus/link/device_clock.hpp"
 #include "plexus/link/frame.hpp"
 #include "plexus/link/protocol.hpp"
-#include "plexus/runtime/periodic_loop.hpp"
 
 namespace plexus::bridge {
 namespace {
@@ -461,11 +460,8 @@ Bridge::~Bridge() = default;
 BridgeReport Bridge::run(const std::atomic<bool>& stop) {
   Impl& m = *impl_;
   const int64_t start = monotonic_ns();
-  // This thread forwards the commands; the I/O thread, started below, inherits its settings.
-  rt::LoopOptions threads;
-  threads.priority = m.opt.priority;
-  threads.cpu = m.opt.cpu;
-  (void)rt::apply_thread_settings(threads);  // a refusal is warned, and the bridge runs without it
+  // This thread forwards the commands; the I/O thread, started below, inherits its priority
+  // and CPU (bridge_main.cpp sets them before the participant).
   std::atomic<bool> io_stop{false};
   std::thread io([&] { m.io_loop(io_stop); });
   int64_t next_beat = 0;

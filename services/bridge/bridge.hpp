@@ -43,10 +43,6 @@ struct BridgeOptions {
   /// by hand steps.
   bool cycle_sync = false;
   bool start_signal = false;  ///< started by plexus launch: the grid's origin is its start signal
-  /// Its I/O and command threads: SCHED_FIFO priority (0: normal scheduling) and CPU (-1: any),
-  /// the robot's `priority` and `cpu` (a bridge on a 1 kHz loop is part of the loop).
-  int priority = 0;
-  int cpu = -1;
 };
 
 /// What the bridge did, for its exit line.

@@ -23,6 +23,7 @@
 #include "plexus/base/teardown_deadline.hpp"
 #include "plexus/link/serial_port.hpp"
 #include "plexus/link/udp_socket.hpp"
+#include "plexus/runtime/periodic_loop.hpp"
 #include "plexus/scenario/overrides.hpp"
 #include "plexus/service/dds_options.hpp"
 #include "plexus/service/producer_monitor.hpp"
@@ -171,6 +172,14 @@ int main(int argc, char** argv) {
 
     const rt::ParticipantOptions po = net.participant(name + " " + robot, name);
     const auto profiles = net.profiles();
+    // Its threads' priority and CPU before the participant: the DDS threads inherit them, as
+    // the bridge's command and I/O threads do (docs/performance.md, "Priorities").
+    if (priority > 0 || cpu >= 0) {
+      rt::LoopOptions threads;
+      threads.priority = priority;
+      threads.cpu = cpu;
+      (void)rt::apply_thread_settings(threads);  // a refusal is warned, and the bridge runs without it
+    }
     auto participant = rt::Participant::create(po);
     // A plant simulator of the same robot left running would interleave with the device: warned.
     const service::ProducerMonitor producers(*participant, sc, po.name);
@@ -181,9 +190,7 @@ int main(int argc, char** argv) {
                       .device_time = src.device_time,
                       .time_sync_hz = src.time_sync_hz,
                       .cycle_sync = src.cycle_sync,
-                      .start_signal = start_signal,
-                      .priority = priority,
-                      .cpu = cpu});
+                      .start_signal = start_signal});
     const auto r = b.run(g_stop);
     nlohmann::ordered_json j{{"service", po.name},
                              {"run_s", r.run_s},

@@ -35,6 +35,7 @@
 #include "plexus/base/yaml_reader.hpp"
 #include "plexus/distributed/lockstep.hpp"
 #include "plexus/distributed/realtime.hpp"
+#include "plexus/runtime/periodic_loop.hpp"
 #include "plexus/scenario/overrides.hpp"
 #include "plexus/scenario/plugins.hpp"
 #include "plexus/scenario/registry.hpp"
@@ -183,6 +184,15 @@ int plexus::service::run_service(int argc, char** argv, const std::string& self)
 
     const rt::ParticipantOptions po = net.participant(self + " " + hosted_names, self);
     const auto profiles = net.profiles();
+    // Realtime with a priority: the DDS threads the participant starts (receive, events)
+    // inherit it from this thread, so that the loop never waits on a delivery thread that
+    // its own priority starves (docs/performance.md, "Priorities").
+    if (realtime && (priority > 0 || cpu >= 0)) {
+      rt::LoopOptions threads;
+      threads.priority = priority;
+      threads.cpu = cpu;
+      (void)rt::apply_thread_settings(threads);
+    }
     auto participant = rt::Participant::create(po);
     // Another process writing one of its topics: warned once, from a thread beside the loop.
     const service::ProducerMonitor producers(*participant, sc, po.name);
