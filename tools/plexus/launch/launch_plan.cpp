@@ -143,8 +143,8 @@ std::vector<Process> plan(const scenario::Scenario& sc, const std::string& host)
         p.components = robots_components(sc, {robot});
         p.name = p.service();
         p.vendor = c.dds;
-        if (src->second.type !=
-            scenario::RobotSource::Type::replay) {  // a bridge's threads: the robot's `priority`, `cpu`
+        // A bridge's threads take the robot's `priority` and `cpu` (a replay has no loop).
+        if (src->second.type != scenario::RobotSource::Type::replay) {
           p.priority = c.priority;
           p.cpu = c.cpu;
         }
