@@ -359,7 +359,7 @@ struct Bridge::Impl {
       // The cycle, as soon as the clock is mapped and the run's start is known (before the
       // start: the device holds its plant until step 0), then twice a second (a device
       // re-phases on each: its clock drifts, and the map improves with every exchange).
-      if (cycle_known && link->is_open() && now >= next_cycle) {
+      if (cycle_known && now >= next_cycle) {
         send_cycle(grid_t0.load(std::memory_order_relaxed));
         next_cycle = now + kSecond / 2;
       }

@@ -371,7 +371,7 @@ int main(int argc, char** argv) {
           if (cycle_bytes != SIZE_MAX) {
             // The next tick moves onto the run's cycle: its phase, and its step's number (a
             // new numbering runs no catch-up steps across it).
-            const int64_t next_wall = t.deadline_ns + period + (wall_time_ns() - monotonic_ns());
+            const int64_t next_wall = t.deadline_ns + period + wall_of_mono;
             int64_t shift = 0, run_step = 0;
             if (cycle.shift_for(cycle_payload, cycle_bytes, clock, next_wall, shift, run_step) && !ignore_cycle) {
               loop.shift(shift);
