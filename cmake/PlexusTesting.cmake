@@ -65,7 +65,10 @@ endfunction()
 # network share it: two DDS deployments on different domains of one host do not see each
 # other (the cross-domain leak, issue 33 item 1, fixed; docs/runtime.md, "Domains on one
 # host"). In lanes:
-#   - a test labelled `alone` (the 1 kHz arm across processes) stays RUN_SERIAL;
+#   - a test labelled `alone` (the 1 kHz arm across processes, its loops at SCHED_FIFO) takes
+#     the heavy tests' lock below, so it never runs beside one of them or another `alone`
+#     test, but runs beside the light ones (RUN_SERIAL until 2026-11-30: 60 s of the phase with
+#     one lane busy; docs/testing.md, "Realtime lanes");
 #   - the tests labelled `netns` or `multihost` (network namespaces, veth pairs, sshd) take
 #     one lock, `plexus_netns_realtime`: creating and deleting namespaces holds the kernel's
 #     network locks, which would stall another such test's `ip`/`nft` commands mid-fault.
@@ -74,10 +77,10 @@ endfunction()
 #     so that at most one runs at a time: two of them with the soak and a lossy split run
 #     beside them left a restarted controller 1.0-1.5 s to come back, and a pty-based serial
 #     loop beside the two main jobs missed its bound (clean-clone CI runs of 2026-11-29;
-#     docs/testing.md). A chain of about 390 s, inside the phase's ~520; not the netns tests,
-#     whose own chain it would join into one longer than the phase.
-#     They are one chain (about 370 s), so they start first: COST, which orders ctest's queue
-#     when it has no times of its own (a clean build); the others by their TIMEOUT.
+#     docs/testing.md). With the `alone` tests, a chain of about 415 s (355 + 60); not the
+#     netns tests, whose own chain (about 410 s) it would join into one longer than the phase.
+#     The two chains start first: COST, which orders ctest's queue when it has no times of
+#     its own (a clean build); the others by their TIMEOUT.
 # tools/setup/test.sh selects the same tests for the phase from `ctest --show-only=json-v1`.
 function(plexus_realtime_lanes)
   get_property(tests DIRECTORY PROPERTY TESTS)
@@ -86,7 +89,7 @@ function(plexus_realtime_lanes)
     get_test_property(${test} RUN_SERIAL serial)
     get_test_property(${test} LABELS labels)
     get_test_property(${test} TIMEOUT timeout)
-    if(NOT ((serial AND "realtime" IN_LIST labels) OR "light" IN_LIST labels) OR "alone" IN_LIST labels)
+    if(NOT ((serial AND "realtime" IN_LIST labels) OR "light" IN_LIST labels))
       continue()
     endif()
     if(NOT timeout)
@@ -101,7 +104,7 @@ function(plexus_realtime_lanes)
       list(APPEND locks plexus_netns_realtime)
       math(EXPR cost "${timeout} + 10000")
     endif()
-    if("heavy" IN_LIST labels)
+    if("heavy" IN_LIST labels OR "alone" IN_LIST labels)
       list(APPEND locks plexus_heavy_realtime)
       math(EXPR cost "${cost} + 5000")
     endif()

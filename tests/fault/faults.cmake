@@ -28,11 +28,13 @@ foreach(variant "fast;125;174" "cyclone;126;176")
                        LABELS "fault;realtime;multiprocess;alone" TIMEOUT 300 RUN_SERIAL TRUE)
 endforeach()
 
-# SIGKILL of `plexus launch` itself leaves no child behind, on both vendors.
+# SIGKILL of `plexus launch` itself leaves no child behind, on both vendors. `light`: it waits
+# on the launch and on the children's exits (in CI's realtime lanes).
 add_test(NAME fault.launcher_killed_leaves_no_orphan
          COMMAND bash ${FAULT_DIR}/launcher_kill.sh $<TARGET_FILE:plexus>
                  ${PROJECT_SOURCE_DIR}/deploy/scenarios/wmr_output_feedback_rfid.yaml ${FAULT_RUNS}/launcher_kill 127)
-set_tests_properties(fault.launcher_killed_leaves_no_orphan PROPERTIES LABELS "fault;multiprocess" TIMEOUT 120 RUN_SERIAL TRUE)
+set_tests_properties(fault.launcher_killed_leaves_no_orphan PROPERTIES LABELS "fault;multiprocess;light" TIMEOUT 120
+                     RUN_SERIAL TRUE)
 
 # RUN_SERIAL, all of them: sharing the machine with other tests was tried, and a partition
 # run beside the bridges' contract tests failed both (a 12 s partition for a 2 s one, gaps

@@ -50,9 +50,13 @@ all_cases=(
 # The arm at 1 kHz as docs/distributed.md runs it in realtime: its EKF and VDC in one
 # joint_controller process (`control`), the reference beside them, a 20-period deadline, the
 # EKF blind 10 ms after its joint samples go stale (0.3 s by default: its controller's safe
-# output came 0.32 s after the plant's death).
+# output came 0.32 s after the plant's death). Every loop at SCHED_FIFO 60, as the arm's
+# other realtime tests run it (tests/repro/scripts/realtime_arm.cmake): a restarted process
+# gets its priority again from its parameters.
 arm_sets=(--set step=0.001 --set clock.input_deadline_periods=20 --set services.observer.process=control
-          --set services.controller.process=control --set services.observer.blind_after_s=0.01)
+          --set services.controller.process=control --set services.observer.blind_after_s=0.01
+          --set services.reference.priority=60 --set services.observer.priority=60
+          --set services.controller.priority=60 --set robots.arm.priority=60)
 wanted=" $* "
 fail=0
 rows=()

@@ -21,6 +21,21 @@ add_test(NAME first_hour.parser_error_style
 add_test(NAME first_hour.record_nothing_writes_nothing
          COMMAND ${EXPECT} 1 "^plexus record: error: no topic with a writer was discovered on domain 155; .*/nothing.mcap not written$"
          $<TARGET_FILE:plexus> record -o ${CMAKE_BINARY_DIR}/test-runs/first_hour/nothing.mcap --duration 0.5 --domain 155)
+# A negative --cpu meant "no pinning" without a word, and a service took --priority 100 (2026-11-30).
+add_test(NAME first_hour.bridge_cpu_negative
+         COMMAND ${EXPECT} 2 "^udp_bridge: error: --cpu: Value -3 not in range 0 to [0-9]+"
+         $<TARGET_FILE:udp_bridge> --cpu -3)
+add_test(NAME first_hour.service_priority_range
+         COMMAND ${EXPECT} 2 "^plant_simulator: error: --priority: Value 100 not in range 0 to 99"
+         $<TARGET_FILE:plant_simulator> --params ${PROJECT_SOURCE_DIR}/deploy/params/unicycle_robot.yaml --priority 100)
+add_test(NAME first_hour.service_cpu_negative
+         COMMAND ${EXPECT} 2 "^motion_controller: error: --cpu: Value -1 not in range 0 to [0-9]+"
+         $<TARGET_FILE:motion_controller> --cpu -1)
+add_test(NAME first_hour.emulator_cpu_negative
+         COMMAND ${EXPECT} 2 "^device_emulator: error: --cpu: Value -2 not in range 0 to [0-9]+"
+         $<TARGET_FILE:device_emulator> --cpu -2)
+set_tests_properties(first_hour.bridge_cpu_negative first_hour.service_priority_range first_hour.service_cpu_negative
+                     first_hour.emulator_cpu_negative PROPERTIES LABELS "cli;first_hour")
 set_tests_properties(first_hour.service_step_zero first_hour.service_step_negative first_hour.bridge_step_negative
                      first_hour.replay_rate_zero first_hour.parser_error_style first_hour.record_nothing_writes_nothing
                      PROPERTIES LABELS "cli;first_hour")

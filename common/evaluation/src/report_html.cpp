@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "plexus/base/html_escape.hpp"
+#include "plexus/base/report_page_style.hpp"
 #include "plexus/base/yaml_reader.hpp"
 #include "plexus/scenario/expectation.hpp"
 
@@ -33,13 +34,10 @@ std::string value_cell(const std::string& value) {
   return "<span title=\"" + esc(value) + "\">" + buf + "</span>";
 }
 
+// The report's own tables; the page, headings and figures: kReportPageStyle.
 constexpr const char* kStyle = R"(
-body { font-family: sans-serif; margin: 0 auto; max-width: 1280px; padding: 0 1.5em 3em; color: #1a1a1a; }
-h1 { margin-top: 1em; }
-h2 { border-bottom: 1px solid #ccc; padding-bottom: .2em; margin-top: 2em; }
 .facts { color: #444; }
 .facts span { margin-right: 1.5em; white-space: nowrap; }
-code { font-size: 95%; }
 table.comparison { border-collapse: collapse; margin: 1em 0; }
 table.comparison th, table.comparison td { border: 1px solid #bbb; padding: .3em .7em; text-align: left; }
 table.comparison th { background: #eee; }
@@ -51,11 +49,6 @@ tr.missing td.value { color: #8a1010; font-style: italic; }
 .summary { font-weight: bold; }
 .summary.fail { color: #8a1010; }
 .summary.pass { color: #145214; }
-nav ul { columns: 3; }
-figure { margin: 1.5em 0; }
-figure img { max-width: 100%; height: auto; border: 1px solid #ddd; }
-figcaption { color: #333; margin-top: .3em; }
-figcaption b { display: block; }
 )";
 
 void write_figures(std::ostream& html, const std::vector<Figure>& figures, const std::string& section,
@@ -75,7 +68,8 @@ std::string report_html(const ReportInputs& in, const Comparison& comparison, co
   std::ostringstream html;
   html << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
        << "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
-       << "<title>plexus report: " << esc(name) << "</title>\n<style>" << kStyle << "</style>\n</head>\n<body>\n";
+       << "<title>plexus report: " << esc(name) << "</title>\n<style>" << kReportPageStyle << kStyle
+       << "</style>\n</head>\n<body>\n";
   html << "<h1>Report: " << esc(name) << "</h1>\n";
   if (const std::string d = scalar_or_empty(in.scenario, "description"); !d.empty())
     html << "<p>" << esc(d) << "</p>\n";

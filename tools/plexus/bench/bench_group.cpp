@@ -3,7 +3,6 @@
 #include <signal.h>
 
 #include <algorithm>
-#include <charconv>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -14,10 +13,12 @@
 #include "child_process.hpp"
 #include "cpu_affinity.hpp"
 #include "external_program.hpp"
+#include "plexus/scenario/format.hpp"
 
 namespace plexus::cli::bench {
 namespace fs = std::filesystem;
 using Json = nlohmann::ordered_json;
+using plexus::scenario::format_number;
 
 namespace {
 
@@ -54,14 +55,6 @@ std::string read_file(const std::string& path) {
   return s.str();
 }
 
-std::string number(double v) {
-  // The shortest text that reads back as the same double: bench_node's rates come back in
-  // its results and are matched with the matrix's exactly.
-  char buf[64];
-  const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v);
-  return ec == std::errc() ? std::string(buf, end) : std::to_string(v);
-}
-
 Placement placement(const std::string& pin) {
   const std::vector<int> cpus = allowed_cpus();
   if (pin == "none" || cpus.empty()) return {};
@@ -92,10 +85,10 @@ GroupRun run_group(const Group& g, const Matrix& m, const NetnsPair* ns, const P
           (static_cast<double>(m.rates_hz.size()) * (m.seconds_per_phase + 0.5) + m.throughput_seconds + 0.5) +
       10;
   auto reader_args = argv(2, "reader");
-  reader_args.insert(reader_args.end(), {"--duration", number(plan_s + 60)});
+  reader_args.insert(reader_args.end(), {"--duration", format_number(plan_s + 60)});
   if (plant.delay_us > 0 && size_to_delay >= 0)
-    reader_args.insert(reader_args.end(),
-                       {"--reply-delay-us", number(plant.delay_us), "--delay-size", std::to_string(size_to_delay)});
+    reader_args.insert(reader_args.end(), {"--reply-delay-us", format_number(plant.delay_us), "--delay-size",
+                                           std::to_string(size_to_delay)});
   const std::string reader_log = dir + "/reader.log";
   const Placement cpus = placement(m.pin);
   pid_t reader = -1;
@@ -106,13 +99,13 @@ GroupRun run_group(const Group& g, const Matrix& m, const NetnsPair* ns, const P
   auto writer_args = argv(1, "writer");
   std::vector<std::string> sizes, rates;
   for (int s : m.sizes) sizes.push_back(std::to_string(s));
-  for (double x : m.rates_hz) rates.push_back(number(x));
+  for (double x : m.rates_hz) rates.push_back(format_number(x));
   writer_args.insert(writer_args.end(),
-                     {"--sizes", join(sizes), "--rates", join(rates), "--seconds", number(m.seconds_per_phase),
-                      "--throughput-seconds", number(m.throughput_seconds), "--timeout", "20"});
+                     {"--sizes", join(sizes), "--rates", join(rates), "--seconds", format_number(m.seconds_per_phase),
+                      "--throughput-seconds", format_number(m.throughput_seconds), "--timeout", "20"});
   if (two)
     writer_args.insert(writer_args.end(), {"--fault-cmd", ns->cut_command(), "--heal-cmd", ns->heal_command(),
-                                           "--outage", number(m.outage_s)});
+                                           "--outage", format_number(m.outage_s)});
   std::string wout;
   int wrc = 0;
   {

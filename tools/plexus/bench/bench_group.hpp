@@ -66,8 +66,7 @@ Placement placement(const std::string& pin);
 GroupRun run_group(const Group& g, const Matrix& m, const NetnsPair* ns, const Plant& plant, const std::string& dir,
                    int size_to_delay);
 
-/// A file's text ("" if unreadable), and a number as the command line takes it.
+/// A file's text ("" if unreadable).
 std::string read_file(const std::string& path);
-std::string number(double v);
 
 }  // namespace plexus::cli::bench

@@ -1,12 +1,14 @@
 #include "bench/bench_report_data.hpp"
 
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <stdexcept>
 
+#include "plexus/scenario/format.hpp"
+
 namespace plexus::cli::bench_report_impl {
+using plexus::scenario::format_number;
 
 // ---- Reading run.json: of a failed or not_applicable cell any measure may be missing or null.
 
@@ -28,17 +30,10 @@ std::optional<double> number(const json& j, const Path& path) {
   return v->get<double>();
 }
 
-/// The shortest text that reads back as the same double ("60.1", not "60.100000000000001").
-std::string shortest(double v) {
-  char buf[64];
-  const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v);
-  return ec == std::errc() ? std::string(buf, end) : "";
-}
-
 /// A scalar as text (integers as integers); an array or object as compact JSON.
 std::string scalar_text(const json& v) {
   if (v.is_string()) return v.get<std::string>();
-  if (v.is_number_float()) return shortest(v.get<double>());
+  if (v.is_number_float()) return format_number(v.get<double>());
   if (v.is_null()) return "";
   return v.dump();
 }

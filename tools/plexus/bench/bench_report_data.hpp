@@ -20,8 +20,6 @@ using Path = std::vector<const char*>;
 const json* member(const json& j, const Path& path);
 /// The number at `path`, if there is one.
 std::optional<double> number(const json& j, const Path& path);
-/// The shortest text that reads back as the same double ("60.1", not "60.100000000000001").
-std::string shortest(double v);
 /// A scalar as text (integers as integers); an array or object as compact JSON.
 std::string scalar_text(const json& v);
 /// The member at `path` as text ("" if none).

@@ -8,8 +8,10 @@
 #include <system_error>
 
 #include "external_program.hpp"
+#include "plexus/scenario/format.hpp"
 
 namespace plexus::cli::bench_report_impl {
+using plexus::scenario::format_number;
 namespace {
 
 std::string file_part(const std::string& s) {
@@ -77,7 +79,7 @@ std::string tail_rows(const json& entry) {
     if (!p.is_array() || p.size() < 2 || !p[0].is_number() || !p[1].is_number()) continue;
     const double us = p[0].get<double>(), fraction = p[1].get<double>();
     const double tail = fraction < 1 ? 1 - fraction : count > 0 ? 1 / count : 0;
-    if (us > 0 && tail > 0) rows += shortest(us) + ' ' + shortest(tail) + '\n';
+    if (us > 0 && tail > 0) rows += format_number(us) + ' ' + format_number(tail) + '\n';
   }
   return rows;
 }
@@ -86,7 +88,7 @@ std::string tail_rows(const json& entry) {
 /// tail is spread out over decades instead of squashed against 1.
 std::optional<Figure> cdf_figure(const json& run, const Axes& axes, double size, const std::string& topology) {
   const auto rate = summary_rate(run);
-  Figure f{"cdf_" + shortest(size) + "_" + file_part(topology), "cdf", "", "", "", {}};
+  Figure f{"cdf_" + format_number(size) + "_" + file_part(topology), "cdf", "", "", "", {}};
   for (const json* c : ok_cells(run, topology, size)) {
     const json* entry = latency_at(*c, rate);
     const std::string rows = entry ? tail_rows(*entry) : "";
@@ -109,7 +111,7 @@ std::optional<Figure> cdf_figure(const json& run, const Axes& axes, double size,
 /// The x tics of sizes: "64 B", "4 KiB", ...
 std::string size_tics(const std::vector<double>& sizes) {
   std::string tics;
-  for (double s : sizes) tics += (tics.empty() ? "" : ", ") + gp_quote(size_text(s)) + " " + shortest(s);
+  for (double s : sizes) tics += (tics.empty() ? "" : ", ") + gp_quote(size_text(s)) + " " + format_number(s);
   return "set xtics (" + tics + ")\n";
 }
 
@@ -127,7 +129,7 @@ std::optional<Figure> throughput_figure(const json& run, const Axes& axes, const
     std::sort(points.begin(), points.end());
     std::string rows;
     for (const auto& [size, mb] : points) {
-      rows += shortest(size) + ' ' + shortest(mb) + '\n';
+      rows += format_number(size) + ' ' + format_number(mb) + '\n';
       if (std::find(sizes.begin(), sizes.end(), size) == sizes.end()) sizes.push_back(size);
     }
     const std::size_t i = static_cast<std::size_t>(&group - axes.groups.data());
@@ -143,7 +145,8 @@ std::optional<Figure> throughput_figure(const json& run, const Axes& axes, const
   f.settings =
       "set logscale x 2\nset logscale y\nset grid\nset key outside right top\n"
       "set xlabel 'payload size'\nset ylabel 'throughput (MB/s)'\n" +
-      size_tics(sizes) + "set xrange [" + shortest(sizes.front() / 1.5) + ":" + shortest(sizes.back() * 1.5) + "]\n";
+      size_tics(sizes) + "set xrange [" + format_number(sizes.front() / 1.5) + ":" + format_number(sizes.back() * 1.5) +
+      "]\n";
   return f;
 }
 
@@ -174,12 +177,13 @@ std::string rate_rows(const json& cell, double unpaced_x) {
                p99 = number(e, {"one_way_us", "p99"});
     if (!hz || !p50 || !p99 || !(*p50 > 0) || !(*p99 > 0)) continue;  // a log axis has no 0
     if (*hz > 0) paced.push_back({*hz, *p50, *p99});
-    if (*hz == 0) unpaced = shortest(unpaced_x) + ' ' + shortest(*p50) + ' ' + shortest(*p99) + '\n';
+    if (*hz == 0) unpaced = format_number(unpaced_x) + ' ' + format_number(*p50) + ' ' + format_number(*p99) + '\n';
   }
   if (paced.empty() && unpaced.empty()) return "";
   std::sort(paced.begin(), paced.end());
   std::string rows;
-  for (const auto& [hz, p50, p99] : paced) rows += shortest(hz) + ' ' + shortest(p50) + ' ' + shortest(p99) + '\n';
+  for (const auto& [hz, p50, p99] : paced)
+    rows += format_number(hz) + ' ' + format_number(p50) + ' ' + format_number(p99) + '\n';
   return rows + "\n" + unpaced;
 }
 
@@ -207,8 +211,8 @@ std::optional<Figure> rate_figure(const json& run, const Axes& axes, const std::
   }
   if (f.curves.empty()) return std::nullopt;
   std::string tics;
-  for (double hz : rates) tics += gp_quote(shown(hz)) + " " + shortest(hz) + ", ";
-  tics += "'unpaced' " + shortest(unpaced_x);
+  for (double hz : rates) tics += gp_quote(shown(hz)) + " " + format_number(hz) + ", ";
+  tics += "'unpaced' " + format_number(unpaced_x);
   const double split = std::sqrt(fastest * unpaced_x);
   f.title = "one-way latency against rate, " + size_text(*size) + ", " + topology;
   f.caption =
@@ -222,8 +226,9 @@ std::optional<Figure> rate_figure(const json& run, const Axes& axes, const std::
   f.settings =
       "set logscale xy\nset grid\nset key outside right top\nset xlabel 'rate (Hz)'\n"
       "set ylabel 'one-way latency (us)'\nset xtics (" +
-      tics + ")\nset xrange [" + shortest(slowest / 2) + ":" + shortest(unpaced_x * 2) + "]\n" + "set arrow from " +
-      shortest(split) + ", graph 0 to " + shortest(split) + ", graph 1 nohead dt 3 lc rgb '#888888'\n";
+      tics + ")\nset xrange [" + format_number(slowest / 2) + ":" + format_number(unpaced_x * 2) + "]\n" +
+      "set arrow from " + format_number(split) + ", graph 0 to " + format_number(split) +
+      ", graph 1 nohead dt 3 lc rgb '#888888'\n";
   return f;
 }
 

@@ -8,17 +8,15 @@
 #include <sstream>
 
 #include "plexus/base/html_escape.hpp"
+#include "plexus/base/report_page_style.hpp"
 
 namespace plexus::cli::bench_report_impl {
 namespace {
 
 std::string esc(const std::string& s) { return html_escape(s); }
 
+// The report's own tables; the page, headings and figures: kReportPageStyle.
 constexpr const char* kStyle = R"(
-body { font-family: sans-serif; margin: 0 auto; max-width: 1280px; padding: 0 1.5em 3em; color: #1a1a1a; }
-h1 { margin-top: 1em; }
-h2 { border-bottom: 1px solid #ccc; padding-bottom: .2em; margin-top: 2em; }
-code { font-size: 95%; }
 .wide { overflow-x: auto; }
 table.facts { border-collapse: collapse; margin: 1em 0; color: #333; }
 table.facts th, table.facts td { padding: .15em .8em .15em 0; text-align: left; vertical-align: top; }
@@ -36,11 +34,6 @@ table.bench tr.size-start td { border-top: 2px solid #555; }
 .best { font-weight: bold; background: #d8f0d8; color: #145214; }
 tr.failed td.status { color: #8a1010; font-weight: bold; }
 tr.not_applicable td.status { color: #666; }
-nav ul { columns: 3; }
-figure { margin: 1.5em 0; }
-figure img { max-width: 100%; height: auto; border: 1px solid #ddd; }
-figcaption { color: #333; margin-top: .3em; }
-figcaption b { display: block; }
 )";
 
 /// A measure of the summary table. Better is lower, or higher if `higher_is_better`.
@@ -361,7 +354,8 @@ std::string report_html(const json& run, const std::vector<Figure>& figures) {
   const std::string started = text(run, {"started_utc"});
   html << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
        << "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
-       << "<title>plexus bench: " << esc(started) << "</title>\n<style>" << kStyle << "</style>\n</head>\n<body>\n"
+       << "<title>plexus bench: " << esc(started) << "</title>\n<style>" << kReportPageStyle << kStyle
+       << "</style>\n</head>\n<body>\n"
        << "<h1>plexus bench: " << esc(started) << "</h1>\n";
   write_facts(html, run);
   html << "<nav><ul>\n<li><a href=\"#summary-section\">Summary</a></li>\n"

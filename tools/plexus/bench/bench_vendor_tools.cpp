@@ -13,10 +13,12 @@
 #include "cpu_affinity.hpp"
 #include "ddsperf.hpp"
 #include "external_program.hpp"
+#include "plexus/scenario/format.hpp"
 
 namespace plexus::cli::bench {
 namespace fs = std::filesystem;
 using Json = nlohmann::ordered_json;
+using plexus::scenario::format_number;
 
 VendorResult raw_fast_baseline(const Group& g, int size, double rate, const Matrix& m, const std::string& dir) {
   VendorResult v{"raw Fast DDS", nullptr, nullptr};
@@ -25,11 +27,11 @@ VendorResult raw_fast_baseline(const Group& g, int size, double rate, const Matr
   std::vector<std::string> base = {"--domain", d,
                                    "--depth",  std::to_string(g.qos.depth),
                                    "--size",   std::to_string(size),
-                                   "--rate",   number(rate),
+                                   "--rate",   format_number(rate),
                                    "--count",  std::to_string(count)};
   if (g.qos.reliability == rt::QosProfile::Reliability::best_effort) base.push_back("--best-effort");
   if (g.transport == "shm") base.push_back("--shm");
-  std::vector<std::string> pa = {"pong", "--duration", number(count / std::max(rate, 1000.0) + 30)};
+  std::vector<std::string> pa = {"pong", "--duration", format_number(count / std::max(rate, 1000.0) + 30)};
   pa.insert(pa.end(), base.begin(), base.end());
   const Placement cpus = placement(m.pin);
   pid_t pong = -1;
@@ -40,7 +42,7 @@ VendorResult raw_fast_baseline(const Group& g, int size, double rate, const Matr
   const std::string samples = dir + "/raw_fast_rtt.txt";
   // Ten unmeasured pings (not 100: at 1 MiB each lost one costs its 1 s wait), then the phase.
   std::vector<std::string> qa = {
-      "ping", "--samples", samples, "--warmup", "10", "--duration", number(m.seconds_per_phase + 1)};
+      "ping", "--samples", samples, "--warmup", "10", "--duration", format_number(m.seconds_per_phase + 1)};
   qa.insert(qa.end(), base.begin(), base.end());
   std::string out;
   {
