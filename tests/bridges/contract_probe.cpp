@@ -56,6 +56,7 @@
 #include "plexus/runtime/discovery.hpp"
 #include "plexus/runtime/participant.hpp"
 #include "plexus/runtime/qos.hpp"
+#include "plexus/runtime/transport.hpp"
 
 namespace {
 
@@ -438,6 +439,8 @@ int main(int argc, char** argv) {
   double discover_s = 3, discover_timeout_s = 5, measure_s = 8;
   bool drive = false, no_command_reader = false;
   app.add_option("--dds", dds, "fast or cyclone")->check(CLI::IsMember({"fast", "cyclone"}));
+  std::string transport = "auto";
+  app.add_option("--transport", transport, "auto, udp or shm (docs/runtime.md, Transports)");
   app.add_option("--domain", domain, "DDS domain")->check(CLI::Range(0, 232));
   app.add_option("--robot", robot, "robot whose topics are checked");
   app.add_option("--contract", contract_file, "contract YAML (tests/bridges/unicycle_contract.yaml)")->required();
@@ -483,6 +486,7 @@ int main(int argc, char** argv) {
     po.vendor = rt::parse_vendor(dds);
     po.domain_id = domain;
     po.name = "contract_probe";
+    po.network.transport = rt::parse_transport(transport);
     auto p = rt::Participant::create(po);
     const auto profiles = rt::QosProfiles::load(rt::default_qos_file());
 

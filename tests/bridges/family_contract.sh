@@ -32,7 +32,9 @@ contract=$here/${family}_contract.yaml
 rm -rf "$out" && mkdir -p "$out"
 pids=()
 trap 'for p in "${pids[@]}"; do kill -TERM "$p" 2>/dev/null; done; wait 2>/dev/null' EXIT
-common=(--robot "$robot" --params "$params" --step "$step" --dds "$vendor" --domain "$domain")
+# TRANSPORT (environment, optional): auto, udp or shm for the source and the probe.
+transport=(--transport "${TRANSPORT:-auto}")
+common=(--robot "$robot" --params "$params" --step "$step" --dds "$vendor" --domain "$domain" "${transport[@]}")
 case $source in
   simulator)
     "$bin/plant_simulator" "${common[@]}" > "$out/source.out" 2> "$out/source.err" &
@@ -55,7 +57,7 @@ case $source in
     pids+=($!) ;;
   *) echo "family_contract.sh: SOURCE: simulator, serial or udp"; exit 2 ;;
 esac
-"$bin/tests/contract_probe" --dds "$vendor" --domain "$domain" --robot "$robot" --contract "$contract" \
+"$bin/tests/contract_probe" --dds "$vendor" --domain "$domain" "${transport[@]}" --robot "$robot" --contract "$contract" \
   --discover 3 --measure 6 --label "$family $source/$vendor" --out "$out/result.json" > "$out/probe.out" 2>&1
 rc=$?
 cat "$out/probe.out"

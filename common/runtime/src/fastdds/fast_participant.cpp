@@ -43,6 +43,9 @@ namespace fdds = eprosima::fastdds::dds;
 using eprosima::fastrtps::rtps::IPLocator;
 using eprosima::fastrtps::rtps::Locator_t;
 
+/// The SHM transport's healthy_check_timeout_ms (where it is set says why).
+constexpr uint32_t kShmHealthyCheckMs = 90;
+
 eprosima::fastrtps::Duration_t to_fast_duration(double s) {
   if (s <= 0) return eprosima::fastrtps::c_TimeInfinite;
   const auto sec = static_cast<int32_t>(s);
@@ -382,21 +385,32 @@ FastParticipant::FastParticipant(const ParticipantOptions& o)
   });
   fdds::DomainParticipantQos pq;
   pq.name(o.name);
-  // Transport: UDPv4 on the configured interface only (loopback by default), and with
-  // NetworkOptions::transport shm, Fast DDS's shared-memory transport beside it. A peer
+  // Transport: UDPv4 on the configured interface only (loopback by default), and unless
+  // NetworkOptions::transport is udp, Fast DDS's shared-memory transport beside it. A peer
   // announces both; Fast DDS uses shared memory with a Fast DDS peer of the same host (same
   // host id in the SHM locator) and UDP with any other: a Cyclone DDS peer ignores the SHM
   // locators, another host cannot reach them. RTPS messages are encrypted before either
   // transport carries them, so DDS Security works over both (docs/runtime.md, Transports).
-  // Only with transport shm (docs/runtime.md, Transports, says why not by default). With it,
-  // plexus keeps the participant off an SHM port that a writer still holds from a killed
-  // process (shm_ports.hpp: Fast DDS 2.9 would otherwise let a restarted reader take that
-  // port and never hear from such a writer again), under a host-wide lock until the
+  // With shared memory (the default since 2026-11-30; docs/runtime.md, Transports), plexus keeps the participant off an
+  // SHM port that a writer still holds from a killed process (shm_ports.hpp: Fast DDS 2.9 would otherwise let a
+  // restarted reader take that port and never hear from such a writer again), under a host-wide lock until the
   // participant exists.
   pq.transport().use_builtin_transports = false;
   std::optional<detail::ShmParticipantLock> shm_lock;
   if (fast_shared_memory(o.network.transport)) {
-    pq.transport().user_transports.push_back(std::make_shared<eprosima::fastdds::rtps::SharedMemTransportDescriptor>());
+    // The port health check's period, 1000 ms by default. A process that sends to a port for
+    // the first time checks that every listener waiting on it has woken since the last
+    // watchdog round, and if one has not, sleeps a third of this period before it checks
+    // again (SharedMemGlobal.hpp, Port::healthy_check; eProsima/Fast-DDS issue 6535). An idle
+    // listener wakes every third of the period, so the first write to a reader that just
+    // joined could block the writing thread for up to 333 ms, in about one case in four
+    // (bridges.balancing_contract_serial_fast: a 500 Hz bridge's samples 330 ms late, then in
+    // a burst). At 90 ms the wait is at most 30 ms and rarer; idle listeners wake 33 times a
+    // second; a listener must still be unscheduled for about 60 ms to be taken for dead (the
+    // watchdog's own round stays 1 s). docs/runtime.md, Transports.
+    auto shm = std::make_shared<eprosima::fastdds::rtps::SharedMemTransportDescriptor>();
+    shm->healthy_check_timeout_ms(kShmHealthyCheckMs);
+    pq.transport().user_transports.push_back(shm);
     shm_lock.emplace();
     const auto& pp = pq.wire_protocol().port;
     pq.wire_protocol().participant_id =

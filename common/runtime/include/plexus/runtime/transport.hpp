@@ -1,9 +1,10 @@
 // How DDS samples travel between processes of one host (docs/runtime.md, Transports).
 //
-//   auto  plexus's choice, the default: UDPv4 on both vendors. Fast DDS's shared memory is
-//         not the default: with it, a 500 Hz serial bridge's samples stalled for about 330 ms
-//         when a reader matched (bridges.balancing_contract_serial_fast failed 10 of 17 runs,
-//         over UDP 0 of 6; docs/runtime.md, Transports).
+//   auto  plexus's choice, the default: Fast DDS's shared-memory transport between Fast DDS
+//         participants of one host, UDPv4 to everything else; Cyclone DDS on UDPv4 (as
+//         `shm`, without Cyclone's line on stderr). UDP until 2026-11-30: a 500 Hz serial
+//         bridge's samples stalled for about 330 ms when a reader joined, Fast DDS 2.9's port
+//         health check, now bounded (fast_participant.cpp, docs/runtime.md).
 //   udp   UDPv4 only, on both vendors: every sample crosses the loopback interface.
 //   shm   Fast DDS: its shared-memory transport between Fast DDS participants of one host
 //         (UDPv4 to everything else: other hosts, Cyclone DDS peers). RTPS messages as over
@@ -24,7 +25,8 @@ enum class Transport { automatic, udp, shm };
 Transport parse_transport(std::string_view name, std::string_view origin = "--transport");
 const char* to_string(Transport t);
 
-/// True when a Fast DDS participant uses shared memory with its peers of this host (`shm`).
-inline bool fast_shared_memory(Transport t) { return t == Transport::shm; }
+/// True when a Fast DDS participant uses shared memory with its peers of this host (`auto`,
+/// `shm`).
+inline bool fast_shared_memory(Transport t) { return t != Transport::udp; }
 
 }  // namespace plexus::rt
