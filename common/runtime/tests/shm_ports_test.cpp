@@ -107,6 +107,37 @@ TEST_F(ShmPorts, PicksTheFirstIdPastAHeldPort) {
   EXPECT_EQ(pick_shm_participant_id(0, 8, kPorts, dir_), -1);  // the zombie is harmless now
 }
 
+TEST_F(ShmPorts, RemovesOnlyTheSegmentsOfDeadParticipants) {
+  const std::string dead = dir_ + "/fastrtps_0123456789abcdef";    // lock free, nobody maps it
+  const std::string live = dir_ + "/fastrtps_fedcba9876543210";    // its owner holds the lock
+  const std::string mapped = dir_ + "/fastrtps_00000000000000aa";  // lock free, a reader maps it
+  const std::string odd = dir_ + "/fastrtps_0123";                 // not a participant segment
+  for (const auto& f : {dead, live, mapped, odd}) {
+    touch(f, 4096);
+    touch(f + "_el");
+  }
+  touch(file(7411), 4096);  // a dead port: left to Fast DDS and pick_shm_participant_id
+  touch(file(7411, "_el"));
+  HeldLock owner(live + "_el");
+  const int fd = ::open(mapped.c_str(), O_RDWR);
+  void* map = ::mmap(nullptr, 4096, PROT_READ, MAP_SHARED, fd, 0);
+  ::close(fd);
+  ASSERT_NE(map, MAP_FAILED);
+
+  EXPECT_EQ(plexus::rt::detail::remove_zombie_segments(dir_), 1);
+  EXPECT_FALSE(fs::exists(dead));
+  EXPECT_FALSE(fs::exists(dead + "_el"));
+  EXPECT_TRUE(fs::exists(live));
+  EXPECT_TRUE(fs::exists(mapped));
+  EXPECT_TRUE(fs::exists(odd));
+  EXPECT_TRUE(fs::exists(file(7411)));
+
+  ::munmap(map, 4096);
+  EXPECT_EQ(plexus::rt::detail::remove_zombie_segments(dir_), 1);  // unmapped now
+  EXPECT_FALSE(fs::exists(mapped));
+  EXPECT_TRUE(fs::exists(live));
+}
+
 TEST_F(ShmPorts, ParticipantLockExcludesAnotherHolder) {
   {
     plexus::rt::detail::ShmParticipantLock lock(dir_);

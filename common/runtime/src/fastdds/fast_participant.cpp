@@ -412,6 +412,9 @@ FastParticipant::FastParticipant(const ParticipantOptions& o)
     shm->healthy_check_timeout_ms(kShmHealthyCheckMs);
     pq.transport().user_transports.push_back(shm);
     shm_lock.emplace();
+    // The segments of killed or crashed Fast DDS processes (0.5 MiB of memory each) go now,
+    // so that a service restarted again and again does not fill /dev/shm (shm_ports.hpp).
+    detail::remove_zombie_segments();
     const auto& pp = pq.wire_protocol().port;
     pq.wire_protocol().participant_id =
         detail::pick_shm_participant_id(static_cast<uint32_t>(o.domain_id), o.network.max_participants_per_host,

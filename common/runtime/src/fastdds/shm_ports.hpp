@@ -48,6 +48,15 @@ struct RtpsPorts {
 int pick_shm_participant_id(uint32_t domain, int limit, const RtpsPorts& ports = {},
                             const std::string& shm_dir = "/dev/shm");
 
+/// Removes the shared-memory segments that Fast DDS participants of dead processes left
+/// behind: `fastrtps_<16 hex digits>` (a participant's segment, 0.5 MiB by default) whose lock
+/// file `..._el` no live process holds and which no process maps, with that lock file. Fast
+/// DDS 2.9 unlinks its segment only when the participant closes, so every SIGKILLed or crashed
+/// process leaves its segment in /dev/shm (tmpfs: memory) until `fastdds shm clean` runs.
+/// Ports (`fastrtps_port<N>`) are not touched: Fast DDS resets a zombie port itself, and
+/// pick_shm_participant_id keeps off one still held. Returns how many segments it removed.
+int remove_zombie_segments(const std::string& shm_dir = "/dev/shm");
+
 /// An exclusive lock on `shm_dir`/plexus_fastdds_participants.lock while it lives: held from
 /// the choice above until Fast DDS has opened the participant's ports. Without the file (no
 /// permission), no lock.
