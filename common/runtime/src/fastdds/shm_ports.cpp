@@ -21,9 +21,8 @@ namespace plexus::rt::detail {
 namespace {
 
 // The inodes of the files that processes whose memory maps this one may read have mapped (any
-// device: /dev/shm is one tmpfs). Processes of other users are not readable without
-// privileges and so count as mapping nothing. `wanted`: stop at the first of these (empty:
-// read every map).
+// device: /dev/shm is one tmpfs), among `wanted` (empty: all of them). Processes of other
+// users are not readable without privileges and so count as mapping nothing.
 std::set<unsigned long long> mapped_inodes(const std::set<unsigned long long>& wanted = {}) {
   std::set<unsigned long long> found;
   DIR* proc = opendir("/proc");
