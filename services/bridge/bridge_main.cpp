@@ -8,7 +8,6 @@
 // Under `plexus launch`: --part FILE, the robot's section with its `source:` (docs/bridges.md).
 // Runs until SIGINT/SIGTERM, then sends a last STOP frame, prints one JSON line with its
 // counters on stdout and exits 0. Bad parameters: one line naming where, exit 2.
-#include <sched.h>
 #include <sys/prctl.h>
 
 #include <CLI/CLI.hpp>
@@ -96,9 +95,8 @@ int main(int argc, char** argv) {
                "Started by plexus launch: a bridge starts at once; the run's cycle (--cycle-sync) is its start's");
   app.add_option("--timeout", timeout, "Accepted for plexus launch (lockstep only)");
   app.add_option("--priority", priority, "Realtime: SCHED_FIFO priority of its threads, 1 .. 99 (0: normal scheduling)")
-      ->check(CLI::Range(0, 99));
-  app.add_option("--cpu", cpu, "Realtime: pin its threads to this CPU (0, 1, ...)")
-      ->check(CLI::Range(0, CPU_SETSIZE - 1));
+      ->check(fifo_priority());
+  app.add_option("--cpu", cpu, "Realtime: pin its threads to this CPU (0, 1, ...)")->check(cpu_index());
   app.add_option("--log-level", log_level, "trace, debug, info, warn, error, critical or off");
   try {
     app.parse(argc, argv);

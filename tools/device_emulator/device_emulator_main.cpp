@@ -12,8 +12,6 @@
 // Runs until SIGINT/SIGTERM (or --duration), then prints one JSON line (counters, faults,
 // the plant's last state) on stdout and exits 0. A bad option or parameter: one line
 // `device_emulator: error: ...` on stderr, exit 2.
-#include <sched.h>
-
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
@@ -30,6 +28,7 @@
 #include "emulated_device.hpp"
 #include "emulator_link.hpp"
 #include "fault_script.hpp"
+#include "plexus/base/cli_style.hpp"
 #include "plexus/base/clock.hpp"
 #include "plexus/base/input_error.hpp"
 #include "plexus/base/logging.hpp"
@@ -157,9 +156,8 @@ int main(int argc, char** argv) {
   app.add_option("--priority", priority,
                  "SCHED_FIFO priority of its loop and link threads, 1 .. 99 (0: normal scheduling), as a device's "
                  "firmware runs")
-      ->check(CLI::Range(0, 99));
-  app.add_option("--cpu", cpu, "Pin its loop and link threads to this CPU (0, 1, ...)")
-      ->check(CLI::Range(0, CPU_SETSIZE - 1));
+      ->check(fifo_priority());
+  app.add_option("--cpu", cpu, "Pin its loop and link threads to this CPU (0, 1, ...)")->check(cpu_index());
   app.add_option("--log-level", log_level, "trace, debug, info, warn, error, critical or off");
   try {
     app.parse(argc, argv);

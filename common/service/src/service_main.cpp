@@ -15,7 +15,6 @@
 // run's common grid, --mode lockstep to step with the launcher's clock.
 //
 // Bad parameters: one line naming file, line and key, exit 2.
-#include <sched.h>
 #include <sys/prctl.h>
 
 #include <CLI/CLI.hpp>
@@ -132,8 +131,8 @@ int plexus::service::run_service(int argc, char** argv, const std::string& self)
       ->check(CLI::IsMember({"lockstep", "realtime"}));
   app.add_flag("--start-signal", start_signal, "Realtime: wait for the launcher's start signal (plexus launch)");
   app.add_option("--priority", priority, "Realtime: SCHED_FIFO priority, 1 .. 99 (0: normal scheduling)")
-      ->check(CLI::Range(0, 99));
-  app.add_option("--cpu", cpu, "Realtime: pin the loop to this CPU (0, 1, ...)")->check(CLI::Range(0, CPU_SETSIZE - 1));
+      ->check(fifo_priority());
+  app.add_option("--cpu", cpu, "Realtime: pin the loop to this CPU (0, 1, ...)")->check(cpu_index());
   app.add_option("--log-level", log_level, "trace, debug, info, warn, error, critical or off");
   std::vector<std::string> plugins;
   app.add_option("--plugin", plugins,

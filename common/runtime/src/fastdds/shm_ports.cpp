@@ -104,8 +104,7 @@ int pick_shm_participant_id(uint32_t domain, int limit, const RtpsPorts& ports, 
 
 int remove_zombie_segments(const std::string& shm_dir) {
   // Candidates first (a directory read and an flock each), /proc only if there are any.
-  std::set<unsigned long long> candidates;
-  std::vector<std::pair<std::string, unsigned long long>> segments;
+  std::vector<std::pair<std::string, unsigned long long>> segments;  // path, inode
   DIR* dir = opendir(shm_dir.c_str());
   if (dir == nullptr) return 0;
   while (const dirent* e = readdir(dir)) {
@@ -114,11 +113,12 @@ int remove_zombie_segments(const std::string& shm_dir) {
     const std::string path = shm_dir + "/" + name;
     struct stat st {};
     if (::stat(path.c_str(), &st) != 0 || !lock_file_free(path + "_el")) continue;
-    candidates.insert(static_cast<unsigned long long>(st.st_ino));
     segments.emplace_back(path, static_cast<unsigned long long>(st.st_ino));
   }
   closedir(dir);
   if (segments.empty()) return 0;
+  std::set<unsigned long long> candidates;
+  for (const auto& segment : segments) candidates.insert(segment.second);
   const std::set<unsigned long long> mapped = mapped_inodes(candidates);
   int removed = 0;
   for (const auto& [path, ino] : segments) {

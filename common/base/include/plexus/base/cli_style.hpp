@@ -1,6 +1,8 @@
 // The command-line style every plexus program shares (docs/tools.md, "One CLI style").
 #pragma once
 
+#include <sched.h>
+
 #include <CLI/CLI.hpp>
 
 #include <cmath>
@@ -31,5 +33,12 @@ inline CLI::Validator positive(const std::string& unit) {
       },
       unit == "s" ? "SECONDS > 0" : unit + " > 0");
 }
+
+/// A realtime program's --priority: SCHED_FIFO 1 .. 99, or 0 for normal scheduling.
+inline CLI::Validator fifo_priority() { return CLI::Range(0, 99); }
+
+/// A realtime program's --cpu: the CPU to pin to, 0 .. CPU_SETSIZE - 1 (no negative "none":
+/// without the option nothing is pinned).
+inline CLI::Validator cpu_index() { return CLI::Range(0, CPU_SETSIZE - 1); }
 
 }  // namespace plexus
