@@ -18,6 +18,12 @@
 // The same scenario and seed therefore give the same log and digest as `plexus sim`,
 // whatever the vendors and the split. Waiting is bounded: a missing sample fails the run
 // after the timeout with a message naming the signal, its producer and the step.
+//
+// Threads: a host's steps and the clock's recording run on the DDS receive threads, the
+// thread that received a sample going on as far as it allows (src/work_pump.hpp,
+// StepExecutor::step_from), one thread at a time; the thread that called run() only
+// watches the stop flag, the bounded waits (a wait of a second or more is logged with its
+// step and producer) and the end (docs/performance.md, section 4).
 #pragma once
 
 #include <algorithm>
@@ -106,6 +112,8 @@ class LockstepClock {
   using SampleTap = std::function<void(std::size_t signal, const msg::TypeSupport& type, const void* message,
                                        const rt::SampleMeta&, const std::vector<unsigned char>& cdr)>;
   /// Runs every step and returns the log (the same as `plexus sim`'s). Throws LockstepError.
+  /// `observer` and `tap` are called on the thread that records (a DDS receive thread, one
+  /// at a time, never after run() returns): keep them short, as a status line once a second.
   scenario::RunLog run(const std::atomic<bool>& stop, const scenario::StepObserver& observer = {},
                        const SampleTap& tap = {});
   /// The scenario's signals, by the index SampleTap reports.
@@ -115,8 +123,8 @@ class LockstepClock {
   /// (a host runs up to lead_steps past the latest tick: the first tick at or after k - lead)
   /// to the producer publishing its sample of step k, for the steps after the first lead_steps (both wall-clock stamps:
   /// one machine, or synchronised clocks), over the most recent samples (up to 4096) since the previous call. Call it
-  /// from the observer (the run's thread); it does not allocate once `out` has grown to
-  /// the producer count.
+  /// from the observer (the thread that records); it does not allocate once `out` has grown
+  /// to the producer count.
   struct ProducerStatus {
     std::string producer;
     uint64_t samples = 0;

@@ -21,6 +21,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -130,6 +131,9 @@ class WireSubscriber {
   void keep_raw() { keep_raw_ = true; }
   const std::vector<unsigned char>& raw() const { return raw_; }
   bool wait(int64_t timeout_ns) { return reader_->wait(timeout_ns); }
+  /// `fn` is called on the DDS receive thread when a message may be there to take
+  /// (rt::ReaderBackend::set_data_callback; take() stays the caller's). Once.
+  void on_data(std::function<void()> fn) { reader_->set_data_callback(std::move(fn)); }
   int matched_count() const { return reader_->matched_count(); }
   const WireSignal& wire() const { return wire_; }
   WireSignal& wire() { return wire_; }

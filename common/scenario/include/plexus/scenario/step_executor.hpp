@@ -56,6 +56,23 @@ class StepExecutor {
   void step_component(std::size_t component, int64_t k, const RemoteInput& remote, const OutputSink& sink,
                       const Gate& gate = {});
 
+  /// Runs base step k of the hosted components from component `from` on, as step() runs
+  /// them, and stops before the first one that steps at k and reads a sample produced in
+  /// another process that `have(signal, due)` says has not arrived (remote_inputs_ready).
+  /// Returns that component's index, or the component count once step k is complete; the
+  /// next call resumes there. A distributed lockstep host runs its steps with it as samples
+  /// arrive, on the thread that received them (lockstep.hpp). Does not allocate.
+  template <class Have>
+  std::size_t step_from(int64_t k, std::size_t from, Have&& have, const RemoteInput& remote, const OutputSink& sink) {
+    const std::size_t n = scenario_.components.size();
+    for (std::size_t ci = from; ci < n; ++ci) {
+      if (!hosted_[ci] || k % scenario_.components[ci].period_steps != 0) continue;
+      if (!remote_inputs_ready(ci, k, have)) return ci;
+      run_component(ci, k, remote, sink, {});
+    }
+    return n;
+  }
+
   /// Asks `have(signal, due)` for every input of component i produced in another process,
   /// with the step whose sample the component's step k reads; true if every answer is true
   /// (or it reads none). Does not allocate.
