@@ -241,8 +241,8 @@ scenario::RunLog LockstepClock::run(const std::atomic<bool>& stop, const scenari
       told = false;
     } else if (!told) {
       told = true;
-      spdlog::warn("lockstep: the clock has waited {} for '{}' (produced by '{}') of {}",
-                   lockstep_seconds(static_cast<double>(stalled) * 1e-9), spec.name, spec.producer, lockstep_step(k));
+      spdlog::warn("lockstep: the clock has waited {:.1f} s for '{}' (produced by '{}') of {}",
+                   static_cast<double>(stalled) * 1e-9, spec.name, spec.producer, lockstep_step(k));
     }
   }
   m.pump.close();

@@ -216,9 +216,9 @@ int64_t LockstepHost::run(const std::atomic<bool>& stop) {
       told = false;
     } else if (!told) {
       told = true;
-      spdlog::warn("lockstep: host at {} has waited {} for '{}' (produced by '{}') of {}",
-                   lockstep_step(m.expected.load()), lockstep_seconds(static_cast<double>(stalled) * 1e-9), spec.name,
-                   spec.producer, lockstep_step(due));
+      spdlog::warn("lockstep: host at {} has waited {:.1f} s for '{}' (produced by '{}') of {}",
+                   lockstep_step(m.expected.load()), static_cast<double>(stalled) * 1e-9, spec.name, spec.producer,
+                   lockstep_step(due));
     }
   }
   m.pump.close();
