@@ -182,8 +182,9 @@ set_tests_properties(cli.scenario_loop_unknown_member cli.scenario_loop_one_memb
 include(${CMAKE_CURRENT_LIST_DIR}/recordings.cmake)
 # plexus service list (issue 31, docs/tools.md): two services alone, on Fast DDS and Cyclone
 # DDS, listed from either vendor with their names, host, state, rate and typed topics. Domain 184.
+# Domain 29: it used 184, tools.topic_info_incompatible_fast's (they ran in different phases only by their labels).
 add_test(NAME tools.service_list
-         COMMAND ${CMAKE_CURRENT_LIST_DIR}/service_list.sh ${CMAKE_BINARY_DIR}/bin ${PROJECT_SOURCE_DIR}/deploy 184
+         COMMAND ${CMAKE_CURRENT_LIST_DIR}/service_list.sh ${CMAKE_BINARY_DIR}/bin ${PROJECT_SOURCE_DIR}/deploy 29
                  ${CMAKE_BINARY_DIR}/test-runs/tools/service_list)
 set_tests_properties(tools.service_list PROPERTIES LABELS "cli;multiprocess;light" TIMEOUT 60)
 # plexus param (issue 31, docs/parameters.md): the observer's L and the controller's k1 changed
