@@ -25,13 +25,17 @@ fail=0
 bad() { echo "FAIL: $*"; fail=1; }
 param() { "$bin/plexus" param "$@" --dds "$cli" --domain "$domain" --timeout 20; }
 
-"$bin/plexus" launch "$scenario" --set duration=720 --dds "$vendor" --domain "$domain" -o "$out/run" \
+# The run must outlast the seven param commands below (each a participant's discovery and a
+# round trip, 1-2 s): 2160 s simulated, 216 000 steps, 14-30 s in lockstep on an idle machine
+# since the steps run on the receive thread (2026-11-30; 720 s, the length before, ended in
+# 5-7 s on Cyclone DDS and a command found no service). A run that ended first is named below.
+run_s=2160
+"$bin/plexus" launch "$scenario" --set duration=$run_s --dds "$vendor" --domain "$domain" -o "$out/run" \
   --record "$out/run.mcap" > "$out/launch.log" 2>&1 &
 launch=$!
 trap 'kill $launch 2> /dev/null; wait 2> /dev/null' EXIT
 
-# The 720 s run takes 12 s (Cyclone DDS) to 25 s (Fast DDS) in lockstep on an idle machine; the
-# two changes go first, then the checks of refusals.
+# The two changes go first, then the checks of refusals.
 param get "$observer" L > "$out/get0.txt" 2>&1 || bad "param get L before the change: $(cat "$out/get0.txt")"
 grep -qx "observer.L = 0.6" "$out/get0.txt" || bad "param get L: expected 'observer.L = 0.6', got: $(cat "$out/get0.txt")"
 param set "$observer" L 2.5 --json > "$out/set_L.json" 2> "$out/set_L.err" || bad "param set L 2.5: $(cat "$out/set_L.err")"
@@ -53,6 +57,8 @@ rc=$?
 param list "$controller" --json > "$out/list.json" 2> "$out/list.err" || bad "param list: $(cat "$out/list.err")"
 [ "$(jq -r '[.[].key] | join(",")' "$out/list.json" 2> /dev/null)" = "controller.k1,controller.k2,controller.k3" ] ||
   bad "param list of the controller: $(cat "$out/list.json")"
+kill -0 $launch 2> /dev/null ||
+  bad "the lockstep run ended before the param commands did (the checks above then find no service): lengthen run_s"
 wait $launch
 rc=$?
 trap - EXIT
@@ -77,7 +83,7 @@ cat "$out/run/scenario.resolved.yaml" "$out/changes.yaml" > "$out/replay.yaml"  
 grep -v "controller.k1" "$out/replay.yaml" > "$out/replay_L.yaml"
 "$bin/plexus" sim "$out/replay.yaml" -q -o "$out/sim" > /dev/null 2> "$out/sim.err" || bad "sim with the changes: $(cat "$out/sim.err")"
 "$bin/plexus" sim "$out/replay_L.yaml" -q -o "$out/sim_L" > /dev/null 2> "$out/sim_L.err" || bad "sim with L: $(cat "$out/sim_L.err")"
-"$bin/plexus" sim "$scenario" --set duration=720 -q -o "$out/sim_none" > /dev/null 2> "$out/sim_none.err" || bad "sim: $(cat "$out/sim_none.err")"
+"$bin/plexus" sim "$scenario" --set duration=$run_s -q -o "$out/sim_none" > /dev/null 2> "$out/sim_none.err" || bad "sim: $(cat "$out/sim_none.err")"
 launched=$(jq -r .digest "$out/run/metrics.json") replayed=$(jq -r .digest "$out/sim/metrics.json")
 unchanged=$(jq -r .digest "$out/sim_none/metrics.json")
 echo "digests: launch $launched, sim with the recorded changes $replayed, sim without $unchanged"
