@@ -32,7 +32,9 @@ echo "--out mine: exit $rc: $err"
 echo "$err" | grep -q 'is not a plexus run folder' || fail "the refusal does not say why"
 [ "$(cat mine/notes.txt)" = precious ] || fail "the foreign folder was touched"
 
-"$plexus" launch "$scenario" --quiet --domain "$domain" --set duration=600 --out interrupted > launch.out 2> launch.err &
+# Long enough never to end before the Ctrl-C: 600 s of this open-loop scenario took 1.7-3.3 s
+# in lockstep once the steps ran on the receive thread (2026-11-30); 6000 s take 17-33 s.
+"$plexus" launch "$scenario" --quiet --domain "$domain" --set duration=6000 --out interrupted > launch.out 2> launch.err &
 pid=$!
 for _ in $(seq 1 300); do  # up to 30 s for the run to start (the status line needs processes up)
   grep -q 'started pid' interrupted/logs/*.log 2>/dev/null && break

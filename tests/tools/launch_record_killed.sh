@@ -11,7 +11,9 @@ launcher=
 cleanup() { [ -n "$launcher" ] && kill -9 "$launcher" 2> /dev/null; return 0; }
 trap cleanup EXIT
 fail() { echo "FAIL: $*"; exit 1; }
-"$plexus" launch "$scenario" --set duration=600 --dds "$vendor" --domain "$domain" --record "$rec" --out "$work/run" \
+# Long enough never to end before it is killed: 600 s of unicycle_circle took 1.7 s on Cyclone
+# DDS in lockstep once the steps ran on the receive thread (2026-11-30); 6000 s take about 17 s.
+"$plexus" launch "$scenario" --set duration=6000 --dds "$vendor" --domain "$domain" --record "$rec" --out "$work/run" \
   --quiet > "$work/launch.log" 2>&1 &
 launcher=$!
 chunks=0
