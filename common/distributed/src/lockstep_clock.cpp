@@ -14,7 +14,6 @@
 #include "plexus/base/clock.hpp"
 #include "plexus/distributed/lockstep.hpp"
 #include "pumped_run.hpp"
-#include "work_pump.hpp"
 
 namespace plexus::distributed {
 
@@ -25,12 +24,7 @@ int64_t step_ns(const scenario::Scenario& sc) { return std::llround(sc.step * 1e
 
 struct LockstepClock::Impl {
   // Declared first, destroyed last: the readers' callbacks (destroyed before) use them.
-  struct Advance {
-    Impl* m;
-    void operator()() const { m->advance(); }
-  };
-  detail::WorkPump<Advance> pump{Advance{this}};
-  detail::PumpedRun run;
+  detail::PumpedRun run{[this] { advance(); }};
   // Written by the pump, read by the run thread for its messages: the sample awaited.
   std::atomic<int64_t> at_step{0};
   std::atomic<std::size_t> at_signal{0};
@@ -68,7 +62,7 @@ struct LockstepClock::Impl {
     clock = p.publisher<msg::ClockStep>(kClockTopic, qos);
     for (const auto& spec : exec.signals()) {
       subs.push_back(std::make_unique<WireSubscriber>(p, spec, step_ns(sc), qos));
-      subs.back()->on_data([this] { pump.poke(); });
+      subs.back()->on_data([this] { run.poke(); });
       auto it = std::find(producers.begin(), producers.end(), spec.producer);
       producer_of.push_back(static_cast<std::size_t>(it - producers.begin()));
       if (it == producers.end()) producers.push_back(spec.producer);
@@ -218,34 +212,22 @@ scenario::RunLog LockstepClock::run(const std::atomic<bool>& stop, const scenari
   m.stride = clock_stride(m.opt);
   m.tick_wall.assign(static_cast<std::size_t>(m.lead + 2 * m.stride + 1), 0);
   const int64_t timeout = lockstep_ns(m.opt.timeout_s);
-  struct Closer {
-    decltype(m.pump)& pump;
-    ~Closer() { pump.close(); }  // nothing is recorded once run() returns
-  } closer{m.pump};
-  m.pump.open();
-  m.pump.poke();  // the first tick, and samples that arrived before the run
-  bool told = false;
-  while (!m.run.wait()) {
+  const auto awaited = [&m, &signals]() -> const SignalSpec& {
+    return signals[m.at_signal.load(std::memory_order_relaxed)];
+  };
+  const bool done = m.run.watch(stop, [&m, &awaited, timeout](int64_t stalled, bool tell) {
     const int64_t k = m.at_step.load(std::memory_order_relaxed);
-    const SignalSpec& spec = signals[m.at_signal.load(std::memory_order_relaxed)];
-    if (stop.load(std::memory_order_relaxed))
-      throw LockstepError("lockstep: stopped at " + lockstep_step(k) + ", waiting for the sample of '" + spec.name +
-                          "' from '" + spec.producer + "'");
-    m.pump.poke();
-    const int64_t stalled = m.run.stalled_ns(monotonic_ns());
+    const SignalSpec& spec = awaited();
     if (stalled >= timeout)
       throw LockstepError("lockstep: no sample of '" + spec.name + "' from '" + spec.producer + "' for " +
                           lockstep_step(k) + " within " + lockstep_seconds(m.opt.timeout_s));
-    // Every wait of a second or more is logged with its step and producer, to find a stall.
-    if (stalled < 1'000'000'000) {
-      told = false;
-    } else if (!told) {
-      told = true;
+    if (tell)  // every wait of a second or more, with its step and producer, to find a stall
       spdlog::warn("lockstep: the clock has waited {:.1f} s for '{}' (produced by '{}') of {}",
                    static_cast<double>(stalled) * 1e-9, spec.name, spec.producer, lockstep_step(k));
-    }
-  }
-  m.pump.close();
+  });
+  if (!done)
+    throw LockstepError("lockstep: stopped at " + lockstep_step(m.at_step.load(std::memory_order_relaxed)) +
+                        ", waiting for the sample of '" + awaited().name + "' from '" + awaited().producer + "'");
   m.tick.step_index(kEndOfRun);
   m.clock.publish(m.tick);
   // Deleting the writer drops an unacknowledged sample: without this wait a host could miss

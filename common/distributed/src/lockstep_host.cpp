@@ -17,7 +17,6 @@
 #include "plexus/distributed/lockstep.hpp"
 #include "plexus/distributed/param_server.hpp"
 #include "pumped_run.hpp"
-#include "work_pump.hpp"
 
 namespace plexus::distributed {
 namespace {
@@ -69,12 +68,7 @@ class RemoteSignal {
 
 struct LockstepHost::Impl {
   // Declared first, destroyed last: the readers' callbacks (destroyed before) use them.
-  struct Advance {
-    Impl* m;
-    void operator()() const { m->advance(); }
-  };
-  detail::WorkPump<Advance> pump{Advance{this}};
-  detail::PumpedRun run;
+  detail::PumpedRun run{[this] { advance(); }};
   // Written by the clock's callback, read by the pump and the run thread.
   std::atomic<int64_t> allowed{-1};  // the last step the clock allows
   std::atomic<bool> ended{false};    // the end-of-run tick arrived
@@ -116,7 +110,7 @@ struct LockstepHost::Impl {
     remote.resize(signals.size());
     for (std::size_t i : exec.remote_inputs()) {
       remote[i] = std::make_unique<RemoteSignal>(signals[i], p, qos, step_ns(sc), guard);
-      remote[i]->subscriber().on_data([this] { pump.poke(); });
+      remote[i]->subscriber().on_data([this] { run.poke(); });
     }
     clock = p.subscriber<msg::ClockStep>(kClockTopic, qos);
     clock.on_sample([this](const msg::ClockStep& tick, const rt::SampleMeta&) {
@@ -128,7 +122,7 @@ struct LockstepHost::Impl {
         int64_t a = allowed.load();
         while (a < k && !allowed.compare_exchange_weak(a, k)) {}
       }
-      pump.poke();
+      run.poke();
     });
   }
 
@@ -183,46 +177,30 @@ int64_t LockstepHost::run(const std::atomic<bool>& stop) {
   Impl& m = *impl_;
   const int64_t timeout = lockstep_ns(m.opt.timeout_s);
   m.last_tick_ns.store(monotonic_ns());
-  struct Closer {
-    decltype(m.pump)& pump;
-    ~Closer() { pump.close(); }  // no step runs once run() returns
-  } closer{m.pump};
-  m.pump.open();
-  m.pump.poke();  // samples that arrived before the run
-  bool told = false;
-  while (!m.run.wait() && !stop.load(std::memory_order_relaxed)) {
-    m.pump.poke();
-    const int64_t now = monotonic_ns();
+  m.run.watch(stop, [&m, timeout](int64_t stalled, bool tell) {
     const int64_t signal = m.waiting_signal.load(std::memory_order_relaxed);
-    const int64_t stalled = m.run.stalled_ns(now);
     if (signal < 0) {
       // The clock waits for our outputs, so silence here means the clock is gone; the
       // launcher's timeout covers a slow run, this one a dead launcher.
-      if (now - m.last_tick_ns.load() > 3 * timeout) {
+      if (monotonic_ns() - m.last_tick_ns.load() > 3 * timeout) {
         const int64_t allowed = m.allowed.load();
         throw LockstepError((allowed < 0 ? "lockstep: no clock: no step on '" + std::string(kClockTopic) + "'"
                                          : "lockstep: the clock stopped at " + lockstep_step(m.expected.load())) +
                             " for more than " + lockstep_seconds(static_cast<double>(3 * timeout) * 1e-9));
       }
-      continue;
+      return;
     }
     const auto& spec = m.exec.signals()[static_cast<std::size_t>(signal)];
     const int64_t due = m.waiting_due.load(std::memory_order_relaxed);
     if (stalled >= timeout)
       throw LockstepError("lockstep: no sample of '" + spec.name + "' (produced by '" + spec.producer + "') for " +
                           lockstep_step(due) + " within " + lockstep_seconds(static_cast<double>(timeout) * 1e-9));
-    // Every wait of a second or more is logged with its step and producer, to find a stall.
-    if (stalled < 1'000'000'000) {
-      told = false;
-    } else if (!told) {
-      told = true;
+    if (tell)  // every wait of a second or more, with its step and producer, to find a stall
       spdlog::warn("lockstep: host at {} has waited {:.1f} s for '{}' (produced by '{}') of {}",
                    lockstep_step(m.expected.load()), static_cast<double>(stalled) * 1e-9, spec.name, spec.producer,
                    lockstep_step(due));
-    }
-  }
-  m.pump.close();
-  return m.expected.load();
+  });
+  return m.expected.load();  // the steps run (watch() closed the pump: no step runs any more)
 }
 
 }  // namespace plexus::distributed
