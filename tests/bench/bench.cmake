@@ -13,7 +13,6 @@ set_tests_properties(bench.loss_two_ns PROPERTIES LABELS "bench;netns;multiproce
                      SKIP_RETURN_CODE 77)
 
 # Bad input: one line naming the flag, file or key; exit 2; nothing run.
-set(BENCH_EXPECT ${PROJECT_SOURCE_DIR}/tests/scripts/expect_exit.sh)
 foreach(case "pairs;--pairs: unknown DDS vendor 'opensplice';--pairs;fast-opensplice"
              "sizes;plexus bench: sizes: each must be in 0..1048576 bytes;--sizes;64,2000000"
              "topology;plexus bench: topologies: unknown value 'three_hosts';--topologies;three_hosts"
@@ -24,7 +23,7 @@ foreach(case "pairs;--pairs: unknown DDS vendor 'opensplice';--pairs;fast-opensp
   list(GET case 1 message)
   list(GET case 2 flag)
   list(GET case 3 value)
-  add_test(NAME bench.bad_${name} COMMAND ${BENCH_EXPECT} 2 "${message}" $<TARGET_FILE:plexus> bench ${flag} ${value}
-                                          -o ${BENCH_RUNS}/bad_${name})
-  set_tests_properties(bench.bad_${name} PROPERTIES LABELS "bench;cli" TIMEOUT 60)
+  plexus_refusal_test(bench.bad_${name} LABELS bench cli TIMEOUT 60
+                      ERROR "${message}"
+                      COMMAND $<TARGET_FILE:plexus> bench ${flag} ${value} -o ${BENCH_RUNS}/bad_${name})
 endforeach()

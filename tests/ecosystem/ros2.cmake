@@ -9,16 +9,20 @@ foreach(variant "fast;165" "cyclone;166")
   set_tests_properties(ecosystem.ros2_names_${vendor} PROPERTIES LABELS "ecosystem;realtime;multiprocess" TIMEOUT 180)
 endforeach()
 # Bad naming: one line naming where it came from, exit 2 (a tool, a service, a scenario, launch).
-add_test(NAME ecosystem.naming_bad_tool COMMAND ${EXPECT} 2 "--naming: unknown naming 'ros' \\(expected plexus or ros2\\)"
-         $<TARGET_FILE:plexus> topic list --naming ros --domain 214 --wait 0.1)
-add_test(NAME ecosystem.naming_bad_service COMMAND ${EXPECT} 2 "--naming: unknown naming 'ros1'"
-         ${CMAKE_BINARY_DIR}/bin/plant_simulator --params ${PROJECT_SOURCE_DIR}/deploy/params/unicycle_robot.yaml
-         --naming ros1 --domain 214)
-add_test(NAME ecosystem.naming_bad_scenario COMMAND ${EXPECT} 2 "dds.naming: expected plexus or ros2, got 'dds'"
-         $<TARGET_FILE:plexus> sim ${PROJECT_SOURCE_DIR}/deploy/scenarios/path_following_circle.yaml --quiet
-         --set dds.naming=dds)
-add_test(NAME ecosystem.naming_bad_launch COMMAND ${EXPECT} 2 "--naming: unknown naming 'x'"
-         $<TARGET_FILE:plexus> launch ${PROJECT_SOURCE_DIR}/deploy/scenarios/path_following_circle.yaml --naming x
-         --domain 214)
-set_tests_properties(ecosystem.naming_bad_tool ecosystem.naming_bad_service ecosystem.naming_bad_scenario
-                     ecosystem.naming_bad_launch PROPERTIES LABELS "cli;ecosystem")
+plexus_refusal_test(ecosystem.naming_bad_tool LABELS cli ecosystem
+                    ERROR "--naming: unknown naming 'ros' \\(expected plexus or ros2\\)"
+                    COMMAND $<TARGET_FILE:plexus> topic list --naming ros --domain 214 --wait 0.1)
+plexus_refusal_test(ecosystem.naming_bad_service LABELS cli ecosystem
+                    ERROR "--naming: unknown naming 'ros1'"
+                    COMMAND ${CMAKE_BINARY_DIR}/bin/plant_simulator
+                            --params ${PROJECT_SOURCE_DIR}/deploy/params/unicycle_robot.yaml --naming ros1
+                            --domain 214)
+plexus_refusal_test(ecosystem.naming_bad_scenario LABELS cli ecosystem
+                    ERROR "dds.naming: expected plexus or ros2, got 'dds'"
+                    COMMAND $<TARGET_FILE:plexus> sim
+                            ${PROJECT_SOURCE_DIR}/deploy/scenarios/path_following_circle.yaml --quiet
+                            --set dds.naming=dds)
+plexus_refusal_test(ecosystem.naming_bad_launch LABELS cli ecosystem
+                    ERROR "--naming: unknown naming 'x'"
+                    COMMAND $<TARGET_FILE:plexus> launch
+                            ${PROJECT_SOURCE_DIR}/deploy/scenarios/path_following_circle.yaml --naming x --domain 214)

@@ -29,27 +29,25 @@ plexus_pin(repro.arm_vdc_ekf_1khz ${PROJECT_SOURCE_DIR}/deploy/scenarios/arm_vdc
 
 # Bad arm parameters are input errors (exit 2) naming the file, line and key.
 set(ARM_SCENARIO ${PROJECT_SOURCE_DIR}/deploy/scenarios/arm_vdc_ekf.yaml)
-add_test(NAME cli.arm_gain_list_size
-         COMMAND ${EXPECT} 2 "services.controller.k_p: needs 2 numbers \\(one per joint\\)"
-                 $<TARGET_FILE:plexus> sim ${ARM_SCENARIO} --quiet --set services.controller.k_p=[350])
-add_test(NAME cli.arm_negative_gain
-         COMMAND ${EXPECT} 2 "arm_vdc_ekf.yaml:[0-9]+: services.controller: vdc_controller: k_tau\\[1\\] must be finite and > 0 \\(got -1\\)"
-                 $<TARGET_FILE:plexus> sim ${ARM_SCENARIO} --quiet --set services.controller.k_tau=[0.5,-1])
-add_test(NAME cli.arm_bad_link_mass
-         COMMAND ${EXPECT} 2 "arm_vdc_ekf.yaml:[0-9]+: robots.arm.plant: arm_model: links\\[1\\].mass must be finite and > 0 \\(got 0\\)"
-                 $<TARGET_FILE:plexus> sim ${ARM_SCENARIO} --quiet --set robots.arm.plant.mass=[10,0])
-add_test(NAME cli.arm_bad_jacobian
-         COMMAND ${EXPECT} 2 "services.observer.jacobian: expected one of full, paper, got 'exact'"
-                 $<TARGET_FILE:plexus> sim ${ARM_SCENARIO} --quiet --set services.observer.jacobian=exact)
-add_test(NAME cli.arm_too_many_joints
-         COMMAND ${EXPECT} 2 "robots.arm.plant.dof: must be in 1..16"
-                 $<TARGET_FILE:plexus> sim ${PROJECT_SOURCE_DIR}/deploy/scenarios/arm_vdc_ekf_3dof.yaml --quiet
-                 --set robots.arm.plant.dof=17)
-add_test(NAME cli.arm_initial_velocity_list_size
-         COMMAND ${EXPECT} 2 "robots.arm.plant.dq0: needs 2 numbers \\(one per joint\\)"
-                 $<TARGET_FILE:plexus> sim ${ARM_SCENARIO} --quiet --set robots.arm.plant.dq0=[1,1,1])
-set_tests_properties(cli.arm_gain_list_size cli.arm_negative_gain cli.arm_bad_link_mass cli.arm_bad_jacobian
-                     cli.arm_too_many_joints cli.arm_initial_velocity_list_size PROPERTIES LABELS "cli")
+plexus_refusal_test(cli.arm_gain_list_size LABELS cli
+                    ERROR "services.controller.k_p: needs 2 numbers \\(one per joint\\)"
+                    COMMAND $<TARGET_FILE:plexus> sim ${ARM_SCENARIO} --quiet --set services.controller.k_p=[350])
+plexus_refusal_test(cli.arm_negative_gain LABELS cli
+                    ERROR "arm_vdc_ekf.yaml:[0-9]+: services.controller: vdc_controller: k_tau\\[1\\] must be finite and > 0 \\(got -1\\)"
+                    COMMAND $<TARGET_FILE:plexus> sim ${ARM_SCENARIO} --quiet --set services.controller.k_tau=[0.5,-1])
+plexus_refusal_test(cli.arm_bad_link_mass LABELS cli
+                    ERROR "arm_vdc_ekf.yaml:[0-9]+: robots.arm.plant: arm_model: links\\[1\\].mass must be finite and > 0 \\(got 0\\)"
+                    COMMAND $<TARGET_FILE:plexus> sim ${ARM_SCENARIO} --quiet --set robots.arm.plant.mass=[10,0])
+plexus_refusal_test(cli.arm_bad_jacobian LABELS cli
+                    ERROR "services.observer.jacobian: expected one of full, paper, got 'exact'"
+                    COMMAND $<TARGET_FILE:plexus> sim ${ARM_SCENARIO} --quiet --set services.observer.jacobian=exact)
+plexus_refusal_test(cli.arm_too_many_joints LABELS cli
+                    ERROR "robots.arm.plant.dof: must be in 1..16"
+                    COMMAND $<TARGET_FILE:plexus> sim ${PROJECT_SOURCE_DIR}/deploy/scenarios/arm_vdc_ekf_3dof.yaml
+                            --quiet --set robots.arm.plant.dof=17)
+plexus_refusal_test(cli.arm_initial_velocity_list_size LABELS cli
+                    ERROR "robots.arm.plant.dq0: needs 2 numbers \\(one per joint\\)"
+                    COMMAND $<TARGET_FILE:plexus> sim ${ARM_SCENARIO} --quiet --set robots.arm.plant.dq0=[1,1,1])
 
 # issue 29: table4_fit, the tool that fits Table 4's unstated set-up, runs the scenario runner's
 # closed loop (its arm_table4 set-up gives plexus sim's figures) and refuses a bad argument.

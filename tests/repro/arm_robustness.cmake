@@ -16,30 +16,30 @@ set_tests_properties(repro.arm_robustness_sweep PROPERTIES LABELS "repro;slow" T
 
 # Bad parameters of the issue 18 keys: one line naming the key, exit 2.
 set(ARM_ROBUST ${PROJECT_SOURCE_DIR}/deploy/scenarios/arm_robustness.yaml)
-add_test(NAME cli.arm_bad_observer_tuning
-         COMMAND ${EXPECT} 2 "services.observer.tuning: expected one of robust, paper, got 'fast'"
-                 $<TARGET_FILE:plexus> sim ${ARM_ROBUST} --quiet --set services.observer.tuning=fast)
-add_test(NAME cli.arm_bad_controller_tuning
-         COMMAND ${EXPECT} 2 "services.controller.tuning: expected one of robust, paper, got 'Paper'"
-                 $<TARGET_FILE:plexus> sim ${ARM_ROBUST} --quiet --set services.controller.tuning=Paper)
-add_test(NAME cli.arm_bad_plant_torque_limit
-         COMMAND ${EXPECT} 2 "arm_robustness.yaml:[0-9]+: robots.arm.plant: flexible_joint_arm: torque_limit\\[1\\] must be finite and > 0 \\(got -1\\)"
-                 $<TARGET_FILE:plexus> sim ${ARM_ROBUST} --quiet --set robots.arm.plant.torque_limit=[50,-1])
-add_test(NAME cli.arm_controller_torque_limit_size
-         COMMAND ${EXPECT} 2 "services.controller.torque_limit: needs 2 numbers \\(one per joint\\)"
-                 $<TARGET_FILE:plexus> sim ${ARM_ROBUST} --quiet --set services.controller.torque_limit=[50])
-add_test(NAME cli.arm_bad_q_disturbance
-         COMMAND ${EXPECT} 2 "--set services.observer.q_disturbance=0: services.observer.q_disturbance: flexible_joint_ekf: q_disturbance must be finite and > 0 \\(got 0\\)"
-                 $<TARGET_FILE:plexus> sim ${ARM_ROBUST} --quiet --set services.observer.q_disturbance=0)
-add_test(NAME cli.arm_bad_payload_prior
-         COMMAND ${EXPECT} 2 "--set services.observer.p0_payload=-1: services.observer.p0_payload: flexible_joint_ekf: p0_payload must be finite and > 0 \\(got -1\\)"
-                 $<TARGET_FILE:plexus> sim ${ARM_ROBUST} --quiet --set services.observer.p0_payload=-1)
-add_test(NAME cli.arm_bad_disturbance_compensation
-         COMMAND ${EXPECT} 2 "--set services.controller.disturbance_compensation=2: services.controller.disturbance_compensation: vdc_controller: disturbance_compensation must be in \\[0, 1\\] \\(got 2\\)"
-                 $<TARGET_FILE:plexus> sim ${ARM_ROBUST} --quiet --set services.controller.disturbance_compensation=2)
-set_tests_properties(cli.arm_bad_observer_tuning cli.arm_bad_controller_tuning cli.arm_bad_plant_torque_limit
-                     cli.arm_controller_torque_limit_size cli.arm_bad_q_disturbance cli.arm_bad_payload_prior
-                     cli.arm_bad_disturbance_compensation PROPERTIES LABELS "cli")
+plexus_refusal_test(cli.arm_bad_observer_tuning LABELS cli
+                    ERROR "services.observer.tuning: expected one of robust, paper, got 'fast'"
+                    COMMAND $<TARGET_FILE:plexus> sim ${ARM_ROBUST} --quiet --set services.observer.tuning=fast)
+plexus_refusal_test(cli.arm_bad_controller_tuning LABELS cli
+                    ERROR "services.controller.tuning: expected one of robust, paper, got 'Paper'"
+                    COMMAND $<TARGET_FILE:plexus> sim ${ARM_ROBUST} --quiet --set services.controller.tuning=Paper)
+plexus_refusal_test(cli.arm_bad_plant_torque_limit LABELS cli
+                    ERROR "arm_robustness.yaml:[0-9]+: robots.arm.plant: flexible_joint_arm: torque_limit\\[1\\] must be finite and > 0 \\(got -1\\)"
+                    COMMAND $<TARGET_FILE:plexus> sim ${ARM_ROBUST} --quiet
+                            --set robots.arm.plant.torque_limit=[50,-1])
+plexus_refusal_test(cli.arm_controller_torque_limit_size LABELS cli
+                    ERROR "services.controller.torque_limit: needs 2 numbers \\(one per joint\\)"
+                    COMMAND $<TARGET_FILE:plexus> sim ${ARM_ROBUST} --quiet
+                            --set services.controller.torque_limit=[50])
+plexus_refusal_test(cli.arm_bad_q_disturbance LABELS cli
+                    ERROR "--set services.observer.q_disturbance=0: services.observer.q_disturbance: flexible_joint_ekf: q_disturbance must be finite and > 0 \\(got 0\\)"
+                    COMMAND $<TARGET_FILE:plexus> sim ${ARM_ROBUST} --quiet --set services.observer.q_disturbance=0)
+plexus_refusal_test(cli.arm_bad_payload_prior LABELS cli
+                    ERROR "--set services.observer.p0_payload=-1: services.observer.p0_payload: flexible_joint_ekf: p0_payload must be finite and > 0 \\(got -1\\)"
+                    COMMAND $<TARGET_FILE:plexus> sim ${ARM_ROBUST} --quiet --set services.observer.p0_payload=-1)
+plexus_refusal_test(cli.arm_bad_disturbance_compensation LABELS cli
+                    ERROR "--set services.controller.disturbance_compensation=2: services.controller.disturbance_compensation: vdc_controller: disturbance_compensation must be in \\[0, 1\\] \\(got 2\\)"
+                    COMMAND $<TARGET_FILE:plexus> sim ${ARM_ROBUST} --quiet
+                            --set services.controller.disturbance_compensation=2)
 
 # Table 4 with an actuator torque limit of 50 / 15 N m (the paper's peaks, 46.33 / 14.39, rounded
 # up) in the plant and the controller (anti-windup): the settling times still meet Table 4

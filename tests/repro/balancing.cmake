@@ -62,23 +62,22 @@ balance_variant(heavier_taller_robot ${BAL_HEAVIER})
 balance_variant(small_alpha --set services.ukf.alpha=0.1 --set services.ukf_additive.alpha=0.1)
 
 # Bad balancing parameters are input errors (exit 2) naming the file, line and key.
-add_test(NAME cli.balance_unknown_filter
-         COMMAND ${EXPECT} 2 "services.ukf.filter: expected one of ukf_augmented, ukf_additive, ekf, got 'kalman'"
-                 $<TARGET_FILE:plexus> sim ${BAL_SCENARIO} --quiet --set services.ukf.filter=kalman)
-add_test(NAME cli.balance_bad_noise
-         COMMAND ${EXPECT} 2 "services.ukf.r_tilt_deg: must be finite and > 0"
-                 $<TARGET_FILE:plexus> sim ${BAL_SCENARIO} --quiet --set services.ukf.r_tilt_deg=0)
-add_test(NAME cli.balance_bad_plant
-         COMMAND ${EXPECT} 2 "balance_ukf_ekf.yaml: --set robots.r1.plant.body_mass=-1: robots.r1.plant.body_mass: wheeled_inverted_pendulum: body_mass must be finite and > 0 \\(got -1\\)"
-                 $<TARGET_FILE:plexus> sim ${BAL_SCENARIO} --quiet --set robots.r1.plant.body_mass=-1)
-add_test(NAME cli.balance_bad_poles
-         COMMAND ${EXPECT} 2 "balancing_controller: poles\\[3\\] must be distinct from the others \\(got -3\\)"
-                 $<TARGET_FILE:plexus> sim ${BAL_SCENARIO} --quiet --set services.balance.poles=[-1,-2,-3,-3])
-add_test(NAME cli.balance_bad_sigma
-         COMMAND ${EXPECT} 2 "--set services.ukf.alpha=0: services.ukf.alpha: augmented_ukf: alpha must be finite and > 0 \\(got 0\\)"
-                 $<TARGET_FILE:plexus> sim ${BAL_SCENARIO} --quiet --set services.ukf.alpha=0)
-add_test(NAME cli.balance_bad_stat
-         COMMAND ${EXPECT} 2 "metrics.0.stat: expected mean, abs_mean, std"
-                 $<TARGET_FILE:plexus> sim ${BAL_SCENARIO} --quiet --set metrics.0.stat=median)
-set_tests_properties(cli.balance_unknown_filter cli.balance_bad_noise cli.balance_bad_plant cli.balance_bad_poles
-                     cli.balance_bad_sigma cli.balance_bad_stat PROPERTIES LABELS "cli")
+plexus_refusal_test(cli.balance_unknown_filter LABELS cli
+                    ERROR "services.ukf.filter: expected one of ukf_augmented, ukf_additive, ekf, got 'kalman'"
+                    COMMAND $<TARGET_FILE:plexus> sim ${BAL_SCENARIO} --quiet --set services.ukf.filter=kalman)
+plexus_refusal_test(cli.balance_bad_noise LABELS cli
+                    ERROR "services.ukf.r_tilt_deg: must be finite and > 0"
+                    COMMAND $<TARGET_FILE:plexus> sim ${BAL_SCENARIO} --quiet --set services.ukf.r_tilt_deg=0)
+plexus_refusal_test(cli.balance_bad_plant LABELS cli
+                    ERROR "balance_ukf_ekf.yaml: --set robots.r1.plant.body_mass=-1: robots.r1.plant.body_mass: wheeled_inverted_pendulum: body_mass must be finite and > 0 \\(got -1\\)"
+                    COMMAND $<TARGET_FILE:plexus> sim ${BAL_SCENARIO} --quiet --set robots.r1.plant.body_mass=-1)
+plexus_refusal_test(cli.balance_bad_poles LABELS cli
+                    ERROR "balancing_controller: poles\\[3\\] must be distinct from the others \\(got -3\\)"
+                    COMMAND $<TARGET_FILE:plexus> sim ${BAL_SCENARIO} --quiet
+                            --set services.balance.poles=[-1,-2,-3,-3])
+plexus_refusal_test(cli.balance_bad_sigma LABELS cli
+                    ERROR "--set services.ukf.alpha=0: services.ukf.alpha: augmented_ukf: alpha must be finite and > 0 \\(got 0\\)"
+                    COMMAND $<TARGET_FILE:plexus> sim ${BAL_SCENARIO} --quiet --set services.ukf.alpha=0)
+plexus_refusal_test(cli.balance_bad_stat LABELS cli
+                    ERROR "metrics.0.stat: expected mean, abs_mean, std"
+                    COMMAND $<TARGET_FILE:plexus> sim ${BAL_SCENARIO} --quiet --set metrics.0.stat=median)

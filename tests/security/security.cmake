@@ -77,37 +77,47 @@ endforeach()
 
 # Bad security configuration: one line naming where it came from, exit 2.
 set(EXPECT_EXIT ${PROJECT_SOURCE_DIR}/tests/scripts/expect_exit.sh)
-add_test(NAME security.bad_key COMMAND ${EXPECT_EXIT} 2 "bad_security.yaml:9: security.protection: unknown key"
-         $<TARGET_FILE:plexus> sim ${SEC_DIR}/bad_security.yaml)
-add_test(NAME security.no_pki COMMAND ${EXPECT_EXIT} 2 "--set security.enabled=true: security.enabled: DDS Security needs `pki`"
-         $<TARGET_FILE:plexus> launch ${SEC_SCENARIO} --quiet --out ${SEC_RUNS}/no_pki --set security.enabled=true)
-add_test(NAME security.unknown_process
-         COMMAND ${EXPECT_EXIT} 2 "security.identities.bogus: no process 'bogus' in this scenario \\(processes: plexus_launch, plant_simulator, path, observer, controller\\)"
-                 $<TARGET_FILE:plexus> launch ${SEC_SCENARIO} --quiet --out ${SEC_RUNS}/unknown_process
-                 --set security.enabled=true --set security.pki=${SEC_RUNS}/pki --set security.identities.bogus=observer)
-add_test(NAME security.identity_of_another_ca
-         COMMAND ${EXPECT_EXIT} 2 "security.identities.observer: identity 'probe_pub': .*/foreign/identities/probe_pub/cert.pem: not signed by the identity CA .*/pki/identity_ca.pem"
-                 $<TARGET_FILE:plexus> launch ${SEC_SCENARIO} --quiet --out ${SEC_RUNS}/another_ca --set security.enabled=true
-                 --set security.pki=${SEC_RUNS}/pki --set security.identities.observer=${SEC_RUNS}/foreign/identities/probe_pub)
-add_test(NAME security.missing_identity
-         COMMAND ${EXPECT_EXIT} 2 "security.pki: identity 'plant_simulator': .*/foreign/identities/plant_simulator/cert.pem: no such file \\(process 'plant_simulator' uses identity 'plant_simulator' unless security.identities names another; tools/security/make_test_pki.sh PKI plant_simulator creates it\\)"
-                 $<TARGET_FILE:plexus> launch ${SEC_SCENARIO} --quiet --out ${SEC_RUNS}/missing_identity
-                 --set security.enabled=true --set security.pki=${SEC_RUNS}/foreign)
-add_test(NAME security.service_identity_without_pki COMMAND ${EXPECT_EXIT} 2 "plant_simulator: error: --identity r1: needs --security PKI_FOLDER"
-         $<TARGET_FILE:plant_simulator> --robot r1 --params ${PROJECT_SOURCE_DIR}/deploy/params/unicycle_robot.yaml --identity r1)
-add_test(NAME security.tool_missing_pki COMMAND ${EXPECT_EXIT} 2 "plexus topic: error: --security /nonexistent/pki: no such folder"
-         $<TARGET_FILE:plexus> topic list --security /nonexistent/pki)
-add_test(NAME security.pki_script_bad_domains
-         COMMAND ${EXPECT_EXIT} 2 "make_test_pki.sh: --domains: expected MIN-MAX within 0..230 \\(Cyclone DDS 0.10 refuses"
-                 ${PROJECT_SOURCE_DIR}/tools/security/make_test_pki.sh ${SEC_RUNS}/bad_domains --domains 0-231)
+plexus_refusal_test(security.bad_key
+                    ERROR "bad_security.yaml:9: security.protection: unknown key"
+                    COMMAND $<TARGET_FILE:plexus> sim ${SEC_DIR}/bad_security.yaml)
+plexus_refusal_test(security.no_pki
+                    ERROR "--set security.enabled=true: security.enabled: DDS Security needs `pki`"
+                    COMMAND $<TARGET_FILE:plexus> launch ${SEC_SCENARIO} --quiet --out ${SEC_RUNS}/no_pki
+                            --set security.enabled=true)
+plexus_refusal_test(security.unknown_process
+                    ERROR "security.identities.bogus: no process 'bogus' in this scenario \\(processes: plexus_launch, plant_simulator, path, observer, controller\\)"
+                    COMMAND $<TARGET_FILE:plexus> launch ${SEC_SCENARIO} --quiet --out ${SEC_RUNS}/unknown_process
+                            --set security.enabled=true --set security.pki=${SEC_RUNS}/pki
+                            --set security.identities.bogus=observer)
+plexus_refusal_test(security.identity_of_another_ca
+                    ERROR "security.identities.observer: identity 'probe_pub': .*/foreign/identities/probe_pub/cert.pem: not signed by the identity CA .*/pki/identity_ca.pem"
+                    COMMAND $<TARGET_FILE:plexus> launch ${SEC_SCENARIO} --quiet --out ${SEC_RUNS}/another_ca
+                            --set security.enabled=true --set security.pki=${SEC_RUNS}/pki
+                            --set security.identities.observer=${SEC_RUNS}/foreign/identities/probe_pub)
+plexus_refusal_test(security.missing_identity
+                    ERROR "security.pki: identity 'plant_simulator': .*/foreign/identities/plant_simulator/cert.pem: no such file \\(process 'plant_simulator' uses identity 'plant_simulator' unless security.identities names another; tools/security/make_test_pki.sh PKI plant_simulator creates it\\)"
+                    COMMAND $<TARGET_FILE:plexus> launch ${SEC_SCENARIO} --quiet --out ${SEC_RUNS}/missing_identity
+                            --set security.enabled=true --set security.pki=${SEC_RUNS}/foreign)
+plexus_refusal_test(security.service_identity_without_pki
+                    ERROR "plant_simulator: error: --identity r1: needs --security PKI_FOLDER"
+                    COMMAND $<TARGET_FILE:plant_simulator> --robot r1
+                            --params ${PROJECT_SOURCE_DIR}/deploy/params/unicycle_robot.yaml --identity r1)
+plexus_refusal_test(security.tool_missing_pki
+                    ERROR "plexus topic: error: --security /nonexistent/pki: no such folder"
+                    COMMAND $<TARGET_FILE:plexus> topic list --security /nonexistent/pki)
+plexus_refusal_test(security.pki_script_bad_domains
+                    ERROR "make_test_pki.sh: --domains: expected MIN-MAX within 0..230 \\(Cyclone DDS 0.10 refuses"
+                    COMMAND ${PROJECT_SOURCE_DIR}/tools/security/make_test_pki.sh ${SEC_RUNS}/bad_domains
+                            --domains 0-231)
 set_tests_properties(security.bad_key security.no_pki security.unknown_process security.identity_of_another_ca
                      security.missing_identity security.service_identity_without_pki security.tool_missing_pki
                      security.pki_script_bad_domains PROPERTIES LABELS "security;cli" TIMEOUT 60 FIXTURES_REQUIRED security_pki)
 # A governance document signed by another permissions CA, and an identity whose key is not its
 # certificate's (a folder mixing two identities).
-add_test(NAME security.governance_of_another_ca
-         COMMAND ${EXPECT_EXIT} 2 "plexus topic: error: --security .*/pki: identity 'plexus_topic': .*/foreign/governance.p7s: not signed by the permissions CA .*/pki/permissions_ca.pem"
-                 $<TARGET_FILE:plexus> topic list --security ${SEC_RUNS}/pki --governance ${SEC_RUNS}/foreign/governance.p7s)
+plexus_refusal_test(security.governance_of_another_ca
+                    ERROR "plexus topic: error: --security .*/pki: identity 'plexus_topic': .*/foreign/governance.p7s: not signed by the permissions CA .*/pki/permissions_ca.pem"
+                    COMMAND $<TARGET_FILE:plexus> topic list --security ${SEC_RUNS}/pki
+                            --governance ${SEC_RUNS}/foreign/governance.p7s)
 add_test(NAME security.key_of_another_identity
          COMMAND bash -c "rm -rf ${SEC_RUNS}/mixed_up && mkdir -p ${SEC_RUNS}/mixed_up && cp ${SEC_RUNS}/pki/identities/observer/cert.pem ${SEC_RUNS}/pki/identities/observer/permissions.p7s ${SEC_RUNS}/mixed_up/ && cp ${SEC_RUNS}/pki/identities/controller/key.pem ${SEC_RUNS}/mixed_up/ && exec ${EXPECT_EXIT} 2 \"identity 'mixed_up': .*/mixed_up/key.pem: not the key of .*/mixed_up/cert.pem\" $<TARGET_FILE:localisation_observer> --params ${PROJECT_SOURCE_DIR}/deploy/params/heading_observer.yaml --security ${SEC_RUNS}/pki --identity ${SEC_RUNS}/mixed_up")
 set_tests_properties(security.governance_of_another_ca security.key_of_another_identity PROPERTIES LABELS "security;cli"

@@ -24,11 +24,12 @@ add_test(NAME tools.record_convert_sqlite_to_mcap
                  ${CMAKE_BINARY_DIR}/test-runs/tools/record_convert)
 set_tests_properties(tools.record_convert_sqlite_to_mcap PROPERTIES LABELS "tools;multiprocess;lockstep" TIMEOUT 120)
 # Bad input of the recording commands: one line, exit 2.
-add_test(NAME tools.record_bad_format COMMAND ${EXPECT} 2 "--format: 'bag' is not a recording format \\(mcap or sqlite\\)"
-         ${PLEXUS_CLI} record -o /tmp/x.bag --format bag --domain 214)
-add_test(NAME tools.record_bad_compression COMMAND ${EXPECT} 2 "--compression: 'bz2' is not a chunk compression"
-         ${PLEXUS_CLI} record -o /tmp/x.mcap --compression bz2 --domain 214)
-add_test(NAME tools.record_info_not_a_recording COMMAND ${EXPECT} 2 "qos.yaml: truncated or corrupt recording"
-         ${PLEXUS_CLI} record info ${PROJECT_SOURCE_DIR}/deploy/qos.yaml)
-set_tests_properties(tools.record_bad_format tools.record_bad_compression tools.record_info_not_a_recording
-                     PROPERTIES LABELS "cli;tools")
+plexus_refusal_test(tools.record_bad_format LABELS cli tools
+                    ERROR "--format: 'bag' is not a recording format \\(mcap or sqlite\\)"
+                    COMMAND ${PLEXUS_CLI} record -o /tmp/x.bag --format bag --domain 214)
+plexus_refusal_test(tools.record_bad_compression LABELS cli tools
+                    ERROR "--compression: 'bz2' is not a chunk compression"
+                    COMMAND ${PLEXUS_CLI} record -o /tmp/x.mcap --compression bz2 --domain 214)
+plexus_refusal_test(tools.record_info_not_a_recording LABELS cli tools
+                    ERROR "qos.yaml: truncated or corrupt recording"
+                    COMMAND ${PLEXUS_CLI} record info ${PROJECT_SOURCE_DIR}/deploy/qos.yaml)

@@ -113,72 +113,82 @@ add_test(NAME tools.latency_loop
 set_tests_properties(tools.latency_loop PROPERTIES LABELS "tools" TIMEOUT 60)
 
 # Bad input: a one-line error naming the argument or file, exit 2.
-add_test(NAME tools.bad_topic_type COMMAND ${EXPECT} 2 "--type: unknown message type 'Nope'"
-         ${PLEXUS_CLI} topic echo tools/x --type Nope --domain 214 --wait 1)
-add_test(NAME tools.bad_vendor COMMAND ${EXPECT} 2 "--dds: unknown DDS vendor 'opensplice'"
-         ${PLEXUS_CLI} topic list --dds opensplice)
-add_test(NAME tools.missing_run_file COMMAND ${EXPECT} 2 "/nonexistent/run.sqlite: no such file"
-         ${PLEXUS_CLI} latency pipeline /nonexistent/run.sqlite)
-add_test(NAME tools.replay_missing_file COMMAND ${EXPECT} 2 "/nonexistent/run.sqlite: no such file"
-         ${PLEXUS_CLI} replay /nonexistent/run.sqlite)
-add_test(NAME tools.record_bad_file COMMAND ${EXPECT} 2 "/nonexistent/dir/x.mcap: cannot create recording"
-         ${PLEXUS_CLI} record -o /nonexistent/dir/x.mcap --domain 214)
-add_test(NAME tools.bad_loop_rate COMMAND ${EXPECT} 2 "--rate: must be in \\(0, 100000\\] Hz"
-         ${PLEXUS_CLI} latency loop --rate 0)
-add_test(NAME tools.bad_loop_rounds COMMAND ${EXPECT} 2 "--rounds: must be in 1..100 and at most rate x duration \\(10\\)"
-         ${PLEXUS_CLI} latency loop --rate 100 --duration 0.1 --rounds 20)
-add_test(NAME tools.bad_pingpong_size COMMAND ${EXPECT} 2 "--size: must be in 0..1048576 bytes"
-         ${PLEXUS_CLI} latency pingpong --size 2000000)
-add_test(NAME tools.bad_pingpong_pin COMMAND ${EXPECT} 2 "--pin: must be auto, split, same or none, got 'fast'"
-         ${PLEXUS_CLI} latency pingpong --pin fast)
-add_test(NAME tools.unknown_profile COMMAND ${EXPECT} 2 "unknown QoS profile 'fastest'"
-         ${PLEXUS_CLI} latency pingpong --profile fastest)
-add_test(NAME tools.bad_peer_vendor COMMAND ${EXPECT} 2 "--peer-dds: unknown DDS vendor 'rti'"
-         ${PLEXUS_CLI} latency pingpong --peer-dds rti)
+plexus_refusal_test(tools.bad_topic_type LABELS cli tools
+                    ERROR "--type: unknown message type 'Nope'"
+                    COMMAND ${PLEXUS_CLI} topic echo tools/x --type Nope --domain 214 --wait 1)
+plexus_refusal_test(tools.bad_vendor LABELS cli tools
+                    ERROR "--dds: unknown DDS vendor 'opensplice'"
+                    COMMAND ${PLEXUS_CLI} topic list --dds opensplice)
+plexus_refusal_test(tools.missing_run_file LABELS cli tools
+                    ERROR "/nonexistent/run.sqlite: no such file"
+                    COMMAND ${PLEXUS_CLI} latency pipeline /nonexistent/run.sqlite)
+plexus_refusal_test(tools.replay_missing_file LABELS cli tools
+                    ERROR "/nonexistent/run.sqlite: no such file"
+                    COMMAND ${PLEXUS_CLI} replay /nonexistent/run.sqlite)
+plexus_refusal_test(tools.record_bad_file LABELS cli tools
+                    ERROR "/nonexistent/dir/x.mcap: cannot create recording"
+                    COMMAND ${PLEXUS_CLI} record -o /nonexistent/dir/x.mcap --domain 214)
+plexus_refusal_test(tools.bad_loop_rate LABELS cli tools
+                    ERROR "--rate: must be in \\(0, 100000\\] Hz"
+                    COMMAND ${PLEXUS_CLI} latency loop --rate 0)
+plexus_refusal_test(tools.bad_loop_rounds LABELS cli tools
+                    ERROR "--rounds: must be in 1..100 and at most rate x duration \\(10\\)"
+                    COMMAND ${PLEXUS_CLI} latency loop --rate 100 --duration 0.1 --rounds 20)
+plexus_refusal_test(tools.bad_pingpong_size LABELS cli tools
+                    ERROR "--size: must be in 0..1048576 bytes"
+                    COMMAND ${PLEXUS_CLI} latency pingpong --size 2000000)
+plexus_refusal_test(tools.bad_pingpong_pin LABELS cli tools
+                    ERROR "--pin: must be auto, split, same or none, got 'fast'"
+                    COMMAND ${PLEXUS_CLI} latency pingpong --pin fast)
+plexus_refusal_test(tools.unknown_profile LABELS cli tools
+                    ERROR "unknown QoS profile 'fastest'"
+                    COMMAND ${PLEXUS_CLI} latency pingpong --profile fastest)
+plexus_refusal_test(tools.bad_peer_vendor LABELS cli tools
+                    ERROR "--peer-dds: unknown DDS vendor 'rti'"
+                    COMMAND ${PLEXUS_CLI} latency pingpong --peer-dds rti)
 set(CIRCLE ${PROJECT_SOURCE_DIR}/deploy/scenarios/unicycle_circle.yaml)
-add_test(NAME tools.launch_unknown_external
-         COMMAND ${EXPECT} 2 "--external plant: no such process \\(this scenario's: plant_simulator, "
-         ${PLEXUS_CLI} launch ${CIRCLE} --external plant --domain 225)
-add_test(NAME tools.launch_unknown_vendor_process
-         COMMAND ${EXPECT} 2 "--vendor plant: no such process \\(this scenario's: plant_simulator, "
-         ${PLEXUS_CLI} launch ${CIRCLE} --vendor plant=cyclone --domain 225)
-set_tests_properties(tools.launch_unknown_vendor_process PROPERTIES LABELS "cli")
-add_test(NAME tools.launch_record_bad_file COMMAND ${EXPECT} 2 "/nonexistent/dir/x.mcap: cannot create recording"
-         ${PLEXUS_CLI} launch ${CIRCLE} --record /nonexistent/dir/x.mcap --domain 225)
-set_tests_properties(tools.bad_topic_type tools.bad_vendor tools.missing_run_file tools.replay_missing_file
-                     tools.record_bad_file tools.bad_loop_rate tools.bad_loop_rounds tools.bad_pingpong_size tools.bad_pingpong_pin tools.unknown_profile
-                     tools.bad_peer_vendor tools.launch_unknown_external tools.launch_record_bad_file
-                     PROPERTIES LABELS "cli;tools")
+plexus_refusal_test(tools.launch_unknown_external LABELS cli tools
+                    ERROR "--external plant: no such process \\(this scenario's: plant_simulator, "
+                    COMMAND ${PLEXUS_CLI} launch ${CIRCLE} --external plant --domain 225)
+plexus_refusal_test(tools.launch_unknown_vendor_process LABELS cli
+                    ERROR "--vendor plant: no such process \\(this scenario's: plant_simulator, "
+                    COMMAND ${PLEXUS_CLI} launch ${CIRCLE} --vendor plant=cyclone --domain 225)
+plexus_refusal_test(tools.launch_record_bad_file LABELS cli tools
+                    ERROR "/nonexistent/dir/x.mcap: cannot create recording"
+                    COMMAND ${PLEXUS_CLI} launch ${CIRCLE} --record /nonexistent/dir/x.mcap --domain 225)
 
 # A service's or robot's `dds` key must name a vendor (file, line and key in the error).
-add_test(NAME cli.scenario_bad_dds_key COMMAND ${EXPECT} 2 "robots.r1.dds: expected fast or cyclone, got 'rti'"
-         ${PLEXUS_CLI} sim ${CIRCLE} --set robots.r1.dds=rti)
-set_tests_properties(cli.scenario_bad_dds_key PROPERTIES LABELS "cli")
+plexus_refusal_test(cli.scenario_bad_dds_key LABELS cli
+                    ERROR "robots.r1.dds: expected fast or cyclone, got 'rti'"
+                    COMMAND ${PLEXUS_CLI} sim ${CIRCLE} --set robots.r1.dds=rti)
 
 # `process` groups (docs/scenarios.md): a valid name, and services of one process that agree.
 set(PATH_CIRCLE ${PROJECT_SOURCE_DIR}/deploy/scenarios/path_following_circle.yaml)
-add_test(NAME cli.scenario_bad_process_name COMMAND ${EXPECT} 2 "services.observer.process: letters, digits"
-         ${PLEXUS_CLI} sim ${PATH_CIRCLE} "--set" "services.observer.process=my control")
-add_test(NAME cli.launch_process_group_disagrees COMMAND ${EXPECT} 2 "members of process 'control' must agree on `dds`"
-         ${PLEXUS_CLI} launch ${PATH_CIRCLE} --domain 225 --set services.observer.process=control
-         --set services.controller.process=control --set services.controller.dds=cyclone)
-add_test(NAME cli.launch_process_name_taken COMMAND ${EXPECT} 2 "'path' is the name of service"
-         ${PLEXUS_CLI} launch ${PATH_CIRCLE} --domain 225 --set services.observer.process=path)
-set_tests_properties(cli.scenario_bad_process_name cli.launch_process_group_disagrees cli.launch_process_name_taken
-                     PROPERTIES LABELS "cli")
+plexus_refusal_test(cli.scenario_bad_process_name LABELS cli
+                    ERROR "services.observer.process: letters, digits"
+                    COMMAND ${PLEXUS_CLI} sim ${PATH_CIRCLE} "--set" "services.observer.process=my control")
+plexus_refusal_test(cli.launch_process_group_disagrees LABELS cli
+                    ERROR "members of process 'control' must agree on `dds`"
+                    COMMAND ${PLEXUS_CLI} launch ${PATH_CIRCLE} --domain 225 --set services.observer.process=control
+                            --set services.controller.process=control --set services.controller.dds=cyclone)
+plexus_refusal_test(cli.launch_process_name_taken LABELS cli
+                    ERROR "'path' is the name of service"
+                    COMMAND ${PLEXUS_CLI} launch ${PATH_CIRCLE} --domain 225 --set services.observer.process=path)
 # `loops:` (docs/scenarios.md): a loop's members, its process and its deadline are checked.
-add_test(NAME cli.scenario_loop_unknown_member COMMAND ${EXPECT} 2 "loops.l.members: no robot or service 'nobody' in this scenario"
-         ${PLEXUS_CLI} sim ${PATH_CIRCLE} --quiet "--set" "loops.l.members=[r1, nobody]")
-add_test(NAME cli.scenario_loop_one_member COMMAND ${EXPECT} 2 "loops.l.members: a loop has at least two members"
-         ${PLEXUS_CLI} sim ${PATH_CIRCLE} --quiet "--set" "loops.l.members=[r1]")
-add_test(NAME cli.scenario_loop_member_elsewhere
-         COMMAND ${EXPECT} 2 "loops.l.process: 'observer' already runs in process 'b'"
-         ${PLEXUS_CLI} sim ${PATH_CIRCLE} --quiet "--set" "loops.l.members=[r1, observer]" --set loops.l.process=a
-         --set services.observer.process=b)
-add_test(NAME cli.scenario_loop_bad_deadline COMMAND ${EXPECT} 2 "loops.l.deadline: must be in \\(0, 3600\\] s"
-         ${PLEXUS_CLI} sim ${PATH_CIRCLE} --quiet "--set" "loops.l.members=[r1, observer]" --set loops.l.deadline=0)
-set_tests_properties(cli.scenario_loop_unknown_member cli.scenario_loop_one_member cli.scenario_loop_member_elsewhere
-                     cli.scenario_loop_bad_deadline PROPERTIES LABELS "cli")
+plexus_refusal_test(cli.scenario_loop_unknown_member LABELS cli
+                    ERROR "loops.l.members: no robot or service 'nobody' in this scenario"
+                    COMMAND ${PLEXUS_CLI} sim ${PATH_CIRCLE} --quiet "--set" "loops.l.members=[r1, nobody]")
+plexus_refusal_test(cli.scenario_loop_one_member LABELS cli
+                    ERROR "loops.l.members: a loop has at least two members"
+                    COMMAND ${PLEXUS_CLI} sim ${PATH_CIRCLE} --quiet "--set" "loops.l.members=[r1]")
+plexus_refusal_test(cli.scenario_loop_member_elsewhere LABELS cli
+                    ERROR "loops.l.process: 'observer' already runs in process 'b'"
+                    COMMAND ${PLEXUS_CLI} sim ${PATH_CIRCLE} --quiet "--set" "loops.l.members=[r1, observer]"
+                            --set loops.l.process=a --set services.observer.process=b)
+plexus_refusal_test(cli.scenario_loop_bad_deadline LABELS cli
+                    ERROR "loops.l.deadline: must be in \\(0, 3600\\] s"
+                    COMMAND ${PLEXUS_CLI} sim ${PATH_CIRCLE} --quiet "--set" "loops.l.members=[r1, observer]"
+                            --set loops.l.deadline=0)
 include(${CMAKE_CURRENT_LIST_DIR}/recordings.cmake)
 # plexus service list (issue 31, docs/tools.md): two services alone, on Fast DDS and Cyclone
 # DDS, listed from either vendor with their names, host, state, rate and typed topics. Domain 184.
@@ -209,19 +219,21 @@ endforeach()
 # A scenario's parameter_changes are checked at load, each at its own line, by the component's
 # own validator; the param tool's arguments and files too (exit 2, one line).
 set(RFID ${PROJECT_SOURCE_DIR}/deploy/scenarios/wmr_output_feedback_rfid.yaml)
-add_test(NAME cli.parameter_change_unknown_key
-         COMMAND ${EXPECT} 2 "parameter_changes.0.key: no tunable parameter 'observer.Lx' \\(tunable: observer.L, controller.k1"
-                 ${PLEXUS_CLI} sim ${RFID} --quiet "--set" "parameter_changes=[{step: 10, key: observer.Lx, value: 1}]")
-add_test(NAME cli.parameter_change_bad_value
-         COMMAND ${EXPECT} 2 "parameter_changes.0.value: heading_observer: L must be finite and > 0 \\(got -1\\)"
-                 ${PLEXUS_CLI} sim ${RFID} --quiet "--set" "parameter_changes=[{step: 10, key: L, value: -1}]")
-add_test(NAME cli.parameter_change_bad_step
-         COMMAND ${EXPECT} 2 "parameter_changes.0.step: must be a whole step in \\[0, 48000\\] \\(got 48001\\)"
-                 ${PLEXUS_CLI} sim ${RFID} --quiet "--set" "parameter_changes=[{step: 48001, key: k1, value: 1}]")
-add_test(NAME cli.param_set_without_value
-         COMMAND ${EXPECT} 2 "plexus param: error: value is required" ${PLEXUS_CLI} param set "motion_controller controller" k1)
-add_test(NAME cli.param_changes_missing_file
-         COMMAND ${EXPECT} 2 "plexus param: error: recording: File does not exist: /nonexistent.mcap"
-                 ${PLEXUS_CLI} param changes /nonexistent.mcap)
-set_tests_properties(cli.parameter_change_unknown_key cli.parameter_change_bad_value cli.parameter_change_bad_step
-                     cli.param_set_without_value cli.param_changes_missing_file PROPERTIES LABELS "cli")
+plexus_refusal_test(cli.parameter_change_unknown_key LABELS cli
+                    ERROR "parameter_changes.0.key: no tunable parameter 'observer.Lx' \\(tunable: observer.L, controller.k1"
+                    COMMAND ${PLEXUS_CLI} sim ${RFID} --quiet
+                            "--set" "parameter_changes=[{step: 10, key: observer.Lx, value: 1}]")
+plexus_refusal_test(cli.parameter_change_bad_value LABELS cli
+                    ERROR "parameter_changes.0.value: heading_observer: L must be finite and > 0 \\(got -1\\)"
+                    COMMAND ${PLEXUS_CLI} sim ${RFID} --quiet
+                            "--set" "parameter_changes=[{step: 10, key: L, value: -1}]")
+plexus_refusal_test(cli.parameter_change_bad_step LABELS cli
+                    ERROR "parameter_changes.0.step: must be a whole step in \\[0, 48000\\] \\(got 48001\\)"
+                    COMMAND ${PLEXUS_CLI} sim ${RFID} --quiet
+                            "--set" "parameter_changes=[{step: 48001, key: k1, value: 1}]")
+plexus_refusal_test(cli.param_set_without_value LABELS cli
+                    ERROR "plexus param: error: value is required"
+                    COMMAND ${PLEXUS_CLI} param set "motion_controller controller" k1)
+plexus_refusal_test(cli.param_changes_missing_file LABELS cli
+                    ERROR "plexus param: error: recording: File does not exist: /nonexistent.mcap"
+                    COMMAND ${PLEXUS_CLI} param changes /nonexistent.mcap)
