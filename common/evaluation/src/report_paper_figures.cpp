@@ -11,7 +11,6 @@
 // A figure of 002 or 004 spans the window of the scenario's metrics on that robot (the
 // papers' 5 s), when they have one; 000 and 001 span the run.
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -23,6 +22,7 @@
 #include "plexus/evaluation/evaluation.hpp"
 #include "plexus/evaluation/report_figures.hpp"
 #include "plexus/scenario/expectation.hpp"
+#include "plexus/scenario/format.hpp"
 #include "plexus/scenario/registry.hpp"
 
 namespace plexus::scenario {
@@ -61,13 +61,11 @@ std::string write_data(const ReportInputs& in, const std::string& name, const st
   for (const auto& h : header) line += (line.empty() ? "" : ",") + h;
   out << line << '\n';
   const std::size_t rows = columns.empty() ? 0 : columns[0].size();
-  char buf[32];
   for (std::size_t r = 0; r < rows; ++r) {
     line.clear();
     for (std::size_t c = 0; c < columns.size(); ++c) {
       if (c) line += ',';
-      const auto res = std::to_chars(buf, buf + sizeof buf, columns[c][r]);
-      line.append(buf, res.ptr);
+      append_number(line, columns[c][r]);
     }
     out << line << '\n';
   }

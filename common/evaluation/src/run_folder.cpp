@@ -1,6 +1,5 @@
 #include "plexus/evaluation/run_folder.hpp"
 
-#include <charconv>
 #include <cstdio>
 #include <ctime>
 #include <fstream>
@@ -9,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "plexus/base/input_error.hpp"
+#include "plexus/scenario/format.hpp"
 
 namespace plexus::scenario {
 namespace fs = std::filesystem;
@@ -18,12 +18,6 @@ std::ofstream open_out(const fs::path& p) {
   std::ofstream out(p);
   if (!out) throw InputError(p.string() + ": cannot write file");
   return out;
-}
-
-void append_number(std::string& line, double v) {
-  char buf[32];
-  const auto r = std::to_chars(buf, buf + sizeof buf, v);
-  line.append(buf, r.ptr);
 }
 
 void write_signal_csv(const fs::path& p, const SignalTrace& trace, double base_step) {

@@ -8,4 +8,7 @@ namespace plexus::scenario {
 /// Shortest text that reads back as the same double ("nan" for NaN).
 std::string format_number(double value);
 
+/// Appends format_number(value) to `out` (no temporary: for the rows of large CSV files).
+void append_number(std::string& out, double value);
+
 }  // namespace plexus::scenario
