@@ -22,9 +22,10 @@
 # its initial state until the first command, as plant_simulator's starts with the run) runs
 # the robot's part of the scenario that the launch wrote. Both runs must exit 0 (or 1 with
 # only the paper's expectations failing) and the emulator must exit 0 having obeyed commands.
-# A run in which the machine stalled one of the loops (woke more than stall_us late) is run
-# again, three runs at most (the arm; the skid-steer's figures do not see a stall). Prints both
-# runs' figures and their ratios.
+# A run in which the machine stalled or starved one of the loops (its stall_stat, a wake-up
+# lateness, over stall_us) is run again, three runs at most (the arm: a stall; the balancing
+# robot: a starved run; the skid-steer's figures see neither). Prints both runs' figures and
+# their ratios.
 set -u
 family=$1 plexus=$2 bin=$3 vendor=$4 domain=$5 out=$6 deploy=$7
 case $family in
@@ -39,7 +40,7 @@ case $family in
     checks="reconvergence_time_switch1_s:0.10:0.30 classifier_accuracy:0.10"
     device_time=""
     emulator_args=()
-    stall_us=""  # a loop of 20 Hz GPS and 4 Hz decisions: a stall does not show
+    stall_stat="" stall_us=""  # a loop of 20 Hz GPS and 4 Hz decisions: a stall does not show
     scenario=$deploy/scenarios/icr_terrain_switch_prior.yaml ;;
   balancing)
     robot=r1
@@ -52,7 +53,14 @@ case $family in
     # went 27-42 % over plant_simulator's (clean clone of bb70ed4).
     device_time=", device_time: true, cycle_sync: true"
     emulator_args=()
-    stall_us=""
+    # A run whose loops woke a quarter period late in 1 % of the ticks (the worst loop's p99
+    # over 2.5 ms at 100 Hz) was starved by the machine: its commands reach the plant late,
+    # the robot tilts more and the filters' errors grow, more through the bridge's four extra
+    # hops than through plant_simulator. Measured (2026-11-30, burners beside the runs; ratio
+    # of the UKF's error std, bridge / simulator): p99 0.8 / 0.7 ms 1.004; 3.0 / 1.5 ms 1.004;
+    # 4.0 / 2.7 ms 1.14; 7.8 / 7.4 ms 1.17; and the failure it was written for (working tree
+    # of 7ed022d beside CI's other realtime tests): 5.9 / 0.7 ms, 1.63.
+    stall_stat=jitter_p99_us stall_us=2500
     scenario=$deploy/scenarios/balance_ukf_ekf.yaml ;;
   arm)
     robot=arm
@@ -68,7 +76,7 @@ case $family in
     # catch up at most 10): not a figure of the loop. Seen without SCHED_FIFO (the priorities
     # above) in about 1 run of 4, once harmful: the controller's host 18.6 ms late at 3.8 s,
     # the arm 17 mrad off for 0.3 s and the run's settling lost; with them, 1 in 8 (13 ms).
-    stall_us=10000
+    stall_stat=jitter_max_us stall_us=10000
     scenario=$deploy/scenarios/arm_vdc_ekf.yaml ;;
   *) echo "closed_loop_udp.sh: FAMILY: skid_steer, balancing or arm"; exit 2 ;;
 esac
@@ -92,20 +100,21 @@ finish() {  # finish NAME: waits for the launch; exit 0 or 1 (an expectation) ac
   [ -s "$out/$1.json" ] || { echo "FAIL: the $1 run printed no metrics"; tail -5 "$out/$1.err"; exit 1; }
 }
 
-stalled() {  # stalled NAME: true if a loop of the run woke more than stall_us late (prints it)
+stalled() {  # stalled NAME: true if a loop's stall_stat in the run was over stall_us (prints it)
   [ -n "$stall_us" ] || return 1
   local worst
-  worst=$({ jq -r '.services[] | .jitter_max_us' "$out/$1/launch.json"
-            [ "$1" = bridge ] && jq -r '.jitter_max_us' "$out/emulator.json" | tail -1; } 2> /dev/null |
+  worst=$({ jq -r ".services[] | .$stall_stat" "$out/$1/launch.json"
+            [ "$1" = bridge ] && jq -r ".$stall_stat" "$out/emulator.json" | tail -1; } 2> /dev/null |
           awk 'BEGIN { m = 0 } $1 + 0 > m { m = $1 + 0 } END { print m }')
   awk -v w="$worst" -v s="$stall_us" 'BEGIN { exit !(w > s) }' || return 1
-  echo "the $1 run: a loop woke $(awk -v w="$worst" 'BEGIN { printf "%.1f", w / 1000 }') ms late" \
-       "(more than $((stall_us / 1000)) ms: a machine stall, not the loop's figure); run again"
+  echo "the $1 run: a loop's $stall_stat was $(awk -v w="$worst" 'BEGIN { printf "%.1f", w / 1000 }') ms" \
+       "(more than $(awk -v s="$stall_us" 'BEGIN { printf "%g", s / 1000 }') ms: the machine stalled or starved it," \
+       "not the loop's figure); run again"
 }
 
 # 1. The reference, plant_simulator, and 2. the same through udp_bridge and the emulator. A run
-# in which the machine stalled a loop (stall_us) is not a figure of the loop: it is run again,
-# at most three times in all; a stalled run is never judged.
+# in which the machine stalled or starved a loop (stall_stat over stall_us) is not a figure of
+# the loop: it is run again, at most three times in all; such a run is never judged.
 pe=$((40000 + 10 * domain)) pb=$((40000 + 10 * domain + 1))
 part="$out/bridge/parts/udp_bridge_$robot.yaml"
 sim_done=0 bridge_done=0
@@ -134,7 +143,7 @@ for attempt in 1 2 3; do
   fi
   [ $sim_done -eq 1 ] && [ $bridge_done -eq 1 ] && break
 done
-[ $sim_done -eq 1 ] && [ $bridge_done -eq 1 ] || { echo "FAIL: three stalled runs (the machine is too busy)"; exit 1; }
+[ $sim_done -eq 1 ] && [ $bridge_done -eq 1 ] || { echo "FAIL: three stalled or starved runs (the machine is too busy)"; exit 1; }
 commands=$(jq -r '.commands' "$out/emulator.json" 2> /dev/null | tail -1)
 [ "${commands:-0}" -gt 0 ] 2> /dev/null || { echo "FAIL: the emulator obeyed no command"; exit 1; }
 echo "emulator: $commands commands, $(jq -r '.frames_produced' "$out/emulator.json" | tail -1) frames," \

@@ -6,9 +6,10 @@
 # Three phases, so that nothing runs beside a test that needs the machine to itself:
 #  1. the exclusive tests: RUN_SERIAL and labelled realtime (wall-clock loops whose figures
 #     are checked), and those labelled light (they mostly wait on the wall clock), with
-#     nothing CPU-bound on the machine: five at a time (each takes 1-25 % of the machine),
-#     apart from those labelled `alone`, which run by themselves (PLEXUS_REALTIME_LANES;
-#     cmake/PlexusTesting.cmake, plexus_realtime_lanes);
+#     nothing CPU-bound on the machine: six at a time (each takes 1-25 % of the machine), one
+#     at a time among those labelled `heavy` or `alone` and among the netns ones
+#     (PLEXUS_REALTIME_LANES; cmake/PlexusTesting.cmake, plexus_realtime_lanes); ctest's log
+#     of the phase, with every test's output, is kept as build/LastTest_exclusive.log;
 #  2. every other test (ctest -j2; the other RUN_SERIAL tests, netns and multi-host ones, one
 #     at a time among them), with the fuzz build beside under SCHED_IDLE (chrt --idle: only
 #     the CPU time the tests leave idle; one compile at a time);
@@ -68,6 +69,7 @@ lanes=6  # docs/testing.md, "Realtime lanes": 4 until 2026-11-29 (a 31-minute CI
 [ -z "$exclusive" ] || PLEXUS_REALTIME_LANES=$lanes ctest --test-dir build --output-on-failure -j$lanes --timeout 600 \
   -I "0,0,0,$exclusive" || suite_rc=$?
 keep_failures exclusive
+cp build/Testing/Temporary/LastTest.log build/LastTest_exclusive.log 2> /dev/null || true
 echo "exclusive tests: $(($(date +%s) - start)) s"
 
 start=$(date +%s)
