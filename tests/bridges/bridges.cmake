@@ -101,9 +101,11 @@ foreach(variant "skid_steer;fast;154" "skid_steer;cyclone;228" "arm;fast;229" "a
                        LABELS "bridges;realtime;multiprocess;slow" TIMEOUT 240 RUN_SERIAL TRUE)
   # The 1 kHz arm across processes runs by itself, as every such test: in CI's lanes (clean
   # clone of f7b5a6c) its plant_simulator run lost the band (RMS 18.8 mrad) and the emulator
-  # obeyed 4199 of 5000 commands.
-  if(family STREQUAL "arm")
-    set_tests_properties(bridges.closed_loop_${family}_udp_${vendor} PROPERTIES LABELS "bridges;realtime;multiprocess;alone")
+  # obeyed 4199 of 5000 commands. The balancing robot too (never beside a `heavy` test): beside
+  # the kill-each runs its loops' p99 lateness was 2.9-5.9 ms of the 10 ms period, and once its
+  # filters' error std 1.63 times plant_simulator's (closed_loop_udp.sh; docs/testing.md).
+  if(family STREQUAL "arm" OR family STREQUAL "balancing")
+    set_tests_properties(bridges.closed_loop_${family}_udp_${vendor} PROPERTIES LABELS "bridges;realtime;multiprocess;slow;alone")
   endif()
 endforeach()
 

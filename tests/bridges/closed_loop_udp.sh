@@ -53,14 +53,16 @@ case $family in
     # went 27-42 % over plant_simulator's (clean clone of bb70ed4).
     device_time=", device_time: true, cycle_sync: true"
     emulator_args=()
-    # A run whose loops woke a quarter period late in 1 % of the ticks (the worst loop's p99
-    # over 2.5 ms at 100 Hz) was starved by the machine: its commands reach the plant late,
-    # the robot tilts more and the filters' errors grow, more through the bridge's four extra
-    # hops than through plant_simulator. Measured (2026-11-30, burners beside the runs; ratio
-    # of the UKF's error std, bridge / simulator): p99 0.8 / 0.7 ms 1.004; 3.0 / 1.5 ms 1.004;
-    # 4.0 / 2.7 ms 1.14; 7.8 / 7.4 ms 1.17; and the failure it was written for (working tree
-    # of 7ed022d beside CI's other realtime tests): 5.9 / 0.7 ms, 1.63.
-    stall_stat=jitter_p99_us stall_us=2500
+    # A run whose loops woke half a period late in 1 % of the ticks (the worst loop's p99
+    # over 5 ms at 100 Hz) was not a realtime run: the machine starved it. Its commands reach
+    # the plant late, the robot tilts more and the filters' errors grow, more through the
+    # bridge's four extra hops than through plant_simulator. Measured (2026-11-30, burners
+    # beside the runs; the UKF's error std, bridge / simulator, and the runs' p99): 1.004 at
+    # 0.8 / 0.7 ms; 1.004 at 3.0 / 1.5 ms; 1.14 at 4.0 / 2.7 ms; 1.17 at 7.8 / 7.4 ms; and the
+    # failure it was written for (working tree of 7ed022d, in CI's lanes): 1.63 at 5.9 / 0.7 ms.
+    # 2.5 ms was too strict: in a clean clone's lanes beside a kill-each run three simulator
+    # runs in a row were at 2.9-3.3 ms (figures that had passed in thirteen suites).
+    stall_stat=jitter_p99_us stall_us=5000
     scenario=$deploy/scenarios/balance_ukf_ekf.yaml ;;
   arm)
     robot=arm
