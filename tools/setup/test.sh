@@ -53,11 +53,14 @@ keep_failures() {  # keep_failures PHASE: copy ctest's list of the phase's faile
 # participants move off such a port by themselves; third-party Cyclone DDS programs the tests
 # run (ddsperf, the native interop programs) cannot, and a Fast DDS participant of another
 # test's domain would be seen by them (docs/runtime.md, "Domains on one host"). As root only;
-# the previous setting comes back at the end.
+# the previous setting comes back at the end. Also the fixed UDP ports the bridge tests bind
+# (40000 + 10 * domain + {0,1}; udp_bind_busy's 47991): inside the ephemeral range, another
+# test's socket bound to "any port" took 40311 once (2026-11-30, closed_loop_balancing_udp_fast:
+# "cannot bind: Address already in use" for the whole run, the emulator obeyed no command).
 reserved_before=""
 if [ "$(id -u)" -eq 0 ] && reserved_before=$(sysctl -n net.ipv4.ip_local_reserved_ports 2> /dev/null); then
   sysctl -qw net.ipv4.ip_local_reserved_ports="$(for d in $(seq 0 232); do
-    printf '%d-%d,' $((7410 + 250 * d)) $((7473 + 250 * d)); done | sed 's/,$//')" ||
+    printf '%d-%d,' $((7410 + 250 * d)) $((7473 + 250 * d)); done)40000-42339,47991" ||
     echo "test.sh: could not reserve the DDS participant ports (sysctl); tests run without"
   trap 'sysctl -qw net.ipv4.ip_local_reserved_ports="$reserved_before"' EXIT
 fi
