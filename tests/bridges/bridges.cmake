@@ -105,7 +105,7 @@ foreach(variant "skid_steer;fast;154" "skid_steer;cyclone;228" "arm;fast;229" "a
   # the kill-each runs its loops' p99 lateness was 2.9-5.9 ms of the 10 ms period, and once its
   # filters' error std 1.63 times plant_simulator's (closed_loop_udp.sh; docs/testing.md).
   if(family STREQUAL "arm" OR family STREQUAL "balancing")
-    set_tests_properties(bridges.closed_loop_${family}_udp_${vendor} PROPERTIES LABELS "bridges;realtime;multiprocess;slow;alone")
+    set_property(TEST bridges.closed_loop_${family}_udp_${vendor} APPEND PROPERTY LABELS alone)
   endif()
 endforeach()
 
