@@ -17,14 +17,27 @@
 # publishing (the controller's inputs go stale, it holds), reconnect and resume, and the
 # bounds must still hold after FROM s (the robot stands while the device is away and falls
 # behind the moving reference; the controller's gains halve that error in about 10 s).
+#
+# Every loop (the three services, the bridge, the emulator) runs at SCHED_FIFO
+# PLEXUS_TEST_PRIORITY (default 60; 0: normal scheduling) with its DDS and link threads, as
+# the arm's closed loops do (docs/performance.md, "Priorities"): at normal priority, busy
+# neighbours starve the delivery threads and the paper's bounds are missed (docs/testing.md,
+# "Known flakiness"). Needs root or CAP_SYS_NICE, as those tests do.
 set -u
 plexus=$1 bin=$2 vendor=$3 domain=$4 out=$5 scenario=$6 baud=$7 duration=$8 from=$9 bridge_vendor=${10:-$3} unplug_at=${11:-}
 . "$(dirname "$0")/../scripts/rfid_on_reference.sh"
 rfid_on_reference "$duration" "$from"
 rm -rf "$out" && mkdir -p "$out"
+priority=${PLEXUS_TEST_PRIORITY:-60}
+priorities=() emulator_priority=()
+if [ "$priority" -gt 0 ]; then
+  priorities=(--set services.reference.priority=$priority --set services.observer.priority=$priority
+              --set services.controller.priority=$priority --set robots.r1.priority=$priority)
+  emulator_priority=(--priority $priority)
+fi
 emu=""
 trap '[ -n "$emu" ] && kill -TERM $emu 2>/dev/null; kill -TERM $launch 2>/dev/null' EXIT
-"$plexus" launch "$scenario" --set clock.mode=realtime "${RFID_STEADY[@]}" \
+"$plexus" launch "$scenario" --set clock.mode=realtime "${RFID_STEADY[@]}" "${priorities[@]}" \
   --set "robots.r1.source={type: serial_bridge, device: $out/tty, baud: $baud}" \
   --dds "$vendor" --vendor "serial_bridge r1=$bridge_vendor" --domain "$domain" --json --quiet --out "$out/run" \
   > "$out/launch.json" 2> "$out/launch.err" &
@@ -35,7 +48,7 @@ for _ in $(seq 1 100); do [ -s "$part" ] && break; sleep 0.1; done
 sleep 1  # the bridge starts with its device absent: it must wait and retry
 faults=()
 [ -n "$unplug_at" ] && faults=(--fault "unplug@$unplug_at:for=0.5")
-"$bin/device_emulator" --part "$part" --pty "$out/tty" --baud "$baud" "${faults[@]}" > "$out/emulator.json" 2> "$out/emulator.err" &
+"$bin/device_emulator" --part "$part" --pty "$out/tty" --baud "$baud" "${faults[@]}" "${emulator_priority[@]}" > "$out/emulator.json" 2> "$out/emulator.err" &
 emu=$!
 wait $launch
 launch_rc=$?
