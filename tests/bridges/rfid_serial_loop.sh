@@ -29,6 +29,9 @@ plexus=$1 bin=$2 vendor=$3 domain=$4 out=$5 scenario=$6 baud=$7 duration=$8 from
 rfid_on_reference "$duration" "$from"
 rm -rf "$out" && mkdir -p "$out"
 priority=${PLEXUS_TEST_PRIORITY:-60}
+case $priority in
+  '' | *[!0-9]*) echo "rfid_serial_loop.sh: PLEXUS_TEST_PRIORITY '$priority' is not a priority (0..99)" >&2; exit 2 ;;
+esac
 priorities=() emulator_priority=()
 if [ "$priority" -gt 0 ]; then
   priorities=(--set services.reference.priority=$priority --set services.observer.priority=$priority
