@@ -1,9 +1,12 @@
 #!/usr/bin/env bash
 # ros2_names.sh PLEXUS VENDOR DOMAIN OUT ROS2_PACKAGE_DIR: the main job
 # (deploy/scenarios/four_robots.yaml, every robot and service) in realtime under
-# `plexus launch --naming ros2`, for 10 s. Beside it, on the same domain:
+# `plexus launch --naming ros2`, for 16 s. Beside it, on the same domain:
 #  - `plexus topic list --json` in the default naming lists the names as they are on the
-#    wire (no mapping back): wire.json;
+#    wire (no mapping back): wire.json. It lists what it discovered in 4 s, and must end
+#    well before the run does: in a working-tree suite of 4d21bc2 (a 10 s run, a 2 s
+#    listing, a loaded machine) it listed nothing; it had started 6.5 s into the run and
+#    ended 5.7 s later, 1.8 s after the run. So the run lasts 16 s;
 #  - `plexus record --naming ros2` records every topic, the CDR exactly as it arrived:
 #    run.mcap (a recorder that did not speak ROS 2's names would find nothing to record).
 # Then ros2_check.mjs parses the generated ROS 2 interface package with @foxglove/rosmsg,
@@ -18,7 +21,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 [ -f "$ros2/package.xml" ] || { echo "$ros2: no generated ROS 2 package"; exit 1; }
 rm -rf "$out" && mkdir -p "$out/echo"
 "$plexus" launch "$here/../../deploy/scenarios/four_robots.yaml" --naming ros2 --set clock.mode=realtime \
-  --set duration=10 --set metrics.0.from=9 --set metrics.1.from=9 --dds "$vendor" --domain "$domain" \
+  --set duration=16 --set metrics.0.from=15 --set metrics.1.from=15 --dds "$vendor" --domain "$domain" \
   --out "$out/run" --quiet > "$out/launch.log" 2>&1 &
 launch=$!
 # The services start within the first seconds; the recorder adds topics as their writers appear.
@@ -31,7 +34,7 @@ rc=0
 "$plexus" param list "localisation_observer wmr_observer" --naming ros2 --dds "$vendor" --domain "$domain" \
   > "$out/param.txt" 2>&1 || { echo "plexus param list under naming ros2:"; cat "$out/param.txt"; rc=1; }
 grep -q "^wmr_observer.L " "$out/param.txt" || { echo "plexus param list: no wmr_observer.L"; rc=1; }
-"$plexus" topic list --dds "$vendor" --domain "$domain" --json --wait 2 > "$out/wire.json"
+"$plexus" topic list --dds "$vendor" --domain "$domain" --json --wait 4 > "$out/wire.json"
 wait "$record" || { echo "plexus record failed:"; cat "$out/record.log"; rc=1; }
 wait "$launch" || {
   r=$?

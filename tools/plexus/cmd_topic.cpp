@@ -91,6 +91,8 @@ int run_list(const TopicOpts& o) {
     r.types.insert(e.type_name);
     (e.is_writer ? r.writers : r.readers)++;
   }
+  if (rows.empty())  // on stderr, so that --json's output stays the (empty) list
+    std::fprintf(stderr, "plexus topic list: no topics discovered on domain %d in %.1f s\n", o.dds.domain, wait);
   if (o.json) {
     nlohmann::ordered_json j = nlohmann::ordered_json::array();
     for (const auto& [t, r] : rows)
@@ -113,8 +115,6 @@ int run_list(const TopicOpts& o) {
     std::printf("%-*s  %-*s  %d writer%s, %d reader%s\n", topic_w, t.c_str(), type_w, type_cells[i++].c_str(),
                 r.writers, r.writers == 1 ? "" : "s", r.readers, r.readers == 1 ? "" : "s");
   }
-  if (rows.empty())
-    std::fprintf(stderr, "plexus topic list: no topics discovered on domain %d in %.1f s\n", o.dds.domain, wait);
   return 0;
 }
 
