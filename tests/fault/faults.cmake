@@ -36,6 +36,19 @@ add_test(NAME fault.launcher_killed_leaves_no_orphan
 set_tests_properties(fault.launcher_killed_leaves_no_orphan PROPERTIES LABELS "fault;multiprocess;light" TIMEOUT 120
                      RUN_SERIAL TRUE)
 
+# A lockstep run stopped on one frozen service (SIGSTOP) fails naming that service's sample,
+# whichever process waiting on it times out first (lockstep_stall.sh). `light`: a second of
+# lockstep, then it waits on the timeouts.
+foreach(variant "fast;34" "cyclone;35")
+  list(POP_FRONT variant vendor domain)
+  add_test(NAME fault.lockstep_stall_names_cause_${vendor}
+           COMMAND bash ${FAULT_DIR}/lockstep_stall.sh $<TARGET_FILE:plexus>
+                   ${PROJECT_SOURCE_DIR}/deploy/scenarios/wmr_output_feedback_rfid.yaml ${FAULT_RUNS}/lockstep_stall_${vendor}
+                   ${domain} ${vendor})
+  set_tests_properties(fault.lockstep_stall_names_cause_${vendor} PROPERTIES LABELS "fault;multiprocess;light" TIMEOUT 180
+                       RUN_SERIAL TRUE)
+endforeach()
+
 # RUN_SERIAL, all of them: sharing the machine with other tests was tried, and a partition
 # run beside the bridges' contract tests failed both (a 12 s partition for a 2 s one, gaps
 # of 0.9-1.4 s in a 100 Hz serial stream) in a CI run.

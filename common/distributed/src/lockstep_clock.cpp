@@ -220,7 +220,8 @@ scenario::RunLog LockstepClock::run(const std::atomic<bool>& stop, const scenari
     const SignalSpec& spec = awaited();
     if (stalled >= timeout)
       throw LockstepError("lockstep: no sample of '" + spec.name + "' from '" + spec.producer + "' for " +
-                          lockstep_step(k) + " within " + lockstep_seconds(m.opt.timeout_s));
+                              lockstep_step(k) + " within " + lockstep_seconds(m.opt.timeout_s),
+                          spec.producer);
     if (tell)  // every wait of a second or more, with its step and producer, to find a stall
       spdlog::warn("lockstep: the clock has waited {:.1f} s for '{}' (produced by '{}') of {}",
                    static_cast<double>(stalled) * 1e-9, spec.name, spec.producer, lockstep_step(k));

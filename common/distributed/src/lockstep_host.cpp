@@ -15,6 +15,7 @@
 #include "lockstep_text.hpp"
 #include "plexus/base/clock.hpp"
 #include "plexus/distributed/lockstep.hpp"
+#include "plexus/distributed/lockstep_wait.hpp"
 #include "plexus/distributed/param_server.hpp"
 #include "pumped_run.hpp"
 
@@ -193,8 +194,8 @@ int64_t LockstepHost::run(const std::atomic<bool>& stop) {
     const auto& spec = m.exec.signals()[static_cast<std::size_t>(signal)];
     const int64_t due = m.waiting_due.load(std::memory_order_relaxed);
     if (stalled >= timeout)
-      throw LockstepError("lockstep: no sample of '" + spec.name + "' (produced by '" + spec.producer + "') for " +
-                          lockstep_step(due) + " within " + lockstep_seconds(static_cast<double>(timeout) * 1e-9));
+      throw LockstepError(lockstep_wait_message({spec.name, spec.producer}, due, static_cast<double>(timeout) * 1e-9),
+                          spec.producer);
     if (tell)  // every wait of a second or more, with its step and producer, to find a stall
       spdlog::warn("lockstep: host at {} has waited {:.1f} s for '{}' (produced by '{}') of {}",
                    lockstep_step(m.expected.load()), static_cast<double>(stalled) * 1e-9, spec.name, spec.producer,

@@ -63,8 +63,7 @@ void LaunchRun::stop_all() {
 int LaunchRun::failure(const std::string& what, int rc) {
   stop_all();
   const std::string lost = remotes ? remotes->failure() : std::string();  // a lost host is the cause
-  const std::string& died = supervisor->died();
-  const std::string why = !lost.empty() ? lost : died.empty() ? what : died;
+  const std::string why = !lost.empty() ? lost : !what.empty() ? what : death();
   scenario::mark_run_folder(run_dir, "failed: " + why);
   std::fprintf(stderr, "plexus launch: %s\n", why.c_str());
   return done(rc);
@@ -74,6 +73,18 @@ int LaunchRun::interrupted() {
   stop_all();
   const double wall_s = static_cast<double>(monotonic_ns() - launched_ns) * 1e-9;
   return done(interrupted_run("plexus launch", g_launch_signal, run_dir, wall_s));
+}
+
+std::string LaunchRun::death() const {
+  const auto d = supervisor ? supervisor->first_death() : std::nullopt;
+  return d ? exit_report(d->service, d->status) : std::string();
+}
+
+std::string LaunchRun::exit_report(const std::string& service, int status, int wait_ms) const {
+  const std::string exited = service + " exited with code " + std::to_string(status);
+  if (status >= 128 || !relay) return exited;  // killed by a signal: no words of its own
+  const std::string last = relay->last_line(service, wait_ms);
+  return last.empty() ? exited : exited + ": " + last;
 }
 
 bool LaunchRun::host_lost() const { return remotes && !remotes->failure().empty(); }

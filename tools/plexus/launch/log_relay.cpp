@@ -36,16 +36,18 @@ struct LogRelay::Impl {
     int fd = -1;
     std::FILE* file = nullptr;
     std::string partial;  // bytes after the last newline
+    std::string last;     // the last non-empty line
   };
   std::filesystem::path dir;
   StatusConsole* console = nullptr;
-  std::mutex mu;  // guards sources (added by the launcher, read by the thread)
+  mutable std::mutex mu;  // guards sources (added by the launcher, read by the thread)
   std::vector<Source> sources;
   std::atomic<bool> running{true};
   std::thread thread;
   std::size_t width = 8;  // prefix column width
 
   void emit(Source& s, const std::string& line) {
+    if (!line.empty()) s.last = line;
     if (s.file) {
       std::fwrite(line.data(), 1, line.size(), s.file);
       std::fputc('\n', s.file);
@@ -159,6 +161,20 @@ void LogRelay::note(const std::string& name, const std::string& line) {
       std::fclose(f);
       return;
     }
+}
+
+std::string LogRelay::last_line(const std::string& name, int wait_ms) const {
+  const auto end = std::chrono::steady_clock::now() + std::chrono::milliseconds(wait_ms);
+  for (;;) {
+    {
+      std::lock_guard lk(impl_->mu);
+      const auto it = std::find_if(impl_->sources.rbegin(), impl_->sources.rend(),  // a restart's newest
+                                   [&](const Impl::Source& s) { return s.name == name; });
+      if (it == impl_->sources.rend()) return {};
+      if (it->fd < 0 || std::chrono::steady_clock::now() >= end) return it->last;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
 }
 
 void LogRelay::drain(int timeout_ms) {

@@ -25,6 +25,10 @@ class LogRelay {
   int open(const std::string& name);
   /// Appends a launcher line to `name`'s log file only ("-- started pid 42: ...").
   void note(const std::string& name, const std::string& line);
+  /// The last non-empty line process `name` printed ("" if none): a process that fails
+  /// prints its one-line error last. Waits up to `wait_ms` for its output's end of file
+  /// (complete at once after drain()).
+  std::string last_line(const std::string& name, int wait_ms = 0) const;
   /// Waits (up to `timeout_ms`) until every output opened so far reached end of file, so
   /// the children's last lines are printed before the launcher's own verdict.
   void drain(int timeout_ms = 2000);

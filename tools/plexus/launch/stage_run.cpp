@@ -7,6 +7,7 @@
 #include <map>
 #include <thread>
 
+#include "failure_cause.hpp"
 #include "lockstep_status.hpp"
 #include "plexus/base/clock.hpp"
 #include "plexus/base/input_error.hpp"
@@ -29,12 +30,14 @@ std::map<std::string, double> producer_offsets_us(const scenario::Scenario& sc, 
 
 /// Runs the clock or the realtime monitor (`body`) and ends the run: an exit code when it was
 /// interrupted, failed (a LockstepError) or lost a host; else nothing, with every process stopped.
-std::optional<int> run_to_end(LaunchRun& run, const std::function<void()>& body) {
+/// `timeout_s`: the lockstep timeout (--timeout).
+std::optional<int> run_to_end(LaunchRun& run, const LaunchPlan& plan, double timeout_s,
+                              const std::function<void()>& body) {
   try {
     body();
   } catch (const distributed::LockstepError& e) {
     if (g_launch_signal) return run.interrupted();
-    return run.failure(e.what());
+    return run.failure(lockstep_failure_cause(run, plan, e, timeout_s));  // before anything stops
   } catch (const BudgetError& e) {  // --strict: a placement that cannot fit a loop's budget
     return run.failure(e.what(), kExitBadInput);
   }
@@ -56,7 +59,7 @@ int serve_launch(const LaunchOptions& o, LaunchPlan& plan, LaunchRun& run) {
   while (running() && !g_launch_stop) std::this_thread::sleep_for(std::chrono::milliseconds(100));
   if (g_launch_signal) return run.interrupted();
   run.stop_all();
-  if (!run.supervisor->died().empty()) return run.failure(run.supervisor->died());
+  if (run.supervisor->first_death()) return run.failure("");  // failure() names the process (death())
   scenario::mark_run_folder(run.run_dir, "complete");
   if (plan.session && !plan.session->ended().empty()) {
     std::fprintf(stderr, "plexus launch --host %s: stopped: %s\n", o.host.c_str(), plan.session->ended().c_str());
@@ -68,7 +71,7 @@ int serve_launch(const LaunchOptions& o, LaunchPlan& plan, LaunchRun& run) {
 }
 
 std::optional<int> run_realtime_launch(const LaunchOptions& o, LaunchPlan& plan, LaunchRun& run, RealtimeResult& out) {
-  return run_to_end(run, [&] {
+  return run_to_end(run, plan, o.timeout, [&] {
     std::vector<Process> all = plan.everywhere;  // monitored through heartbeats: not the external ones
     all.erase(std::remove_if(all.begin(), all.end(), [&](const Process& p) { return plan.is_external(p); }), all.end());
     std::map<std::string, int64_t> host_offsets;  // corrects cross-host latencies (remote_share.hpp)
@@ -85,7 +88,7 @@ std::optional<int> run_realtime_launch(const LaunchOptions& o, LaunchPlan& plan,
 }
 
 std::optional<int> run_lockstep_launch(const LaunchOptions& o, LaunchPlan& plan, LaunchRun& run, LockstepOutcome& out) {
-  const auto ended = run_to_end(run, [&] {
+  const auto ended = run_to_end(run, plan, o.timeout, [&] {
     distributed::LockstepClock clock(plan.sc, *run.participant, plan.lockstep_qos, {.timeout_s = o.timeout});
     rt::Subscriber<msg::ParamReply> param_replies;  // plexus param set during the run; deleted with the clock
     if (run.recorder) param_replies = run.recorder->record_param_replies(*run.participant);

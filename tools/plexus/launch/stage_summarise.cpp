@@ -46,7 +46,7 @@ void add_latency_lines(const nlohmann::ordered_json& latency, RunSummary& summar
 }  // namespace
 
 int summarise_realtime(const LaunchOptions& o, const LaunchPlan& plan, LaunchRun& run, RealtimeResult& r) {
-  const std::string& died = run.supervisor->died();
+  const std::string died = run.death();
   char headline[256];
   std::snprintf(headline, sizeof headline, "scenario %s: realtime over %zu processes (%s), %.3g s",
                 plan.sc.name.c_str(), plan.everywhere.size(), plan.vendors_label.c_str(), r.wall);

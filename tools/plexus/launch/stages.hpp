@@ -110,12 +110,18 @@ struct LaunchRun {
   /// last log lines. Repeatable.
   void stop_all();
   /// Ends a failed run: everything stopped, the run folder marked failed with the cause (a
-  /// lost host, else a process that died, else `what`), one line. Returns done(rc).
+  /// lost host, else `what`, else a process that died), one line. Returns done(rc).
   int failure(const std::string& what, int rc = 1);
   /// Ends a run stopped by SIGINT or SIGTERM (interrupted_run). Returns done(128 + signal).
   int interrupted();
   /// True when another host was lost (its share failed or its session ended).
   bool host_lost() const;
+  /// The process of this host that died for good ("" if none), as exit_report says it.
+  /// Complete after stop_all().
+  std::string death() const;
+  /// "<service> exited with code N", followed by its last line when it ended itself (N
+  /// below 128: its one-line error), waiting up to `wait_ms` for that line.
+  std::string exit_report(const std::string& service, int status, int wait_ms = 0) const;
   /// Arms the teardown bound (plexus/base/teardown_deadline.hpp) and returns `rc`: every
   /// return from the start stage on goes through it before the participant is deleted, so a
   /// vendor's shutdown that hangs cannot keep the launcher, and what waits for it, from ending.

@@ -81,6 +81,24 @@ void ProcessSupervisor::stop() {
     if (p.pid > 0) cli::stop(p.pid), p.pid = 0;
 }
 
+std::optional<ProcessSupervisor::Exit> ProcessSupervisor::first_death() const {
+  std::lock_guard lk(exits_mu_);
+  return first_death_;
+}
+
+std::optional<int> ProcessSupervisor::await_exit(const std::string& service, int64_t timeout_ns) const {
+  const int64_t until = monotonic_ns() + timeout_ns;
+  for (;;) {
+    {
+      std::lock_guard lk(exits_mu_);
+      const auto it = exits_.find(service);
+      if (it != exits_.end()) return it->second;
+    }
+    if (!watcher_.joinable() || monotonic_ns() >= until) return std::nullopt;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+}
+
 void ProcessSupervisor::inject_kill(Process& p, int64_t started_ns) {
   auto k = kill_at_.find(p.name);
   if (!started_ns || k == kill_at_.end() || p.pid <= 0 ||
@@ -98,14 +116,21 @@ void ProcessSupervisor::reap(Process& p) {
   if (p.pid <= 0 || !exited(p.pid, status)) return;
   relay_.note(p.service(), "pid " + std::to_string(p.pid) + " exited with code " + std::to_string(status));
   p.pid = 0;
+  {
+    std::lock_guard lk(exits_mu_);
+    exits_[p.service()] = status;
+  }
   const bool restart =
       realtime_ && run_active_ && (p.restart == "always" || (status != 0 && p.restart == "on_failure"));
   if (restart) {
     // restart_delay (systemd's RestartSec): the restart is due that long after the death.
     p.restart_at_ns = monotonic_ns() + p.restart_delay_ns;
     spdlog::warn("{} exited with code {}: restart in {:.2f} s", p.service(), status, p.restart_delay_ns * 1e-9);
-  } else if (status != 0 && died_.empty()) {
-    died_ = p.service() + " exited with code " + std::to_string(status);
+  } else if (status != 0 && !first_death()) {
+    {
+      std::lock_guard lk(exits_mu_);
+      first_death_ = Exit{p.service(), status};
+    }
     // Realtime: the run goes on for kFatalGraceNs, so that the recording shows how the
     // others reacted (their controllers' holds), then fails. Lockstep: at once.
     if (realtime_ && fault_.run_start_ns.load())

@@ -6,6 +6,8 @@
 #include <atomic>
 #include <cstdint>
 #include <map>
+#include <mutex>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
@@ -43,9 +45,17 @@ class ProcessSupervisor {
   void watch();
   /// Ends the watcher and stops every process still running. Repeatable.
   void stop();
-  /// "<service> exited with code N": the first process that died for good ("" if none).
-  /// Read after stop().
-  const std::string& died() const { return died_; }
+  /// A process's exit: its service name and exit code (128 + N: killed by signal N).
+  struct Exit {
+    std::string service;
+    int status = 0;
+  };
+  /// The first process that died for good (ended with a code other than 0, a signal's too,
+  /// and not restarted): nothing if none.
+  std::optional<Exit> first_death() const;
+  /// While the watcher runs: the exit code of process `service` once it exited on its own,
+  /// waiting up to `timeout_ns` for it; nothing if it still runs (or the watcher has stopped).
+  std::optional<int> await_exit(const std::string& service, int64_t timeout_ns) const;
   /// The process --kill killed ("" if none). Read after stop().
   const std::string& killed() const { return killed_; }
 
@@ -61,7 +71,9 @@ class ProcessSupervisor {
   std::atomic<bool>& stop_;
   const bool realtime_;
   std::map<std::string, double> kill_at_;  // watcher thread only, like the three below
-  std::string died_;
+  mutable std::mutex exits_mu_;            // guards the two below: the watcher writes, the launcher reads
+  std::optional<Exit> first_death_;
+  std::map<std::string, int> exits_;  // service -> exit code of its last exit, by the watcher
   std::string killed_;
   int64_t fatal_stop_ns_ = 0;  // realtime: when to stop after a death that is not restarted
   std::atomic<bool> watching_{true};

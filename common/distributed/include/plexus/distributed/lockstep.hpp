@@ -33,6 +33,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "plexus/distributed/wire.hpp"
@@ -76,7 +77,14 @@ inline int64_t clock_stride(const LockstepOptions& o) {
 /// A run that cannot go on: a producer stopped answering, or data arrived out of order.
 class LockstepError : public std::runtime_error {
  public:
-  using std::runtime_error::runtime_error;
+  /// `awaited`: the component whose sample the clock waited for when it gave up ("" when the
+  /// error is not such a timeout), so that the launcher can ask that process for the cause.
+  explicit LockstepError(const std::string& what, std::string awaited = {})
+      : std::runtime_error(what), awaited_(std::move(awaited)) {}
+  const std::string& awaited() const { return awaited_; }
+
+ private:
+  std::string awaited_;
 };
 
 /// Runs the hosted components of a scenario as the clock commands.
