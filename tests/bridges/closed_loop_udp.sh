@@ -69,8 +69,7 @@ case $family in
     args=(--set step=0.001 --set clock.input_deadline_periods=20 --set services.reference.process=control
           --set services.observer.process=control --set services.controller.process=control
           --set services.observer.blind_after_s=0.01 --set "expectations={}"
-          --set services.reference.priority=60 --set services.observer.priority=60
-          --set services.controller.priority=60 --set robots.arm.priority=60)
+          --set clock.priority=60)
     emulator_args=(--priority 60)
     checks="rms_e1_mrad:0.20 rms_e2_mrad:0.20"
     device_time=", device_time: true, cycle_sync: true"

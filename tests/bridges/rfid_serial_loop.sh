@@ -34,8 +34,7 @@ case $priority in
 esac
 priorities=() emulator_priority=()
 if [ "$priority" -gt 0 ]; then
-  priorities=(--set services.reference.priority=$priority --set services.observer.priority=$priority
-              --set services.controller.priority=$priority --set robots.r1.priority=$priority)
+  priorities=(--set clock.priority=$priority)
   emulator_priority=(--priority $priority)
 fi
 emu=""

@@ -55,8 +55,7 @@ all_cases=(
 # gets its priority again from its parameters.
 arm_sets=(--set step=0.001 --set clock.input_deadline_periods=20 --set services.observer.process=control
           --set services.controller.process=control --set services.observer.blind_after_s=0.01
-          --set services.reference.priority=60 --set services.observer.priority=60
-          --set services.controller.priority=60 --set robots.arm.priority=60)
+          --set clock.priority=60)
 wanted=" $* "
 fail=0
 rows=()

@@ -34,9 +34,10 @@ const char* to_string(RobotSource::Type t) {
 }
 namespace {
 
-/// `priority` and `cpu` of a service or a robot (its plant-side process), realtime only.
-void read_scheduling(const YamlMap& section, ScenarioComponent& out) {
-  out.priority = section.optional<int>("priority", 0);
+/// `priority` and `cpu` of a service or a robot (its plant-side process), realtime only; its
+/// `priority` defaults to the scenario's clock.priority.
+void read_scheduling(const YamlMap& section, ScenarioComponent& out, int default_priority) {
+  out.priority = section.optional<int>("priority", default_priority);
   if (out.priority < 0 || out.priority > 99)
     section.fail("priority", "must be in 0..99 (SCHED_FIFO; 0: normal scheduling)");
   out.cpu = section.optional<int>("cpu", -1);
@@ -154,8 +155,8 @@ struct Loader {
       out.restart_delay = section.optional<double>("restart_delay", 0.0);
       if (!(out.restart_delay >= 0.0 && out.restart_delay <= 3600.0))
         section.fail("restart_delay", "must be in [0, 3600] s");
-      read_scheduling(section, out);
-      out.blind_after_s = sc.blind_after_s;  // the clock section is read before the services
+      read_scheduling(section, out, sc.loop_priority);  // the clock section is read before the services
+      out.blind_after_s = sc.blind_after_s;
       if (section.has("blind_after_s")) {
         if (cfg.kind != ComponentKind::estimator)
           section.fail("blind_after_s",
@@ -254,6 +255,9 @@ struct Loader {
         clock.fail("input_deadline_periods", "must be in [1, 1000]");
       sc.blind_after_s = clock.optional<double>("blind_after_s", sc.blind_after_s);
       if (!(sc.blind_after_s >= 0.0 && sc.blind_after_s <= 60.0)) clock.fail("blind_after_s", "must be in [0, 60] s");
+      sc.loop_priority = clock.optional<int>("priority", 0);
+      if (sc.loop_priority < 0 || sc.loop_priority > 99)
+        clock.fail("priority", "must be in 0..99 (SCHED_FIFO; 0: normal scheduling)");
       clock.reject_unknown();
     }
     if (top.has("dds")) {
@@ -482,7 +486,7 @@ struct Loader {
         if (robot.has("host") && !hosts.count(robot_host)) robot.fail("host", "no host '" + robot_host + "' in hosts");
         const std::string robot_dds = dds_key(robot);
         ScenarioComponent scheduling;  // the robot's `priority` and `cpu`, for its plant and sensors
-        read_scheduling(robot, scheduling);
+        read_scheduling(robot, scheduling, sc.loop_priority);
         if (robot.has("source")) load_source(robot, rpath, r);
         const YamlMap plant = robot.map("plant");
         all.push_back(build(plant, rpath + ".plant", "plant", r, sc.resolved["robots"][r]["plant"], false));

@@ -94,6 +94,33 @@ TEST(ScenarioLoader, EstimatorBlindGrace) {
   EXPECT_EQ(e.find('\n'), std::string::npos) << e;  // one line
 }
 
+// clock.priority: every loop's SCHED_FIFO priority unless its robot or service sets its own.
+TEST(ScenarioLoader, LoopPriorityDefault) {
+  const std::string rfid = std::string(PLEXUS_SOURCE_DIR) + "/deploy/scenarios/wmr_output_feedback_rfid.yaml";
+  auto priority = [](const Scenario& sc, const std::string& name) {
+    for (const auto& c : sc.components)
+      if (c.component->name() == name) return c.priority;
+    throw std::runtime_error("no component " + name);
+  };
+  const Scenario plain = load_scenario(rfid);
+  EXPECT_EQ(plain.loop_priority, 0);
+  EXPECT_EQ(priority(plain, "observer"), 0);
+  const Scenario all = load_scenario(rfid, {parse_override("clock.mode=realtime"), parse_override("clock.priority=60"),
+                                            parse_override("services.controller.priority=70")});
+  EXPECT_EQ(priority(all, "observer"), 60);
+  EXPECT_EQ(priority(all, "r1/plant"), 60);    // the robot's plant-side process
+  EXPECT_EQ(priority(all, "controller"), 70);  // its own
+  const Scenario off = load_scenario(rfid, {parse_override("clock.mode=realtime"), parse_override("clock.priority=60"),
+                                            parse_override("robots.r1.priority=0")});
+  EXPECT_EQ(priority(off, "r1/plant"), 0);  // 0 of its own: normal scheduling
+  const std::string e = error_of([&] {
+    load_scenario(rfid, {parse_override("clock.mode=realtime"), parse_override("clock.priority=100")});
+  });
+  EXPECT_NE(e.find("clock.priority"), std::string::npos) << e;
+  EXPECT_NE(e.find("must be in 0..99"), std::string::npos) << e;
+  EXPECT_EQ(e.find('\n'), std::string::npos) << e;  // one line
+}
+
 TEST(ScenarioLoader, BuiltInScenarioLoads) {
   const Scenario sc = load_scenario(std::string(PLEXUS_SOURCE_DIR) + "/deploy/scenarios/unicycle_circle.yaml");
   EXPECT_EQ(sc.name, "unicycle_circle");

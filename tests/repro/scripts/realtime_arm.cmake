@@ -25,8 +25,7 @@ execute_process(COMMAND ${PLEXUS} launch ${SCENARIO} --json --quiet --domain ${D
                         --set services.reference.process=control
                         --set services.observer.process=control --set services.controller.process=control
                         --set services.observer.blind_after_s=0.01
-                        --set services.reference.priority=60 --set services.observer.priority=60
-                        --set services.controller.priority=60 --set robots.arm.priority=60
+                        --set clock.priority=60
                 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT rc EQUAL 0 AND NOT rc EQUAL 1)
   message(FATAL_ERROR "launch exited ${rc}: ${err}")

@@ -46,8 +46,9 @@ struct ScenarioComponent {
   /// own `blind_after_s`, else the scenario's clock.blind_after_s). The right grace depends on
   /// the loop: 0.3 s is 2 cm of the RFID robot's motion, and 300 open-loop steps of a 1 kHz arm.
   double blind_after_s = 0.3;
-  /// Realtime: SCHED_FIFO priority of its loop (0: normal scheduling) and the CPU it is
-  /// pinned to (-1: none), passed as the service's --priority and --cpu.
+  /// Realtime: SCHED_FIFO priority of its loop (0: normal scheduling; its own `priority`, else
+  /// the scenario's clock.priority) and the CPU it is pinned to (-1: none), passed as the
+  /// service's --priority and --cpu.
   int priority = 0;
   int cpu = -1;
   /// port -> "file:line: services.x.remap.port" of each `remap` entry, so that a wiring error
@@ -161,6 +162,9 @@ struct Scenario {
   /// is blind (publishes nothing, so the controllers behind it hold); shorter gaps it
   /// bridges with its prediction. 0: blind at the first tick with no fresh measurement.
   double blind_after_s = 0.3;
+  /// Realtime mode: SCHED_FIFO priority of every loop (its process's loop and DDS threads)
+  /// whose robot or service sets no `priority` of its own (clock.priority; 0: normal).
+  int loop_priority = 0;
   std::string dds_vendor;  ///< "fast" | "cyclone" | "" (launch default)
   int dds_domain = 0;
   /// dds.transport: "auto" | "udp" | "shm" (plexus/runtime/transport.hpp, docs/runtime.md).
