@@ -125,10 +125,15 @@ function(plexus_add_messages target)
   endforeach()
   # One fastddsgen for all files (it also writes the code of every file they include: one command,
   # so that parallel builds never rewrite a header while a compiler reads it); only the package's
-  # own files are kept. No -typeobject: the interop rule.
+  # own files are kept. No -typeobject: the interop rule. The outputs are touched after the copy:
+  # a file copy_if_different left alone stays older than an IDL file edited since, and the
+  # command (and every compile and link after it) would run again at every build, relinking
+  # the shared libraries under running tests (cpack's preinstall build in sdk.deb_package did,
+  # 2026-11-30: "libplexus_msgs.so: file too short" in three tests beside it).
   add_custom_command(OUTPUT ${fast_out}
     COMMAND ${FASTDDSGEN} -replace ${include_args} -d ${gen_tmp} ${idl_abs} > /dev/null
     ${copy_cmds}
+    COMMAND ${CMAKE_COMMAND} -E touch_nocreate ${fast_out}
     DEPENDS ${idl_abs}
     COMMENT "fastddsgen ${target}" VERBATIM)
 
