@@ -12,6 +12,7 @@
 # for it: `(produced by 'controller')`), never a process that only waited in turn.
 set -u
 PLEXUS=$1 SCENARIO=$2 out=$3 domain=$4 vendor=$5
+. "$(cd "$(dirname "$0")" && pwd)/clock_steps.sh"
 rm -rf "$out" && mkdir -p "$out"
 frozen=
 listener=
@@ -34,12 +35,8 @@ for c in "controller motion_controller r1/cmd" "observer localisation_observer r
     > "$steps" 2> /dev/null &
   listener=$!
   problems=()
-  seen=0
-  for ((i = 0; i < 600 && seen < 200; ++i)); do
-    sleep 0.1
-    seen=$(($(wc -l < "$steps") - 1))
-    kill -0 "$launcher" 2>/dev/null || break
-  done
+  await_clock_steps "$steps" 200 "$launcher"
+  seen=$SEEN
   kill "$listener" 2>/dev/null
   wait "$listener" 2>/dev/null
   listener=

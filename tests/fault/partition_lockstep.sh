@@ -21,6 +21,7 @@ PLEXUS=$1 SCENARIO=$2 out=$3 domain=$4 vendor=$5
 here=$(cd "$(dirname "$0")" && pwd)
 . "$here/netns_pair.sh"
 . "$here/split_run.sh"
+. "$here/clock_steps.sh"
 pair_start "$out"
 # 60 s of the loop (6000 lockstep steps): long enough over the pair for a 2 s pause mid-run.
 rfid_on_reference 60 0
@@ -42,12 +43,8 @@ for c in short long; do
   ip netns exec "$NS2" "$PLEXUS" topic echo lockstep/clock --dds "$vendor" --domain "$domain" --interface 10.231.0.2 \
     --peers 10.231.0.1,10.231.0.2 --csv --profile sensor --duration 60 > "$steps" 2> "$run/clock_steps.log" &
   listener=$!
-  seen=0
-  for ((i = 0; i < 600 && seen < 200; ++i)); do
-    sleep 0.1
-    seen=$(($(wc -l < "$steps") - 1))
-    kill -0 "$SPLIT_H1" 2>/dev/null || break
-  done
+  await_clock_steps "$steps" 200 "$SPLIT_H1"
+  seen=$SEEN
   cut_step=$(awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) if ($i == "step_index") c = i; next } { s = $c } END { print s + 0 }' "$steps")
   if [ "$seen" -lt 200 ]; then
     problems+=("the h2 listener saw $seen clock steps within 60 s (no partition made)")
